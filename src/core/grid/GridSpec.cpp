@@ -1,0 +1,142 @@
+#include "grid/GridSpec.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace dropletFiber
+{
+
+std::size_t IndexBox::nodeCount() const
+{
+    if (empty())
+    {
+        return 0;
+    }
+    std::size_t n = 1;
+    for (int d = 0; d < 3; ++d)
+    {
+        n *= static_cast<std::size_t>(hi[d] - lo[d] + 1);
+    }
+    return n;
+}
+
+IndexBox IndexBox::united(const IndexBox& other) const
+{
+    if (empty())
+    {
+        return other;
+    }
+    if (other.empty())
+    {
+        return *this;
+    }
+    IndexBox box;
+    for (int d = 0; d < 3; ++d)
+    {
+        box.lo[d] = std::min(lo[d], other.lo[d]);
+        box.hi[d] = std::max(hi[d], other.hi[d]);
+    }
+    return box;
+}
+
+void GridSpec::validate() const
+{
+    static const char* axis[3] = {"x", "y", "z"};
+    for (int d = 0; d < 3; ++d)
+    {
+        if (nodes[d] < 1)
+        {
+            throw std::invalid_argument(
+                std::string("grid: nodes in ") + axis[d] + " must be at least 1, got " + std::to_string(nodes[d]));
+        }
+        if (!std::isfinite(lower[d]) || !std::isfinite(upper[d]))
+        {
+            throw std::invalid_argument(std::string("grid: bounds in ") + axis[d] + " are not finite");
+        }
+        if (!(upper[d] > lower[d]))
+        {
+            throw std::invalid_argument(
+                std::string("grid: upper bound must exceed lower bound in ") + axis[d]
+                + (flat(d) ? " (a single-node direction needs its thickness as upper - lower)" : ""));
+        }
+    }
+    if (activeDimensions() == 0)
+    {
+        throw std::invalid_argument("grid: at least one direction needs 2 or more nodes");
+    }
+    // Flat indices are std::size_t; node counts beyond that are a configuration error.
+    const double total = static_cast<double>(nodes[0]) * nodes[1] * nodes[2];
+    if (total > 1e10)
+    {
+        throw std::invalid_argument("grid: more than 1e10 nodes");
+    }
+}
+
+int GridSpec::activeDimensions() const
+{
+    int n = 0;
+    for (int d = 0; d < 3; ++d)
+    {
+        n += flat(d) ? 0 : 1;
+    }
+    return n;
+}
+
+double GridSpec::spacing(int d) const
+{
+    return flat(d) ? upper[d] - lower[d] : (upper[d] - lower[d]) / (nodes[d] - 1);
+}
+
+double GridSpec::nodeVolume() const
+{
+    return spacing(0) * spacing(1) * spacing(2);
+}
+
+std::size_t GridSpec::nodeCount() const
+{
+    return static_cast<std::size_t>(nodes[0]) * static_cast<std::size_t>(nodes[1])
+        * static_cast<std::size_t>(nodes[2]);
+}
+
+IndexBox GridSpec::fullBox() const
+{
+    IndexBox box;
+    box.lo = {{0, 0, 0}};
+    box.hi = {{nodes[0] - 1, nodes[1] - 1, nodes[2] - 1}};
+    return box;
+}
+
+double GridSpec::nodeCoordinate(int d, int index) const
+{
+    if (flat(d))
+    {
+        return 0.5 * (lower[d] + upper[d]);
+    }
+    // The last node is placed exactly on the upper bound (no accumulated round-off).
+    if (index == nodes[d] - 1)
+    {
+        return upper[d];
+    }
+    return lower[d] + index * spacing(d);
+}
+
+Eigen::Vector3d GridSpec::nodePosition(int i, int j, int k) const
+{
+    return Eigen::Vector3d(nodeCoordinate(0, i), nodeCoordinate(1, j), nodeCoordinate(2, k));
+}
+
+bool GridSpec::contains(const Eigen::Vector3d& point) const
+{
+    for (int d = 0; d < 3; ++d)
+    {
+        if (!(point[d] >= lower[d] && point[d] <= upper[d]))
+        {
+            return false;
+        }
+    }
+    return true;
+}
+
+} // namespace dropletFiber

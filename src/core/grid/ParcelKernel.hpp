@@ -1,0 +1,80 @@
+// ParcelKernel: the truncated Gaussian by which one parcel spreads over the density grid
+// (MODEL.md sec. 4, eqs. 11-18): range of influence r_max (eq. 13), packing radius r_min
+// (eqs. 14-15, 2D or 3D), shape alpha (eq. 18) and phi(d) (eq. 12).
+//
+// Optional cap on the influence radius (KernelSettings::rMaxCap): r_max = r_p n grows
+// linearly with the droplet count, so a parcel of 1e5 droplets would touch the whole
+// grid. The cap only truncates the support at reach = min(r_max, cap) and keeps the
+// Gaussian itself (its inflection point, eq. 17) unchanged:
+//     phi(d) = exp(-gamma d^2) - exp(-gamma reach^2)   for d < reach,   gamma = alpha / r_max^2,
+// which is eq. 12 when the cap does not bind. (Recomputing alpha from the capped radius
+// would instead shrink the kernel's width and change the physics of eq. 17.)
+#pragma once
+
+namespace dropletFiber
+{
+
+// Which packing formula gives r_min (eq. 14 for 2D, eq. 15's 3D analogue).
+enum class KernelDimension
+{
+    Automatic, // 3D on a grid with three non-flat directions, otherwise 2D
+    TwoD,
+    ThreeD
+};
+
+struct KernelSettings
+{
+    double beta = 0.025;    // eq. 17/18: inflection point between r_min (0) and r_max (1)
+    double rMaxCap = 0.0;   // cap on the influence radius in metres; <= 0: no cap
+    KernelDimension dimension = KernelDimension::Automatic;
+
+    // Throws std::invalid_argument: beta outside (0, 1], rMaxCap not finite.
+    void validate() const;
+};
+
+// Eq. 13: r_max = r_p n.
+double influenceRadiusMax(double dropletRadius, double nParticle);
+// Eqs. 14-15: 2D r_min = r_p sqrt(2 sqrt(3) n / pi); 3D r_min = r_p (sqrt(18) n / pi)^(1/3).
+double influenceRadiusMin(double dropletRadius, double nParticle, int dimension);
+// Eq. 18: alpha = r_max^2 / (2 (beta r_max + (1 - beta) r_min)^2).
+double kernelAlpha(double rMax, double rMin, double beta);
+
+class ParcelKernel
+{
+public:
+    // dimension: 2 or 3 (the packing formula for r_min). Requires radius > 0, n > 0.
+    ParcelKernel(double dropletRadius, double nParticle, const KernelSettings& settings, int dimension);
+
+    // Direct construction from the Gaussian and its support (tests, other kernels):
+    // phi(d) = exp(-gamma d^2) - exp(-gamma reach^2), d < reach.
+    static ParcelKernel fromShape(double gamma, double reach);
+
+    double rMax() const { return rMax_; }
+    double rMin() const { return rMin_; }
+    double alpha() const { return alpha_; }
+    double reach() const { return reach_; }              // support radius, min(r_max, cap)
+    double gamma() const { return gamma_; }              // alpha / r_max^2, 1/m^2
+    double edgeExponent() const { return edgeExponent_; } // gamma reach^2 (= alpha uncapped)
+    double edgeValue() const { return edgeValue_; }        // exp(-edgeExponent)
+    bool capped() const { return capped_; }
+
+    // Eq. 12, accurate also near the edge of the support (no cancellation, see .cpp).
+    double phi(double distance) const;
+    // The same from the squared distance (what the grid loop has).
+    double phiSquared(double distanceSquared) const;
+
+private:
+    ParcelKernel() = default;
+    void setShape(double gamma, double reach);
+
+    double rMax_ = 0.0;
+    double rMin_ = 0.0;
+    double alpha_ = 0.0;
+    double reach_ = 0.0;
+    double gamma_ = 0.0;
+    double edgeExponent_ = 0.0;
+    double edgeValue_ = 0.0;
+    bool capped_ = false;
+};
+
+} // namespace dropletFiber

@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# A controlDict naming a cloud that does not exist must stop the run (non-zero
+# exit, FatalIOError) with a message naming the cloud and listing the clouds
+# that exist. Usage: checkMissingCloud.sh CASE_COPY
+set -uo pipefail
+case="$1"
+cd "$case" || exit 1
+# only the first clouds entry: ours (cloudInfo has one too)
+sed -i "0,/clouds          (kinematicCloud);/s//clouds          (noSuchCloud);/" system/controlDict
+grep -q "noSuchCloud" system/controlDict || { echo "FAILED: could not edit controlDict"; exit 1; }
+pimpleFoam > log.missingCloud 2>&1
+status=$?
+passed=0; failed=0
+check() { if eval "$1"; then passed=$((passed+1)); else failed=$((failed+1)); echo "FAILED: $2"; fi; }
+check '[ $status -ne 0 ]' "pimpleFoam exited with $status, expected a failure"
+check 'grep -q "FOAM FATAL IO ERROR" log.missingCloud' "no FatalIOError in the log"
+check 'grep -q "Cloud .noSuchCloud. named in entry .clouds." log.missingCloud' "error does not name the cloud and the entry"
+check 'grep -A1 "Clouds that exist" log.missingCloud | grep -q kinematicCloud' "error does not list the existing cloud"
+check '! grep -q "^Time = 0.004" log.missingCloud' "run went on after the error"
+grep -A6 "FOAM FATAL IO ERROR" log.missingCloud | head -8
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]

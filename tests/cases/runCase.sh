@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+#------------------------------------------------------------------------------
+# runCase.sh - run an OpenFOAM test case in a scratch copy, then check it.
+#
+# Usage: runCase.sh CASE_DIR WORK_DIR serial|parallel [CHECK_COMMAND ...]
+#   The case is copied to WORK_DIR (replaced if present), its Allrun is run
+#   (with -parallel for parallel), and CHECK_COMMAND is run with the copy's
+#   path appended. A failed step prints the tail of the case's logs.
+#------------------------------------------------------------------------------
+set -euo pipefail
+caseDir="$1"; workDir="$2"; mode="$3"; shift 3
+here="$(cd "${0%/*}" && pwd)"
+. "$here/../../bin/functions.sh"
+loadFoamEnvironment
+
+rm -rf "$workDir"
+mkdir -p "$(dirname "$workDir")"
+cp -r "$caseDir" "$workDir"
+
+showLogs() {
+    for log in "$workDir"/log.*; do
+        [ -f "$log" ] || continue
+        echo "==== tail of $log"
+        tail -25 "$log"
+    done
+}
+
+args=()
+[ "$mode" = parallel ] && args=(-parallel)
+if ! "$workDir/Allrun" "${args[@]}"; then
+    showLogs
+    die "Allrun of $workDir failed"
+fi
+# RunFunctions do not stop on a failed application: look for its log's end
+for log in "$workDir"/log.*; do
+    if grep -q -E "FOAM FATAL|FOAM exiting|Segmentation fault" "$log"; then
+        showLogs
+        die "$log shows a fatal error"
+    fi
+done
+if [ "$#" -gt 0 ]; then
+    "$@" "$workDir"
+fi
