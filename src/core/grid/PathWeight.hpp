@@ -1,0 +1,85 @@
+// PathWeight: the path-integrated kernel weight omega_g of one grid node for a parcel
+// that moves along a straight path during the step (MODEL.md eqs. 19-23):
+//     omega_g = integral_{tau_1}^{tau_2} phi(|p + tau v dt - g|) dtau,
+// tau in [0, 1] along the path, [tau_1, tau_2] = where the node is within the kernel's
+// reach, clipped to [0, 1] (so nodes whose nearest path point lies beyond an end of the
+// path, and paths that end inside the support, are handled by the same formula).
+//
+// Closed form (MODEL.md): with the along-path coordinate lambda = tau L (L = |v dt|),
+// lambda_m = the node's projection on the path line, d_0 = the distance of the node from
+// that line, x = sqrt(gamma) (lambda - lambda_m):
+//     omega_g = [ exp(-gamma d_0^2) / sqrt(gamma) * int_{x_1}^{x_2} exp(-x^2) dx
+//                 - exp(-gamma reach^2) (lambda_2 - lambda_1) ] / L.
+// Working in lambda (not tau) keeps L -> 0 finite: tau_min of eq. 21 diverges, lambda_m
+// does not. The integral is evaluated three ways so that it stays accurate to round-off
+// (see PathWeight.cpp): erf/erfc differences (long intervals), a Taylor series in the
+// half-width (short intervals, including L -> 0), and a Gauss-Legendre rule on
+// exp(-a) expm1(...) where the path only grazes the edge of the support (there the two
+// terms above nearly cancel). A path shorter than 1e-12 reach is taken as a point at its
+// midpoint: omega = phi(|midpoint - g|), the L -> 0 limit.
+//
+// Geometry is plain 3D; a 2D grid passes vectors with the flat component zeroed.
+#pragma once
+
+#include "grid/ParcelKernel.hpp"
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <cmath>
+
+namespace dropletFiber
+{
+
+class PathWeight
+{
+public:
+    // The path runs from start to start + displacement during the step.
+    PathWeight(const ParcelKernel& kernel, const Eigen::Vector3d& start, const Eigen::Vector3d& displacement);
+
+    // Eq. 23 for a node at `node`; zero when the node is out of reach.
+    double omega(const Eigen::Vector3d& node) const { return omegaFromOffset(node - start_); }
+
+    // Same, from offset = node - start (the grid loop has it).
+    double omegaFromOffset(const Eigen::Vector3d& offset) const
+    {
+        if (stationary_)
+        {
+            return kernel_.phiSquared((offset - halfDisplacement_).squaredNorm());
+        }
+        const double lambdaM = direction_.dot(offset);
+        const double d0Squared = (offset - lambdaM * direction_).squaredNorm();
+        if (!(d0Squared < reachSquared_))
+        {
+            return 0.0;
+        }
+        const double halfChord = std::sqrt(reachSquared_ - d0Squared);
+        const double lambda1 = std::max(0.0, lambdaM - halfChord);
+        const double lambda2 = std::min(length_, lambdaM + halfChord);
+        if (!(lambda2 > lambda1))
+        {
+            return 0.0;
+        }
+        return integralAlongPath(lambdaM, d0Squared, halfChord, lambda1, lambda2) * inverseLength_;
+    }
+
+    double length() const { return length_; }
+    bool stationary() const { return stationary_; }
+    const ParcelKernel& kernel() const { return kernel_; }
+
+    // int_{lambda1}^{lambda2} phi dlambda (metres); public for the accuracy tests.
+    double integralAlongPath(double lambdaM, double d0Squared, double halfChord, double lambda1, double lambda2) const;
+
+private:
+    ParcelKernel kernel_;
+    Eigen::Vector3d start_;
+    Eigen::Vector3d halfDisplacement_;
+    Eigen::Vector3d direction_{0.0, 0.0, 0.0};
+    double length_ = 0.0;
+    double inverseLength_ = 0.0;
+    double reachSquared_ = 0.0;
+    double sqrtGamma_ = 0.0;
+    bool stationary_ = true;
+};
+
+} // namespace dropletFiber
