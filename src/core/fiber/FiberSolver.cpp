@@ -1,0 +1,203 @@
+#include "fiber/FiberSolver.hpp"
+
+#include "fiber/FiberDiagnostics.hpp"
+#include "fiber/VelocityProjection.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace dropletFiber {
+
+FiberSolver::FiberSolver(const FiberSolverSettings& settings) : settings_(settings)
+{
+    auto fail = [](const std::string& what) {
+        throw std::invalid_argument("FiberSolverSettings: " + what);
+    };
+    if (!(settings_.theta >= 0.5 && settings_.theta <= 1.0)) fail("theta must be in [0.5, 1]");
+    if (settings_.maxNewtonIterations < 1) fail("maxNewtonIterations must be >= 1");
+    if (settings_.maxSubSteps < 1) fail("maxSubSteps must be >= 1");
+    if (!(settings_.maxSegmentRotation > 0.0)) fail("maxSegmentRotation must be > 0");
+    if (!(settings_.maxDragStepRatio > 0.0)) fail("maxDragStepRatio must be > 0");
+    if (!(settings_.constraintTolerance > 0.0) || !(settings_.acceptableConstraintError > 0.0)) {
+        fail("tolerances must be > 0");
+    }
+    if (settings_.drag.model == DragModelType::linear &&
+        (settings_.drag.normalCoefficient < 0.0 || settings_.drag.tangentialCoefficient < 0.0)) {
+        fail("linear drag coefficients must be >= 0");
+    }
+}
+
+void applyCapture(Fiber& fiber, const std::vector<SegmentSource>& sources, bool project)
+{
+    if (sources.empty()) return;
+    if (static_cast<Eigen::Index>(sources.size()) != fiber.segmentCount()) {
+        throw std::invalid_argument("capture: one SegmentSource per segment expected");
+    }
+    const Eigen::VectorXd massBefore = fiber.pointMasses();
+    FiberState& state = fiber.mutableState();
+    Eigen::Matrix3Xd pointMomentum = state.velocities * massBefore.asDiagonal();
+    for (std::size_t j = 0; j < sources.size(); ++j) {
+        const SegmentSource& source = sources[j];
+        if (source.mass < 0.0) throw std::invalid_argument("capture: negative mass");
+        const auto jj = static_cast<Eigen::Index>(j);
+        state.capturedMass(jj) += source.mass;
+        pointMomentum.col(jj) += 0.5 * source.momentum;
+        pointMomentum.col(jj + 1) += 0.5 * source.momentum;
+    }
+    const Eigen::VectorXd massAfter = fiber.pointMasses();
+    for (Eigen::Index i = 0; i < fiber.pointCount(); ++i) {
+        state.velocities.col(i) = pointMomentum.col(i) / massAfter(i);
+    }
+    if (project) {
+        projectVelocities(fiber);
+    } else {
+        for (Eigen::Index i = 0; i < fiber.pointCount(); ++i) {
+            if (fiber.pointHeld(i)) state.velocities.col(i) = fiber.heldPointVelocity(i);
+        }
+    }
+}
+
+PointDrag FiberSolver::pointDrag(const Fiber& fiber, const AirSample* air, Eigen::Index firstPoint,
+                                 Eigen::Matrix3Xd& airVelocity) const
+{
+    PointDrag drag;
+    if (air == nullptr) return drag;
+    const Eigen::Index n = fiber.pointCount();
+    airVelocity = air->velocity.middleCols(firstPoint, n);
+    drag.airVelocity = &airVelocity;
+    drag.normal.resize(n);
+    drag.tangential.resize(n);
+    const Eigen::Matrix3Xd& x = fiber.positions();
+    for (Eigen::Index i = 0; i < n; ++i) {
+        const Eigen::Index hi = std::min(i + 1, n - 1), lo = std::max(i - 1, Eigen::Index(0));
+        const Eigen::Vector3d t = (x.col(hi) - x.col(lo)).normalized();
+        const Eigen::Vector3d w = airVelocity.col(i) - fiber.velocities().col(i);
+        const double normalSpeed = (w - t.dot(w) * t).norm();
+        const DragCoefficients c = dragCoefficients(
+            settings_.drag, air->density(firstPoint + i), air->viscosity(firstPoint + i),
+            fiber.material().radius, fiber.length(), normalSpeed);
+        drag.normal(i) = c.normal;
+        drag.tangential(i) = c.tangential;
+    }
+    return drag;
+}
+
+void FiberSolver::advanceSpan(Fiber& fiber, std::size_t fiberIndex, double h, double hMin,
+                              const AirSample* air, Eigen::Index firstPoint, StepReport& report,
+                              int& acceptedSubSteps)
+{
+    const FiberState backup = fiber.state();
+    Eigen::Matrix3Xd airVelocity;
+    const PointDrag drag = pointDrag(fiber, air, firstPoint, airVelocity);
+    const SubStepResult result = implicitStep_.advance(fiber, h, drag, settings_);
+    report.newtonIterations += result.iterations;
+    report.maxNewtonIterations = std::max(report.maxNewtonIterations, result.iterations);
+
+    const bool canSplit = 0.5 * h >= hMin * (1.0 - 1e-9);
+    const bool accurate = result.maxRotation <= settings_.maxSegmentRotation;
+    if (result.converged && (accurate || !canSplit)) {
+        if (result.loose) ++report.looseConvergences;
+        if (settings_.projectVelocities) projectVelocities(fiber);
+        ++acceptedSubSteps;
+        return;
+    }
+    fiber.mutableState() = backup;
+    if (!canSplit) {
+        throw std::runtime_error("FiberSolver: fiber " + std::to_string(fiberIndex) +
+                                 " did not converge at the smallest sub-step " +
+                                 std::to_string(h) + " s (maxSubSteps = " +
+                                 std::to_string(settings_.maxSubSteps) + ")");
+    }
+    ++report.rejectedSubSteps;
+    advanceSpan(fiber, fiberIndex, 0.5 * h, hMin, air, firstPoint, report, acceptedSubSteps);
+    advanceSpan(fiber, fiberIndex, 0.5 * h, hMin, air, firstPoint, report, acceptedSubSteps);
+}
+
+void FiberSolver::advanceFiber(Fiber& fiber, std::size_t fiberIndex, double dt, const AirSample* air,
+                               Eigen::Index firstPoint, StepReport& report)
+{
+    // Split up front so each sub-step spans at most maxDragStepRatio relaxation times.
+    int initialSplit = 1;
+    if (air != nullptr) {
+        Eigen::Matrix3Xd airVelocity;
+        const PointDrag drag = pointDrag(fiber, air, firstPoint, airVelocity);
+        const Eigen::VectorXd sigma = fiber.lineDensityAtPoints();
+        double fastest = 0.0;  // largest c_n / sigma = 1 / relaxation time
+        for (Eigen::Index i = 0; i < fiber.pointCount(); ++i) {
+            fastest = std::max(fastest, std::max(drag.normal(i), drag.tangential(i)) / sigma(i));
+        }
+        const double wanted = std::ceil(dt * fastest / settings_.maxDragStepRatio);
+        initialSplit = static_cast<int>(std::min(std::max(wanted, 1.0),
+                                                 static_cast<double>(settings_.maxSubSteps)));
+    }
+    const double hMin = dt / settings_.maxSubSteps;
+    int accepted = 0;
+    for (int k = 0; k < initialSplit; ++k) {
+        advanceSpan(fiber, fiberIndex, dt / initialSplit, hMin, air, firstPoint, report, accepted);
+    }
+    report.subSteps += accepted;
+    report.maxSubStepsOfAFiber = std::max(report.maxSubStepsOfAFiber, accepted);
+}
+
+StepReport FiberSolver::step(std::vector<Fiber>& fibers, double dt, const AirSampler& air,
+                             const CaptureSources* capture)
+{
+    if (!(dt > 0.0)) throw std::invalid_argument("FiberSolver::step: dt must be > 0");
+    if (capture != nullptr && capture->size() != fibers.size()) {
+        throw std::invalid_argument("FiberSolver::step: capture needs one list per fiber");
+    }
+    StepReport report;
+
+    if (capture != nullptr) {
+        for (std::size_t f = 0; f < fibers.size(); ++f) {
+            applyCapture(fibers[f], (*capture)[f], settings_.projectVelocities);
+        }
+    }
+
+    // One batched air sample for all movable fibers.
+    std::vector<Eigen::Index> firstPoint(fibers.size(), 0);
+    Eigen::Index pointTotal = 0;
+    for (std::size_t f = 0; f < fibers.size(); ++f) {
+        firstPoint[f] = pointTotal;
+        if (!fibers[f].immobile()) pointTotal += fibers[f].pointCount();
+    }
+    AirSample airSample;
+    const AirSample* airPointer = nullptr;
+    if (settings_.drag.model != DragModelType::none && pointTotal > 0) {
+        if (!air) throw std::invalid_argument("FiberSolver::step: drag needs an air sampler");
+        Eigen::Matrix3Xd points(3, pointTotal);
+        for (std::size_t f = 0; f < fibers.size(); ++f) {
+            if (!fibers[f].immobile()) {
+                points.middleCols(firstPoint[f], fibers[f].pointCount()) = fibers[f].positions();
+            }
+        }
+        airSample = air(points);
+        if (airSample.velocity.cols() != pointTotal || airSample.density.size() != pointTotal ||
+            airSample.viscosity.size() != pointTotal) {
+            throw std::invalid_argument("FiberSolver::step: air sample has the wrong size");
+        }
+        airPointer = &airSample;
+    }
+
+    for (std::size_t f = 0; f < fibers.size(); ++f) {
+        if (fibers[f].immobile()) continue;
+        advanceFiber(fibers[f], f, dt, airPointer, firstPoint[f], report);
+        ++report.fibersAdvanced;
+    }
+
+    for (const Fiber& fiber : fibers) {
+        const FiberDiagnostics d = diagnose(fiber, settings_.gravity);
+        report.kineticEnergy += d.kineticEnergy;
+        report.elasticEnergy += d.elasticEnergy;
+        report.gravitationalEnergy += d.gravitationalEnergy;
+        report.totalMass += d.totalMass;
+        report.capturedMass += d.capturedMass;
+        report.momentum += d.momentum;
+        report.maxSegmentLengthError = std::max(report.maxSegmentLengthError, d.maxSegmentLengthError);
+    }
+    return report;
+}
+
+}  // namespace dropletFiber

@@ -1,0 +1,57 @@
+// FiberSolver: advances all fibers by one CFD time step (MODEL.md sec. 1).
+// Per step, in this order:
+//   1. droplet capture (optional): each segment's captured mass joins its two end
+//      points (half each) with the droplets' momentum - an inelastic merge that
+//      conserves momentum - followed by the impulsive tension response (velocity
+//      projection) that keeps the fiber inextensible;
+//   2. one batched call of the air sampler for all points of all movable fibers
+//      (skipped when the drag model is none);
+//   3. each movable fiber independently: implicit sub-steps (ImplicitFiberStep),
+//      as many as its own accuracy needs (see FiberSolverSettings), each followed by
+//      a velocity projection.
+// Fibers are processed one after another in list order; no randomness, no threads:
+// identical results on every MPI rank. The solver keeps no state between steps
+// besides its settings and reusable work storage, so a restart from saved
+// FiberStates is bit-for-bit identical.
+#pragma once
+
+#include "fiber/AirSample.hpp"
+#include "fiber/Fiber.hpp"
+#include "fiber/FiberSolverSettings.hpp"
+#include "fiber/ImplicitFiberStep.hpp"
+#include "fiber/SegmentSource.hpp"
+#include "fiber/StepReport.hpp"
+
+#include <vector>
+
+namespace dropletFiber {
+
+class FiberSolver {
+public:
+    explicit FiberSolver(const FiberSolverSettings& settings = FiberSolverSettings());
+
+    const FiberSolverSettings& settings() const { return settings_; }
+
+    // capture: nullptr, or one list per fiber (empty, or one SegmentSource per segment).
+    // Throws std::invalid_argument on inconsistent input and std::runtime_error when
+    // a fiber cannot be advanced even at the smallest allowed sub-step.
+    StepReport step(std::vector<Fiber>& fibers, double dt, const AirSampler& air,
+                    const CaptureSources* capture = nullptr);
+
+private:
+    void advanceFiber(Fiber& fiber, std::size_t fiberIndex, double dt,
+                      const AirSample* air, Eigen::Index firstPoint, StepReport& report);
+    void advanceSpan(Fiber& fiber, std::size_t fiberIndex, double h, double hMin,
+                     const AirSample* air, Eigen::Index firstPoint, StepReport& report,
+                     int& acceptedSubSteps);
+    PointDrag pointDrag(const Fiber& fiber, const AirSample* air, Eigen::Index firstPoint,
+                        Eigen::Matrix3Xd& airVelocity) const;
+
+    FiberSolverSettings settings_;
+    ImplicitFiberStep implicitStep_;
+};
+
+// Inelastic capture on one fiber (step 1 above); exposed for tests and tools.
+void applyCapture(Fiber& fiber, const std::vector<SegmentSource>& sources, bool project);
+
+}  // namespace dropletFiber

@@ -1,0 +1,132 @@
+#include "grid/PathWeight.hpp"
+
+#include "grid/GaussLegendre.hpp"
+
+#include <cmath>
+
+namespace dropletFiber
+{
+
+namespace
+{
+
+constexpr double halfSqrtPi = 0.88622692545275801365; // sqrt(pi) / 2
+
+// Paths shorter than this fraction of the reach are taken as a point (error of order
+// (gamma L^2)^2, far below round-off).
+constexpr double stationaryFraction = 1e-12;
+
+// G(x1, x2) = int_{x1}^{x2} exp(-x^2) dx for a "long" interval (see regime choice below),
+// as a difference of positive quantities that does not cancel: erfc on the side where
+// both ends lie in the same tail, erf where the interval straddles zero.
+double gaussianIntegral(double x1, double x2)
+{
+    if (x1 >= 0.0)
+    {
+        return halfSqrtPi * (std::erfc(x1) - std::erfc(x2));
+    }
+    if (x2 <= 0.0)
+    {
+        return halfSqrtPi * (std::erfc(-x2) - std::erfc(-x1));
+    }
+    return halfSqrtPi * (std::erf(x2) - std::erf(x1));
+}
+
+// int_{xc-h}^{xc+h} exp(-x^2) dx = exp(-xc^2) * S with the Taylor series about the
+// midpoint: S = sum_m 2 h^(2m+1) / (2m+1)! * H_2m(xc) (H_n: Hermite polynomials,
+// d^n/dx^n exp(-x^2) = (-1)^n H_n(x) exp(-x^2)). Used for h (1 + |xc|) <= 0.5, where the
+// terms fall at least ~ 0.25^m / (2m+1)!, so 12 terms are beyond round-off.
+double gaussianTaylorSum(double xc, double h)
+{
+    const double h2 = h * h;
+    const double twoX = 2.0 * xc;
+    double coefficient = 2.0 * h; // 2 h^(2m+1) / (2m+1)!
+    double hermiteEven = 1.0;      // H_2m
+    double hermiteOdd = twoX;      // H_2m+1
+    double sum = coefficient;
+    for (int m = 1; m <= 12; ++m)
+    {
+        const double nextEven = twoX * hermiteOdd - 2.0 * (2 * m - 1) * hermiteEven;
+        const double nextOdd = twoX * nextEven - 2.0 * (2 * m) * hermiteOdd;
+        hermiteEven = nextEven;
+        hermiteOdd = nextOdd;
+        coefficient *= h2 / ((2.0 * m) * (2.0 * m + 1.0));
+        const double term = coefficient * hermiteEven;
+        sum += term;
+        // Stop when this term and the size of the next are negligible (the bound uses
+        // |H_2m+1| too, so that a term that is small only because xc sits near a zero of
+        // H_2m does not end the series early).
+        if (coefficient * (std::abs(hermiteEven) + h * std::abs(hermiteOdd)) < 1e-18 * std::abs(sum))
+        {
+            break;
+        }
+    }
+    return sum;
+}
+
+} // namespace
+
+PathWeight::PathWeight(const ParcelKernel& kernel, const Eigen::Vector3d& start, const Eigen::Vector3d& displacement)
+    : kernel_(kernel), start_(start), halfDisplacement_(0.5 * displacement)
+{
+    reachSquared_ = kernel.reach() * kernel.reach();
+    sqrtGamma_ = std::sqrt(kernel.gamma());
+    length_ = displacement.norm();
+    stationary_ = !(length_ > stationaryFraction * kernel.reach());
+    if (!stationary_)
+    {
+        inverseLength_ = 1.0 / length_;
+        direction_ = displacement * inverseLength_;
+    }
+}
+
+double PathWeight::integralAlongPath(
+    double lambdaM, double d0Squared, double halfChord, double lambda1, double lambda2) const
+{
+    const double gamma = kernel_.gamma();
+    const double edgeValue = kernel_.edgeValue();
+    const double u1 = lambda1 - lambdaM;
+    const double u2 = lambda2 - lambdaM;
+    const double width = lambda2 - lambda1;
+
+    // Largest q = gamma (halfChord^2 - u^2) on the interval; phi = exp(-a) expm1(q).
+    const double uNearest = (u1 <= 0.0 && u2 >= 0.0) ? 0.0 : std::min(std::abs(u1), std::abs(u2));
+    const double qMax = gamma * (halfChord - uNearest) * (halfChord + uNearest);
+
+    if (qMax < 0.25)
+    {
+        // Regime A: the interval only grazes the edge of the support. The Gaussian and the
+        // constant of eq. 12 nearly cancel, so integrate phi = exp(-a) expm1(q) pointwise;
+        // q is a quadratic of range <= 0.25 here, so the 10-point rule is exact to round-off.
+        const GaussLegendreRule& rule = gaussLegendre();
+        const double centre = 0.5 * (u1 + u2);
+        const double half = 0.5 * width;
+        double sum = 0.0;
+        for (int i = 0; i < GaussLegendreRule::order; ++i)
+        {
+            const double u = std::abs(centre + half * rule.node[i]);
+            sum += rule.weight[i] * std::expm1(gamma * (halfChord - u) * (halfChord + u));
+        }
+        return edgeValue * half * sum;
+    }
+
+    // From here on qMax >= 0.25: the mean of expm1(q) is at least qMax / 2 (q is concave),
+    // so subtracting the constant term loses at most one digit.
+    const double xCentre = sqrtGamma_ * 0.5 * (u1 + u2);
+    const double xHalf = sqrtGamma_ * 0.5 * width;
+    if (xHalf * (1.0 + std::abs(xCentre)) <= 0.5)
+    {
+        // Regime B: short interval in x (includes L -> 0): Taylor series about the middle,
+        // one exponential, no erf difference that would cancel.
+        const double gaussian
+            = std::exp(-(gamma * d0Squared + xCentre * xCentre)) * gaussianTaylorSum(xCentre, xHalf) / sqrtGamma_;
+        return gaussian - edgeValue * width;
+    }
+
+    // Regime C: the closed form of MODEL.md with erf/erfc.
+    const double gaussian
+        = std::exp(-gamma * d0Squared) * gaussianIntegral(sqrtGamma_ * u1, sqrtGamma_ * u2) / sqrtGamma_;
+    return gaussian - edgeValue * width;
+}
+
+} // namespace dropletFiber

@@ -1,0 +1,72 @@
+#include "injection/FiberInjector.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace dropletFiber
+{
+
+void FiberInjectorSpec::validate() const
+{
+    auto fail = [this](const std::string& entry, const std::string& what) {
+        throw std::invalid_argument("injector '" + name + "': entry '" + entry + "' " + what);
+    };
+    if (!position.allFinite()) fail("position", "must be finite");
+    if (!velocity.allFinite()) fail("velocity", "must be finite");
+    if (!direction.allFinite() || direction.norm() == 0.0) fail("direction", "must be a non-zero vector");
+    if (!(length > 0.0) || !std::isfinite(length)) fail("length", "must be > 0");
+    if (points < 2) fail("points", "must be >= 2");
+    if (!(rate > 0.0) || !std::isfinite(rate)) fail("rate", "must be > 0 (fibers per second)");
+    if (!std::isfinite(startTime)) fail("startTime", "must be finite");
+    if (!(endTime > startTime)) fail("endTime", "must be > startTime");
+    if (!(material.radius > 0.0)) fail("radius", "must be > 0");
+    if (!(material.density > 0.0)) fail("density", "must be > 0");
+    if (!(material.youngsModulus >= 0.0)) fail("youngsModulus", "must be >= 0");
+}
+
+FiberInjector::FiberInjector(FiberInjectorSpec spec) : spec_(std::move(spec))
+{
+    spec_.validate();
+    spec_.direction.normalize();
+}
+
+long FiberInjector::bornBy(double t) const
+{
+    if (t < spec_.startTime)
+    {
+        return 0;
+    }
+    // t_k <= t  <=>  k <= (t - start) rate; a relative tolerance keeps a birth that
+    // falls on a step boundary in that step, whatever the rounding of t.
+    const double kMax = (t - spec_.startTime) * spec_.rate;
+    const long upToT = static_cast<long>(std::floor(kMax + 1e-9 * std::max(1.0, kMax))) + 1;
+    // t_k < endTime  <=>  k < (end - start) rate
+    const double kEnd = (spec_.endTime - spec_.startTime) * spec_.rate;
+    const long beforeEnd = static_cast<long>(std::ceil(kEnd - 1e-9 * std::max(1.0, kEnd)));
+    return std::min(upToT, beforeEnd);
+}
+
+std::vector<Fiber> FiberInjector::inject(double t)
+{
+    std::vector<Fiber> born;
+    const long total = bornBy(t);
+    const double segment = spec_.length / (spec_.points - 1);
+    for (long k = injected_; k < total; ++k)
+    {
+        const double birth = spec_.startTime + static_cast<double>(k) / spec_.rate;
+        const Eigen::Vector3d start = spec_.position + spec_.velocity * (t - birth);
+        Eigen::Matrix3Xd x(3, spec_.points);
+        for (int i = 0; i < spec_.points; ++i)
+        {
+            x.col(i) = start + spec_.direction * (segment * i);
+        }
+        Fiber fiber(x, spec_.material);
+        fiber.setVelocities(spec_.velocity.replicate(1, spec_.points));
+        born.push_back(std::move(fiber));
+    }
+    injected_ = std::max(injected_, total);
+    return born;
+}
+
+} // namespace dropletFiber

@@ -1,0 +1,62 @@
+// FiberInjector: a stream of straight fibers entering the domain, as in glass-wool
+// production where fibers leave a spinner (the fiber source of the paper's figure 11).
+//
+// Fiber k of a stream is born at t_k = startTime + k / rate, for every k with
+// t_k < endTime. It is laid straight from `position` along `direction` (unit), with
+// all points moving at `velocity`, and - because it is only handed to the solver at
+// the end of the CFD step in which it is born - it is moved on by velocity*(t - t_k),
+// so that a stream looks the same whatever the CFD step.
+//
+// The only state is the number of fibers injected so far, which makes a restart
+// exact: save injectedCount(), restore it with setInjectedCount().
+#pragma once
+
+#include "fiber/Fiber.hpp"
+
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+namespace dropletFiber
+{
+
+struct FiberInjectorSpec
+{
+    std::string name;
+    Eigen::Vector3d position = Eigen::Vector3d::Zero();   // first point of a new fiber [m]
+    Eigen::Vector3d direction = Eigen::Vector3d::UnitX(); // along the fiber (normalised)
+    Eigen::Vector3d velocity = Eigen::Vector3d::Zero();   // of every point [m/s]
+    double length = 0.0;                                  // [m]
+    int points = 21;                                      // points per fiber (>= 2)
+    double rate = 0.0;                                    // fibers per second
+    double startTime = 0.0;                               // [s]
+    double endTime = 0.0;                                 // [s], no fiber born at or after
+    FiberMaterial material;
+
+    // Throws std::invalid_argument naming the offending entry.
+    void validate() const;
+};
+
+class FiberInjector
+{
+public:
+    explicit FiberInjector(FiberInjectorSpec spec);
+
+    const FiberInjectorSpec& spec() const { return spec_; }
+
+    // Number of fibers born at or before time t (and before endTime).
+    long bornBy(double t) const;
+
+    // The fibers born in (.., t] not injected yet, placed as they are at time t.
+    std::vector<Fiber> inject(double t);
+
+    long injectedCount() const { return injected_; }
+    void setInjectedCount(long count) { injected_ = count; }
+
+private:
+    FiberInjectorSpec spec_;
+    long injected_ = 0;
+};
+
+} // namespace dropletFiber

@@ -1,0 +1,206 @@
+#include "output/VtkWriter.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <regex>
+#include <sstream>
+#include <stdexcept>
+
+namespace dropletFiber
+{
+
+namespace
+{
+
+std::ofstream openOrThrow(const std::string& path)
+{
+    std::ofstream os(path);
+    if (!os)
+    {
+        throw std::runtime_error("cannot open '" + path + "' for writing");
+    }
+    os << std::setprecision(17);
+    return os;
+}
+
+void writeTimeFieldData(std::ostream& os, double time)
+{
+    os << "    <FieldData>\n"
+       << "      <DataArray type=\"Float64\" Name=\"TimeValue\" NumberOfTuples=\"1\""
+          " format=\"ascii\">"
+       << time << "</DataArray>\n"
+       << "    </FieldData>\n";
+}
+
+void writeDataArray(std::ostream& os, const VtkField& field, std::size_t tuples)
+{
+    if (field.values.size() != tuples * static_cast<std::size_t>(field.components))
+    {
+        throw std::invalid_argument("VTK field '" + field.name + "' has "
+                                    + std::to_string(field.values.size())
+                                    + " values, expected "
+                                    + std::to_string(tuples * field.components));
+    }
+    os << "        <DataArray type=\"Float64\" Name=\"" << field.name
+       << "\" NumberOfComponents=\"" << field.components << "\" format=\"ascii\">\n";
+    for (std::size_t i = 0; i < field.values.size(); ++i)
+    {
+        // VTK has no notation for non-finite values that every reader accepts
+        const double v = std::isfinite(field.values[i]) ? field.values[i] : 0.0;
+        os << (i % 6 == 0 ? "          " : " ") << v;
+        if (i % 6 == 5 || i + 1 == field.values.size())
+        {
+            os << '\n';
+        }
+    }
+    os << "        </DataArray>\n";
+}
+
+void writeFieldBlock(std::ostream& os, const char* tag, const std::vector<VtkField>& fields,
+                     std::size_t tuples)
+{
+    os << "      <" << tag << ">\n";
+    for (const VtkField& field : fields)
+    {
+        writeDataArray(os, field, tuples);
+    }
+    os << "      </" << tag << ">\n";
+}
+
+} // namespace
+
+void writePolylines(const std::string& path, double time,
+                    const std::vector<Eigen::Vector3d>& points,
+                    const std::vector<std::size_t>& lineOffsets,
+                    const std::vector<VtkField>& pointData,
+                    const std::vector<VtkField>& cellData)
+{
+    std::size_t nSegments = 0;
+    for (std::size_t f = 0; f < lineOffsets.size(); ++f)
+    {
+        const std::size_t end = f + 1 < lineOffsets.size() ? lineOffsets[f + 1] : points.size();
+        nSegments += end - lineOffsets[f] - 1;
+    }
+
+    std::ofstream os = openOrThrow(path);
+    os << "<?xml version=\"1.0\"?>\n"
+       << "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\">\n"
+       << "  <PolyData>\n";
+    writeTimeFieldData(os, time);
+    // One VTK line cell per segment, so that cell data (tension) is per segment
+    os << "    <Piece NumberOfPoints=\"" << points.size() << "\" NumberOfLines=\""
+       << nSegments << "\">\n"
+       << "      <Points>\n"
+       << "        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+    for (const Eigen::Vector3d& p : points)
+    {
+        os << "          " << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
+    }
+    os << "        </DataArray>\n"
+       << "      </Points>\n"
+       << "      <Lines>\n"
+       << "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+    for (std::size_t f = 0; f < lineOffsets.size(); ++f)
+    {
+        const std::size_t end = f + 1 < lineOffsets.size() ? lineOffsets[f + 1] : points.size();
+        for (std::size_t i = lineOffsets[f]; i + 1 < end; ++i)
+        {
+            os << "          " << i << ' ' << i + 1 << '\n';
+        }
+    }
+    os << "        </DataArray>\n"
+       << "        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
+    for (std::size_t s = 1; s <= nSegments; ++s)
+    {
+        os << "          " << 2 * s << '\n';
+    }
+    os << "        </DataArray>\n"
+       << "      </Lines>\n";
+    writeFieldBlock(os, "PointData", pointData, points.size());
+    writeFieldBlock(os, "CellData", cellData, nSegments);
+    os << "    </Piece>\n"
+       << "  </PolyData>\n"
+       << "</VTKFile>\n";
+    if (!os)
+    {
+        throw std::runtime_error("error writing '" + path + "'");
+    }
+}
+
+void writeImageData(const std::string& path, double time, const Eigen::Vector3d& origin,
+                    const Eigen::Vector3d& spacing, const std::array<int, 3>& nodes,
+                    const std::vector<VtkField>& pointData)
+{
+    const std::size_t nPoints = static_cast<std::size_t>(nodes[0]) * nodes[1] * nodes[2];
+    std::ofstream os = openOrThrow(path);
+    std::ostringstream extent;
+    extent << "0 " << nodes[0] - 1 << " 0 " << nodes[1] - 1 << " 0 " << nodes[2] - 1;
+    os << "<?xml version=\"1.0\"?>\n"
+       << "<VTKFile type=\"ImageData\" version=\"1.0\" byte_order=\"LittleEndian\">\n"
+       << "  <ImageData WholeExtent=\"" << extent.str() << "\" Origin=\"" << origin.x()
+       << ' ' << origin.y() << ' ' << origin.z() << "\" Spacing=\"" << spacing.x() << ' '
+       << spacing.y() << ' ' << spacing.z() << "\">\n";
+    writeTimeFieldData(os, time);
+    os << "    <Piece Extent=\"" << extent.str() << "\">\n";
+    writeFieldBlock(os, "PointData", pointData, nPoints);
+    os << "      <CellData>\n      </CellData>\n"
+       << "    </Piece>\n"
+       << "  </ImageData>\n"
+       << "</VTKFile>\n";
+    if (!os)
+    {
+        throw std::runtime_error("error writing '" + path + "'");
+    }
+}
+
+void SeriesFile::load(double restartTime)
+{
+    entries_.clear();
+    std::ifstream is(path_);
+    if (!is)
+    {
+        return;
+    }
+    // Entries are written one per line by write(); read them back the same way
+    const std::regex entry("\"name\"\\s*:\\s*\"([^\"]*)\"\\s*,\\s*\"time\"\\s*:\\s*([-+0-9.eE]+)");
+    std::string line;
+    while (std::getline(is, line))
+    {
+        std::smatch m;
+        if (std::regex_search(line, m, entry))
+        {
+            const double t = std::stod(m[2].str());
+            if (t < restartTime)
+            {
+                entries_.push_back({m[1].str(), t});
+            }
+        }
+    }
+}
+
+void SeriesFile::add(const std::string& fileName, double time)
+{
+    entries_.erase(std::remove_if(entries_.begin(), entries_.end(),
+                                  [&](const Entry& e) { return e.time == time; }),
+                   entries_.end());
+    entries_.push_back({fileName, time});
+    std::sort(entries_.begin(), entries_.end(),
+              [](const Entry& a, const Entry& b) { return a.time < b.time; });
+    write();
+}
+
+void SeriesFile::write() const
+{
+    std::ofstream os = openOrThrow(path_);
+    os << "{\n  \"file-series-version\" : \"1.0\",\n  \"files\" : [\n";
+    for (std::size_t i = 0; i < entries_.size(); ++i)
+    {
+        os << "    { \"name\" : \"" << entries_[i].name << "\", \"time\" : " << entries_[i].time
+           << " }" << (i + 1 < entries_.size() ? "," : "") << '\n';
+    }
+    os << "  ]\n}\n";
+}
+
+} // namespace dropletFiber

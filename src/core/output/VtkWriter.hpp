@@ -1,0 +1,73 @@
+// VtkWriter: ParaView-readable output of the fibers and the density grid, as VTK XML
+// files (ASCII, so any XML reader can check them), plus the ".series" index that
+// makes ParaView load a set of files as one time series.
+//
+//   writePolylines - fibers: one polyline per fiber (.vtp, PolyData), with point and
+//                    cell (= segment) data;
+//   writeImageData - the regular density grid (.vti, ImageData), with point data.
+//   SeriesFile     - the JSON "<file>.series" index (file name and time per entry),
+//                    re-read on restart so that later times replace, never duplicate.
+//
+// Values are written with 17 significant digits: the files are also what a user
+// compares against, so they must not round away what the solver computed.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace dropletFiber
+{
+
+// A named data array: `components` values per point (or cell), point after point.
+struct VtkField
+{
+    std::string name;
+    int components = 1;
+    std::vector<double> values;
+};
+
+// Fibers as polylines. lineOffsets[f] is the index of the first point of line f in
+// `points`; the lines are consecutive, the last one ends at the last point.
+void writePolylines(const std::string& path, double time,
+                    const std::vector<Eigen::Vector3d>& points,
+                    const std::vector<std::size_t>& lineOffsets,
+                    const std::vector<VtkField>& pointData,
+                    const std::vector<VtkField>& cellData);
+
+// A regular grid: origin, spacing and number of nodes per direction, point data in
+// VTK order (x fastest, then y, then z).
+void writeImageData(const std::string& path, double time, const Eigen::Vector3d& origin,
+                    const Eigen::Vector3d& spacing, const std::array<int, 3>& nodes,
+                    const std::vector<VtkField>& pointData);
+
+// The ".series" index of one output stream.
+class SeriesFile
+{
+public:
+    explicit SeriesFile(std::string path) : path_(std::move(path)) {}
+
+    // Read the entries of an existing index (a restarted run), keeping those with a
+    // time before `restartTime`.
+    void load(double restartTime);
+
+    // Add (or replace, for the same time) an entry and rewrite the index.
+    void add(const std::string& fileName, double time);
+
+    std::size_t size() const { return entries_.size(); }
+
+private:
+    struct Entry
+    {
+        std::string name;
+        double time;
+    };
+    void write() const;
+
+    std::string path_;
+    std::vector<Entry> entries_;
+};
+
+} // namespace dropletFiber
