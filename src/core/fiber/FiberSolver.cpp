@@ -29,7 +29,7 @@ FiberSolver::FiberSolver(const FiberSolverSettings& settings) : settings_(settin
     }
 }
 
-void applyCapture(Fiber& fiber, const std::vector<SegmentSource>& sources, bool project)
+void applyCapture(Fiber& fiber, const std::vector<SegmentSource>& sources)
 {
     if (sources.empty()) return;
     if (static_cast<Eigen::Index>(sources.size()) != fiber.segmentCount()) {
@@ -50,13 +50,7 @@ void applyCapture(Fiber& fiber, const std::vector<SegmentSource>& sources, bool 
     for (Eigen::Index i = 0; i < fiber.pointCount(); ++i) {
         state.velocities.col(i) = pointMomentum.col(i) / massAfter(i);
     }
-    if (project) {
-        projectVelocities(fiber);
-    } else {
-        for (Eigen::Index i = 0; i < fiber.pointCount(); ++i) {
-            if (fiber.pointHeld(i)) state.velocities.col(i) = fiber.heldPointVelocity(i);
-        }
-    }
+    projectVelocities(fiber);
 }
 
 PointDrag FiberSolver::pointDrag(const Fiber& fiber, const AirSample* air, Eigen::Index firstPoint,
@@ -99,7 +93,7 @@ void FiberSolver::advanceSpan(Fiber& fiber, std::size_t fiberIndex, double h, do
     const bool accurate = result.maxRotation <= settings_.maxSegmentRotation;
     if (result.converged && (accurate || !canSplit)) {
         if (result.loose) ++report.looseConvergences;
-        if (settings_.projectVelocities) projectVelocities(fiber);
+        if (settings_.projectVelocitiesAfterSubStep) projectVelocities(fiber);
         ++acceptedSubSteps;
         return;
     }
@@ -152,7 +146,7 @@ StepReport FiberSolver::step(std::vector<Fiber>& fibers, double dt, const AirSam
 
     if (capture != nullptr) {
         for (std::size_t f = 0; f < fibers.size(); ++f) {
-            applyCapture(fibers[f], (*capture)[f], settings_.projectVelocities);
+            applyCapture(fibers[f], (*capture)[f]);
         }
     }
 

@@ -7,8 +7,7 @@
 //   2. one batched call of the air sampler for all points of all movable fibers
 //      (skipped when the drag model is none);
 //   3. each movable fiber independently: implicit sub-steps (ImplicitFiberStep),
-//      as many as its own accuracy needs (see FiberSolverSettings), each followed by
-//      a velocity projection.
+//      as many as its own accuracy needs (see FiberSolverSettings).
 // Fibers are processed one after another in list order; no randomness, no threads:
 // identical results on every MPI rank. The solver keeps no state between steps
 // besides its settings and reusable work storage, so a restart from saved
@@ -52,6 +51,6 @@ private:
 };
 
 // Inelastic capture on one fiber (step 1 above); exposed for tests and tools.
-void applyCapture(Fiber& fiber, const std::vector<SegmentSource>& sources, bool project);
+void applyCapture(Fiber& fiber, const std::vector<SegmentSource>& sources);
 
 }  // namespace dropletFiber

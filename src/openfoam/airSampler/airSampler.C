@@ -1,0 +1,217 @@
+/*---------------------------------------------------------------------------*\
+  dropletFiber: stochastic droplet-fiber coupling for OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "airSampler.H"
+#include "interpolationCellPoint.H"
+#include "IOdictionary.H"
+#include "dictionaryChecks.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::dropletFiber::airSampler::source
+Foam::dropletFiber::airSampler::readSource
+(
+    const dictionary& dict,
+    const word& key
+) const
+{
+    source s;
+    if (!dict.found(key))
+    {
+        s.fieldName = "transportProperties";
+    }
+    else
+    {
+        ITstream& is = dict.lookup(key);
+        const token tok(is);
+        if (tok.isNumber())
+        {
+            s.value = tok.number();
+            if (!(s.value > 0))
+            {
+                FatalIOErrorInFunction(dict)
+                    << "Entry '" << key << "' is " << s.value
+                    << ": allowed are a value > 0, a field name, or "
+                    << "transportProperties." << exit(FatalIOError);
+            }
+            return s;
+        }
+        if (!tok.isWord())
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry '" << key << "' is " << tok
+                << ": allowed are a value > 0, a field name, or "
+                << "transportProperties." << exit(FatalIOError);
+        }
+        s.fieldName = tok.wordToken();
+    }
+
+    if (s.fieldName == "transportProperties")
+    {
+        const auto* tp = mesh_.findObject<IOdictionary>("transportProperties");
+        if (!tp || !tp->found("rho") || (key == "mu" && !tp->found("nu")))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry '" << key << "' is transportProperties (the default), "
+                << "but there is no transportProperties dictionary with "
+                << (key == "mu" ? "rho and nu" : "rho") << "." << nl
+                << "    Give '" << key << "' as a value or a field name."
+                << exit(FatalIOError);
+        }
+        const scalar rho = dimensionedScalar("rho", dimDensity, *tp).value();
+        s.value =
+            key == "mu"
+          ? rho*dimensionedScalar("nu", dimViscosity, *tp).value()
+          : rho;
+        s.fieldName.clear();
+    }
+    else if (!mesh_.foundObject<volScalarField>(s.fieldName))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry '" << key << "' names field '" << s.fieldName
+            << "', which does not exist." << nl
+            << "    Scalar fields: " << mesh_.sortedNames<volScalarField>() << nl
+            << "    Allowed are a value > 0, a field name, or transportProperties."
+            << exit(FatalIOError);
+    }
+    return s;
+}
+
+
+Foam::scalar Foam::dropletFiber::airSampler::cellValue
+(
+    const source& s,
+    const label celli
+) const
+{
+    if (s.fieldName.empty())
+    {
+        return s.value;
+    }
+    return mesh_.lookupObject<volScalarField>(s.fieldName)[celli];
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::dropletFiber::airSampler::airSampler
+(
+    const fvMesh& mesh,
+    const dictionary& airDict
+)
+:
+    mesh_(mesh)
+{
+    read(airDict);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::dropletFiber::airSampler::read(const dictionary& airDict)
+{
+    UName_ = airDict.lookupOrDefault<word>("U", "U");
+    if (!mesh_.foundObject<volVectorField>(UName_))
+    {
+        FatalIOErrorInFunction(airDict)
+            << "Entry 'U' names velocity field '" << UName_
+            << "', which does not exist." << nl
+            << "    Vector fields: " << mesh_.sortedNames<volVectorField>()
+            << exit(FatalIOError);
+    }
+    rho_ = readSource(airDict, "rho");
+    mu_ = readSource(airDict, "mu");
+}
+
+
+Foam::scalar Foam::dropletFiber::airSampler::referenceDensity() const
+{
+    return rho_.fieldName.empty()
+        ? rho_.value
+        : gAverage(mesh_.lookupObject<volScalarField>(rho_.fieldName).primitiveField());
+}
+
+
+Foam::scalar Foam::dropletFiber::airSampler::referenceViscosity() const
+{
+    return mu_.fieldName.empty()
+        ? mu_.value
+        : gAverage(mesh_.lookupObject<volScalarField>(mu_.fieldName).primitiveField());
+}
+
+
+::dropletFiber::AirSample Foam::dropletFiber::airSampler::sample
+(
+    const Eigen::Matrix3Xd& points,
+    List<bool>& inside
+) const
+{
+    const label n = points.cols();
+    const volVectorField& U = mesh_.lookupObject<volVectorField>(UName_);
+    interpolationCellPoint<vector> interpU(U);
+
+    // Per point: U (3), rho, mu, number of processors that found it; summed
+    // across processors in one reduction
+    constexpr label width = 6;
+    List<scalar> values(width*n, Zero);
+    for (label i = 0; i < n; ++i)
+    {
+        const point p(points(0, i), points(1, i), points(2, i));
+        const label celli = mesh_.findCell(p);
+        if (celli < 0)
+        {
+            continue;
+        }
+        const vector u = interpU.interpolate(p, celli);
+        scalar* v = &values[width*i];
+        v[0] = u.x();
+        v[1] = u.y();
+        v[2] = u.z();
+        v[3] = cellValue(rho_, celli);
+        v[4] = cellValue(mu_, celli);
+        v[5] = 1;
+    }
+    Pstream::listCombineGather(values, plusEqOp<scalar>());
+    Pstream::listCombineScatter(values);
+
+    const scalar rhoRef = referenceDensity();
+    const scalar muRef = referenceViscosity();
+    ::dropletFiber::AirSample air;
+    air.velocity.resize(3, n);
+    air.density.resize(n);
+    air.viscosity.resize(n);
+    inside.setSize(n);
+    for (label i = 0; i < n; ++i)
+    {
+        const scalar* v = &values[width*i];
+        const scalar found = v[5];
+        inside[i] = found > 0;
+        if (found > 0)
+        {
+            air.velocity.col(i) = Eigen::Vector3d(v[0], v[1], v[2])/found;
+            air.density(i) = v[3]/found;
+            air.viscosity(i) = v[4]/found;
+        }
+        else
+        {
+            air.velocity.col(i).setZero();
+            air.density(i) = rhoRef;
+            air.viscosity(i) = muRef;
+        }
+    }
+    return air;
+}
+
+
+void Foam::dropletFiber::airSampler::report(Ostream& os) const
+{
+    auto describe = [](const source& s)
+    {
+        return s.fieldName.empty() ? Foam::name(s.value) : "field " + s.fieldName;
+    };
+    os  << "    air: U field " << UName_ << ", rho " << describe(rho_).c_str()
+        << ", mu " << describe(mu_).c_str() << nl;
+}
+
+// ************************************************************************* //
