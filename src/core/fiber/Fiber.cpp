@@ -1,5 +1,7 @@
 #include "fiber/Fiber.hpp"
 
+#include "fiber/VelocityProjection.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -28,6 +30,7 @@ Fiber::Fiber(const Eigen::Matrix3Xd& points, const FiberMaterial& material,
     state_.endEnd = endEnd;
     completeClampDirections();
     validate();
+    projectVelocities(*this);  // held ends may move: start with consistent velocities
 }
 
 Fiber Fiber::immobileFiber(const Eigen::Matrix3Xd& points, const FiberMaterial& material)
@@ -87,6 +90,7 @@ void Fiber::setVelocities(const Eigen::Matrix3Xd& velocities)
         throw std::invalid_argument("Fiber::setVelocities: wrong number of points");
     }
     state_.velocities = velocities;
+    projectVelocities(*this);
 }
 
 void Fiber::setExternalForce(const Eigen::Matrix3Xd& force)

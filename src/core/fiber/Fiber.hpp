@@ -18,7 +18,7 @@ public:
     // A fully fixed fiber: never moves, still captures mass (filter fibers).
     static Fiber immobileFiber(const Eigen::Matrix3Xd& points, const FiberMaterial& material);
 
-    // Restart: validated copy of a saved state.
+    // Restart: validated copy of a saved state, taken as it is.
     explicit Fiber(const FiberState& state);
     const FiberState& state() const { return state_; }
 
@@ -36,7 +36,10 @@ public:
     bool immobile() const { return state_.immobile; }
     double length() const { return state_.restLengths.sum(); }
 
-    // Initial conditions and loads set by the user.
+    // Initial conditions and loads set by the user. Velocities are made consistent
+    // with inextensibility and the held ends (the mass-weighted projection, i.e. what
+    // an impulsive start would do): the midpoint scheme keeps consistent velocities
+    // consistent but would carry an inconsistent part along for ever.
     void setVelocities(const Eigen::Matrix3Xd& velocities);
     void setExternalForce(const Eigen::Matrix3Xd& force);   // [N] per point
     const Eigen::Matrix3Xd& externalForce() const { return state_.externalForce; }

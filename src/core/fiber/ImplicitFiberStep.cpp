@@ -84,6 +84,7 @@ SubStepResult ImplicitFiberStep::advance(Fiber& fiber, double h, const PointDrag
 
     double lastUpdate = std::numeric_limits<double>::infinity();
     double constraintError = 0.0;
+    double previousConstraintError = std::numeric_limits<double>::infinity();
     for (int iteration = 0;; ++iteration) {
         // ---- residual and Jacobian at the current iterate --------------------------
         lu_.reset(size, bandwidth, bandwidth);
@@ -189,19 +190,28 @@ SubStepResult ImplicitFiberStep::advance(Fiber& fiber, double h, const PointDrag
         }
 
         // ---- convergence -----------------------------------------------------------
-        const bool updateSmall = lastUpdate <= settings.updateTolerance;
-        if (constraintError <= settings.constraintTolerance && (residualSmall || updateSmall)) {
+        // Segment lengths cannot be computed closer than round-off in the coordinates
+        // (relative to point 0): never ask for better than that.
+        const double roundOff = 16.0 * std::numeric_limits<double>::epsilon() *
+                                y.colwise().norm().maxCoeff() / shortest;
+        const double constraintTarget = std::max(settings.constraintTolerance, roundOff);
+        const bool updateSmall = lastUpdate <= std::max(settings.updateTolerance, roundOff);
+        if (constraintError <= constraintTarget && (residualSmall || updateSmall)) {
             result.converged = true;
             break;
         }
-        if (iteration >= settings.maxNewtonIterations) {
-            // Stalled at round-off? Accept if the constraints hold to the hard limit.
+        // Stalled at round-off (no more progress, tiny updates): accept if the
+        // constraints hold to the hard limit.
+        const bool stalled = iteration > 0 && constraintError > 0.5 * previousConstraintError &&
+                             lastUpdate <= 1e-8;
+        if (stalled || iteration >= settings.maxNewtonIterations) {
             if (constraintError <= settings.acceptableConstraintError && lastUpdate <= 1e-8) {
                 result.converged = true;
                 result.loose = true;
             }
             break;
         }
+        previousConstraintError = constraintError;
 
         // ---- Newton update ---------------------------------------------------------
         if (!lu_.factorize()) break;

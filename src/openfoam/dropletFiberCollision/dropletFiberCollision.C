@@ -1,12 +1,21 @@
 /*---------------------------------------------------------------------------*\
   dropletFiber: stochastic droplet-fiber coupling for OpenFOAM
+-------------------------------------------------------------------------------
+Description
+    Settings and the coupling step. Read execute() from top to bottom to
+    follow one parcel's mass: gathered, deposited on the grid, summed across
+    processors, averaged, turned into collision mass on fiber segments, and
+    captured by the fibers.
+
 \*---------------------------------------------------------------------------*/
 
 #include "dropletFiberCollision.H"
+#include "dictionaryChecks.H"
 #include "cloud.H"
 #include "Time.H"
 #include "fvMesh.H"
 #include "PstreamReduceOps.H"
+#include "clockValue.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -26,7 +35,174 @@ namespace functionObjects
 }
 
 
+// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
+
+namespace
+{
+
+Eigen::Vector3d toEigen(const Foam::vector& v)
+{
+    return Eigen::Vector3d(v.x(), v.y(), v.z());
+}
+
+} // End anonymous namespace
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::functionObjects::dropletFiberCollision::readGrid
+(
+    const dictionary& dict
+)
+{
+    using namespace dropletFiber;
+    const dictionary gridDict = dict.subOrEmptyDict("grid");
+    const boundBox meshBox = mesh_.bounds();
+
+    const vector lower = gridDict.lookupOrDefault<vector>("lower", meshBox.min());
+    const vector upper = gridDict.lookupOrDefault<vector>("upper", meshBox.max());
+    for (direction d = 0; d < vector::nComponents; ++d)
+    {
+        if (!(upper[d] > lower[d]))
+        {
+            FatalIOErrorInFunction(gridDict)
+                << "Entries 'lower' " << lower << " and 'upper' " << upper
+                << ": upper must be greater than lower in every direction "
+                << "(a flat direction of a 2D grid still needs its thickness)."
+                << exit(FatalIOError);
+        }
+    }
+
+    // A 2D mesh's empty direction is flat (one node layer) unless given
+    const Vector<label> geometricD = mesh_.geometricD();
+    Vector<label> nodes(50, 50, 50);
+    for (direction d = 0; d < vector::nComponents; ++d)
+    {
+        if (geometricD[d] < 0)
+        {
+            nodes[d] = 1;
+        }
+    }
+    if (gridDict.found("nodes") && gridDict.found("spacing"))
+    {
+        FatalIOErrorInFunction(gridDict)
+            << "Entries 'nodes' and 'spacing' are both given: give one."
+            << exit(FatalIOError);
+    }
+    if (gridDict.found("nodes"))
+    {
+        nodes = gridDict.get<Vector<label>>("nodes");
+    }
+    else if (gridDict.found("spacing"))
+    {
+        const scalar h = getPositive(gridDict, "spacing");
+        for (direction d = 0; d < vector::nComponents; ++d)
+        {
+            if (nodes[d] != 1)
+            {
+                nodes[d] = max(2, label(std::round((upper[d] - lower[d])/h)) + 1);
+            }
+        }
+    }
+    for (direction d = 0; d < vector::nComponents; ++d)
+    {
+        if (nodes[d] < 1)
+        {
+            FatalIOErrorInFunction(gridDict)
+                << "Entry 'nodes' is " << nodes
+                << ": allowed are at least 1 node per direction (1: a flat "
+                << "direction), and at least 2 directions with 2 or more."
+                << exit(FatalIOError);
+        }
+    }
+
+    gridSpec_.lower = toEigen(lower);
+    gridSpec_.upper = toEigen(upper);
+    gridSpec_.nodes = {{int(nodes.x()), int(nodes.y()), int(nodes.z())}};
+    checkedCoreCall(gridDict, [this]() { gridSpec_.validate(); });
+
+    averagingSteps_ = getLabelInRange(gridDict, "averagingSteps", 1, 1, 100000);
+    kernel_.beta = gridDict.lookupOrDefault<scalar>("beta", 0.025);
+    if (!(kernel_.beta > 0 && kernel_.beta <= 1))
+    {
+        FatalIOErrorInFunction(gridDict)
+            << "Entry 'beta' is " << kernel_.beta
+            << ": allowed are values in (0, 1] (eq. 18; the paper uses 0.025)."
+            << exit(FatalIOError);
+    }
+    kernel_.rMaxCap = getNonNegative(gridDict, "rMaxCap", 0);
+    const word dim =
+        getChoice(gridDict, "dimension", "automatic", {"automatic", "2", "3"});
+    kernel_.dimension =
+        dim == "2" ? ::dropletFiber::KernelDimension::TwoD
+      : dim == "3" ? ::dropletFiber::KernelDimension::ThreeD
+      : ::dropletFiber::KernelDimension::Automatic;
+    checkedCoreCall(gridDict, [this]() { kernel_.validate(); });
+
+    const word radius =
+        getChoice(gridDict, "radiusAverage", "mass", {"number", "mass"});
+    collision_.radiusAverage =
+        radius == "number"
+      ? ::dropletFiber::RadiusAverage::number
+      : ::dropletFiber::RadiusAverage::mass;
+}
+
+
+void Foam::functionObjects::dropletFiberCollision::readCollision
+(
+    const dictionary& dict
+)
+{
+    using namespace dropletFiber;
+    const dictionary collisionDict = dict.subOrEmptyDict("collision");
+    const word sampling =
+        getChoice(collisionDict, "sampling", "midpoint", {"midpoint", "integrated"});
+    collision_.sampling =
+        sampling == "midpoint"
+      ? ::dropletFiber::SegmentSampling::midpoint
+      : ::dropletFiber::SegmentSampling::integrated;
+    collision_.samplesPerSegment =
+        getLabelInRange(collisionDict, "samplesPerSegment", 4, 1, 1000);
+}
+
+
+void Foam::functionObjects::dropletFiberCollision::reportSettings() const
+{
+    const auto& g = gridSpec_;
+    Info<< type() << " " << name() << ":" << nl
+        << "    clouds: ";
+    if (cloudNames_.empty())
+    {
+        Info<< "all" << nl;
+    }
+    else
+    {
+        Info<< cloudNames_ << nl;
+    }
+    Info<< "    grid: (" << g.lower.x() << ' ' << g.lower.y() << ' ' << g.lower.z()
+        << ") to (" << g.upper.x() << ' ' << g.upper.y() << ' ' << g.upper.z()
+        << "), nodes (" << g.nodes[0] << ' ' << g.nodes[1] << ' ' << g.nodes[2]
+        << "), averagingSteps " << averagingSteps_
+        << ", beta " << kernel_.beta
+        << ", rMaxCap " << kernel_.rMaxCap
+        << ", radiusAverage "
+        << (collision_.radiusAverage == ::dropletFiber::RadiusAverage::number
+            ? "number" : "mass") << nl
+        << "    collision: sampling "
+        << (collision_.sampling == ::dropletFiber::SegmentSampling::midpoint
+            ? "midpoint" : "integrated")
+        << ", samplesPerSegment " << collision_.samplesPerSegment << nl;
+    air_->report(Info);
+    const auto& s = solverSettings_;
+    Info<< "    fibers: gravity (" << s.gravity.x() << ' ' << s.gravity.y() << ' '
+        << s.gravity.z() << "), drag "
+        << ::dropletFiber::dragModelName(s.drag.model).c_str()
+        << ", theta " << s.theta << ", injectors " << label(injectors_.size())
+        << ", fibers now " << label(fibers_.size()) << nl
+        << "    output: writeVtk " << writeVtk_ << ", writeGridVtk "
+        << writeGridVtk_ << nl << endl;
+}
+
 
 Foam::wordList
 Foam::functionObjects::dropletFiberCollision::selectClouds() const
@@ -66,17 +242,161 @@ void Foam::functionObjects::dropletFiberCollision::gatherParcels()
 }
 
 
-void Foam::functionObjects::dropletFiberCollision::writeFileHeader
-(
-    Ostream& os
-) const
+Foam::Pair<Foam::scalar>
+Foam::functionObjects::dropletFiberCollision::depositParcels(const scalar dt)
 {
-    writeHeader(os, "Droplet-fiber coupling: parcels seen each time step");
-    writeCommented(os, "Time");
-    writeTabbed(os, "parcels");
-    writeTabbed(os, "droplets");
-    writeTabbed(os, "dropletMass[kg]");
-    os  << endl;
+    ::dropletFiber::DensityGrid& grid = *grid_;
+    for (label i = 0; i < parcels_.size(); ++i)
+    {
+        ::dropletFiber::Parcel p;
+        p.position = toEigen(parcels_.position[i]);
+        p.velocity = toEigen(parcels_.U[i]);
+        p.diameter = parcels_.d[i];
+        p.nParticle = parcels_.nParticle[i];
+        p.rhoDroplet = parcels_.rho[i];
+        grid.deposit(p, dt);
+    }
+
+    // Sum the step's accumulation across processors, over the union of the
+    // boxes of nodes the processors touched only
+    if (Pstream::parRun())
+    {
+        ::dropletFiber::IndexBox box = grid.touchedBox();
+        List<label> lo(3), hi(3);
+        for (label d = 0; d < 3; ++d)
+        {
+            lo[d] = box.lo[d];
+            hi[d] = box.hi[d];
+        }
+        if (box.empty())
+        {
+            lo = labelMax;
+            hi = labelMin;
+        }
+        Pstream::listCombineGather(lo, minEqOp<label>());
+        Pstream::listCombineScatter(lo);
+        Pstream::listCombineGather(hi, maxEqOp<label>());
+        Pstream::listCombineScatter(hi);
+        for (label d = 0; d < 3; ++d)
+        {
+            box.lo[d] = lo[d];
+            box.hi[d] = hi[d];
+        }
+        if (!box.empty())
+        {
+            std::vector<double> block = grid.extractStep(box);
+            List<scalar> values(label(block.size()));
+            std::copy(block.begin(), block.end(), values.begin());
+            Pstream::listCombineGather(values, plusEqOp<scalar>());
+            Pstream::listCombineScatter(values);
+            std::copy(values.begin(), values.end(), block.begin());
+            grid.replaceStep(box, block);
+        }
+    }
+
+    const ::dropletFiber::StepStatistics stats = grid.stepStatistics();
+    grid.commitStep();
+
+    const scalar deposited = returnReduce(stats.massDeposited, sumOp<scalar>());
+    const scalar outside = returnReduce(stats.massOutside, sumOp<scalar>());
+    const label capped = returnReduce(label(stats.parcelsCapped), sumOp<label>());
+    if (capped > 0)
+    {
+        WarningInFunction
+            << type() << " " << name() << ": the influence radius of "
+            << capped << " parcels was capped at rMaxCap = " << kernel_.rMaxCap
+            << " m at time " << time_.timeName() << endl;
+    }
+    return Pair<scalar>(deposited, outside);
+}
+
+
+void Foam::functionObjects::dropletFiberCollision::injectFibers(const scalar t)
+{
+    for (auto& injector : injectors_)
+    {
+        for (auto& fiber : injector.inject(t))
+        {
+            totals_.fiberMassAdded += fiber.totalMass();
+            fibers_.push_back(std::move(fiber));
+            fiberOrigin_.push_back(injector.spec().name);
+        }
+    }
+}
+
+
+::dropletFiber::CaptureSources
+Foam::functionObjects::dropletFiberCollision::collide(const scalar dt) const
+{
+    ::dropletFiber::CaptureSources capture(fibers_.size());
+    for (std::size_t f = 0; f < fibers_.size(); ++f)
+    {
+        const ::dropletFiber::Fiber& fiber = fibers_[f];
+        const Eigen::Matrix3Xd& x = fiber.positions();
+        const Eigen::Matrix3Xd& v = fiber.velocities();
+        capture[f].resize(fiber.segmentCount());
+        for (Eigen::Index j = 0; j < fiber.segmentCount(); ++j)
+        {
+            const Eigen::Vector3d segmentVelocity = 0.5*(v.col(j) + v.col(j + 1));
+            const ::dropletFiber::SegmentCollision c =
+                ::dropletFiber::collisionMass
+                (
+                    *grid_,
+                    x.col(j),
+                    x.col(j + 1),
+                    fiber.material().radius,
+                    segmentVelocity,
+                    dt,
+                    collision_
+                );
+            capture[f][j].mass = c.mass;
+            capture[f][j].momentum = c.momentum;
+        }
+    }
+    return capture;
+}
+
+
+void Foam::functionObjects::dropletFiberCollision::removeLostFibers()
+{
+    const boundBox& box = mesh_.bounds();
+    std::size_t kept = 0;
+    for (std::size_t f = 0; f < fibers_.size(); ++f)
+    {
+        const Eigen::Matrix3Xd& x = fibers_[f].positions();
+        bool anyInside = false;
+        for (Eigen::Index i = 0; i < x.cols() && !anyInside; ++i)
+        {
+            anyInside = box.contains(point(x(0, i), x(1, i), x(2, i)));
+        }
+        if (anyInside)
+        {
+            if (kept != f)
+            {
+                fibers_[kept] = std::move(fibers_[f]);
+                fiberOrigin_[kept] = fiberOrigin_[f];
+            }
+            ++kept;
+        }
+        else
+        {
+            totals_.fiberMassRemoved += fibers_[f].totalMass();
+            ++totals_.fibersRemoved;
+        }
+    }
+    fibers_.erase(fibers_.begin() + kept, fibers_.end());
+    fiberOrigin_.resize(kept);
+}
+
+
+Foam::scalar Foam::functionObjects::dropletFiberCollision::fiberMass() const
+{
+    scalar m = 0;
+    for (const auto& fiber : fibers_)
+    {
+        m += fiber.totalMass();
+    }
+    return m;
 }
 
 
@@ -94,9 +414,37 @@ Foam::functionObjects::dropletFiberCollision::dropletFiberCollision
     dict_(dict),
     cloudNames_(),
     lastTimeIndex_(-1),
-    parcels_()
+    parcels_(),
+    averagingSteps_(1),
+    writeVtk_(true),
+    writeGridVtk_(true)
 {
     read(dict);
+
+    // Fibers: from the restart state of the start time, else from the
+    // dictionary
+    if (!readState())
+    {
+        const dictionary fibersDict = dict.subOrEmptyDict("fibers");
+        for (auto& named : dropletFiber::readFixedFibers(fibersDict))
+        {
+            totals_.fiberMassAdded += named.fiber.totalMass();
+            fibers_.push_back(std::move(named.fiber));
+            fiberOrigin_.push_back(named.name);
+        }
+    }
+
+    const fileName vtkDir = baseFileDir()/name/time_.timeName(time_.startTime().value());
+    if (Pstream::master() && (writeVtk_ || writeGridVtk_))
+    {
+        mkDir(vtkDir);
+    }
+    fibersSeries_.reset(new ::dropletFiber::SeriesFile(vtkDir/"fibers.vtp.series"));
+    gridSeries_.reset(new ::dropletFiber::SeriesFile(vtkDir/"grid.vti.series"));
+    fibersSeries_->load(time_.value() + 0.5*time_.deltaTValue());
+    gridSeries_->load(time_.value() + 0.5*time_.deltaTValue());
+
+    reportSettings();
     if (writeToFile())
     {
         writeFileHeader(file());
@@ -104,22 +452,61 @@ Foam::functionObjects::dropletFiberCollision::dropletFiberCollision
 }
 
 
+Foam::functionObjects::dropletFiberCollision::~dropletFiberCollision() = default;
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 bool Foam::functionObjects::dropletFiberCollision::read(const dictionary& dict)
 {
     fvMeshFunctionObject::read(dict);
-    writeFile::read(dict);
+    // More digits than OpenFOAM's default: the table is compared across runs
+    dictionary fileDict(dict);
+    if (!fileDict.found("writePrecision"))
+    {
+        fileDict.add("writePrecision", 10);
+    }
+    writeFile::read(fileDict);
     dict_ = dict;
 
     cloudNames_ = dict.lookupOrDefault<wordList>("clouds", wordList());
+    readGrid(dict);
+    readCollision(dict);
+    air_.reset
+    (
+        new dropletFiber::airSampler(mesh_, dict.subOrEmptyDict("air"))
+    );
 
-    Info<< type() << " " << name() << ":" << nl
-        << "    clouds: "
-        << (cloudNames_.empty() ? string("all") : string(""))
-        << (cloudNames_.empty() ? wordList() : cloudNames_) << nl
-        << endl;
+    const dictionary fibersDict = dict.subOrEmptyDict("fibers");
+    solverSettings_ = dropletFiber::readFiberSolverSettings(fibersDict, time_);
+    solver_.reset(new ::dropletFiber::FiberSolver(solverSettings_));
 
+    writeVtk_ = dict.lookupOrDefault<bool>("writeVtk", true);
+    writeGridVtk_ = dict.lookupOrDefault<bool>("writeGridVtk", true);
+
+    // The grid and the injectors carry state: built once (a change of these
+    // settings needs a new run)
+    if (!grid_)
+    {
+        grid_.reset
+        (
+            dropletFiber::checkedCoreCall
+            (
+                dict,
+                [this]()
+                {
+                    return new ::dropletFiber::DensityGrid
+                    (
+                        gridSpec_, kernel_, int(averagingSteps_)
+                    );
+                }
+            )
+        );
+        for (const auto& spec : dropletFiber::readFiberInjectors(fibersDict))
+        {
+            injectors_.emplace_back(spec);
+        }
+    }
     return true;
 }
 
@@ -132,22 +519,93 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
         return true;
     }
     lastTimeIndex_ = time_.timeIndex();
+    const scalar t = time_.value();
+    const scalar dt = time_.deltaTValue();
 
+    // 1. The parcels of this step, on this processor
+    clockValue depositionStart(true);
     gatherParcels();
-
     const label nParcels = returnReduce(parcels_.size(), sumOp<label>());
-    const scalar nDroplets = returnReduce(parcels_.nDroplets(), sumOp<scalar>());
-    const scalar mass = returnReduce(parcels_.totalMass(), sumOp<scalar>());
 
+    // 2. Onto the grid; summed across processors; averaged over the window
+    const Pair<scalar> deposit = depositParcels(dt);
+    totals_.deposited += deposit.first();
+    totals_.outside += deposit.second();
+    const scalar depositionTime = depositionStart.elapsed();
+
+    // 3. New fibers
+    clockValue fiberStart(true);
+    injectFibers(t);
+
+    // 4. Stochastic collision mass of every segment, from the grid
+    const ::dropletFiber::CaptureSources capture = collide(dt);
+    scalar capturedStep = 0;
+    for (const auto& fiberCapture : capture)
+    {
+        for (const auto& segment : fiberCapture)
+        {
+            capturedStep += segment.mass;
+        }
+    }
+
+    // 5. Advance the fibers: capture, air drag, bending, inextensibility
+    const ::dropletFiber::AirSampler sampler =
+        [this](const Eigen::Matrix3Xd& points)
+        {
+            List<bool> inside;
+            return air_->sample(points, inside);
+        };
+    const ::dropletFiber::StepReport report =
+        dropletFiber::checkedCoreCall
+        (
+            dict_,
+            [&]() { return solver_->step(fibers_, dt, sampler, &capture); }
+        );
+    totals_.captured += capturedStep;
+
+    // 6. Fibers that left
+    removeLostFibers();
+    const scalar fiberTime = fiberStart.elapsed();
+
+    // 7. Report
     Log << type() << " " << name() << ": parcels " << nParcels
-        << ", droplets " << nDroplets
-        << ", droplet mass " << mass << " kg" << endl;
+        << ", fibers " << label(fibers_.size())
+        << ", captured " << capturedStep << " kg (total " << totals_.captured
+        << " kg), segment-length error " << report.maxSegmentLengthError
+        << ", sub-steps " << report.subSteps << endl;
 
     if (writeToFile())
     {
         OFstream& os = file();
         writeCurrentTime(os);
-        os  << tab << nParcels << tab << nDroplets << tab << mass << endl;
+        os  << tab << label(fibers_.size())
+            << tab << nParcels
+            << tab << deposit.first()
+            << tab << deposit.second()
+            << tab << capturedStep
+            << tab << totals_.captured
+            << tab << fiberMass()
+            << tab << report.maxSegmentLengthError
+            << tab << depositionTime
+            << tab << fiberTime
+            << endl;
+    }
+
+    if (time_.writeTime())
+    {
+        writeState();
+        const scalar balance =
+            totals_.fiberMassAdded + totals_.captured
+          - totals_.fiberMassRemoved - fiberMass();
+        Info<< type() << " " << name() << " conservation at time "
+            << time_.timeName() << ":" << nl
+            << "    droplet mass deposited " << totals_.deposited
+            << " kg = on grid + outside it: outside " << totals_.outside
+            << " kg" << nl
+            << "    fiber mass " << fiberMass() << " kg = added "
+            << totals_.fiberMassAdded << " + captured " << totals_.captured
+            << " - removed " << totals_.fiberMassRemoved
+            << " (balance " << balance << " kg)" << nl << endl;
     }
 
     return true;
@@ -156,6 +614,7 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
 
 bool Foam::functionObjects::dropletFiberCollision::write()
 {
+    writeVtkFiles();
     return true;
 }
 

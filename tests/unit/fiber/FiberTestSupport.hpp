@@ -4,6 +4,7 @@
 
 #include "fiber/FiberSolver.hpp"
 
+#include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,0 +1,261 @@
+/*---------------------------------------------------------------------------*\
+  dropletFiber: stochastic droplet-fiber coupling for OpenFOAM
+-------------------------------------------------------------------------------
+Description
+    Output (per-step table, VTK files) and the restart state of
+    dropletFiberCollision.
+
+\*---------------------------------------------------------------------------*/
+
+#include "dropletFiberCollision.H"
+#include "fiberStateIO.H"
+#include "Time.H"
+#include "fvMesh.H"
+#include "OFstream.H"
+#include "IFstream.H"
+#include "OSspecific.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::functionObjects::dropletFiberCollision::writeFileHeader
+(
+    Ostream& os
+) const
+{
+    writeHeader(os, "Droplet-fiber coupling, per time step (masses in kg, times in s)");
+    writeCommented(os, "Time");
+    for
+    (
+        const char* column :
+        {
+            "fibers", "parcels", "massOnGrid", "massOutsideGrid",
+            "capturedStep", "capturedTotal", "fiberMass",
+            "maxSegmentLengthError", "wallTimeDeposition", "wallTimeFibers"
+        }
+    )
+    {
+        writeTabbed(os, column);
+    }
+    os  << endl;
+}
+
+
+Foam::fileName Foam::functionObjects::dropletFiberCollision::statePath
+(
+    const word& timeName
+) const
+{
+    return time_.path()/timeName/"uniform"/"dropletFiber"/name();
+}
+
+
+void Foam::functionObjects::dropletFiberCollision::writeState() const
+{
+    // Every processor holds the same fibers and grid: each writes its own
+    // copy (processorN/<time>/uniform/...), so that every processor reads its
+    // own on restart, also after a change of the number of processors
+    // through reconstructPar/decomposePar (which copy uniform/).
+    dictionary state;
+    state.add("time", time_.value());
+    state.add("timeIndex", time_.timeIndex());
+
+    dictionary fibers;
+    for (std::size_t f = 0; f < fibers_.size(); ++f)
+    {
+        dictionary d = dropletFiber::fiberStateDict(fibers_[f].state());
+        d.add("origin", fiberOrigin_[f]);
+        fibers.add("fiber" + Foam::name(label(f)), d);
+    }
+    state.add("fibers", fibers);
+
+    dictionary injectors;
+    for (const auto& injector : injectors_)
+    {
+        injectors.add(word(injector.spec().name), label(injector.injectedCount()));
+    }
+    state.add("injectors", injectors);
+
+    dictionary totals;
+    totals.add("deposited", totals_.deposited);
+    totals.add("outside", totals_.outside);
+    totals.add("captured", totals_.captured);
+    totals.add("fiberMassAdded", totals_.fiberMassAdded);
+    totals.add("fiberMassRemoved", totals_.fiberMassRemoved);
+    totals.add("fibersRemoved", totals_.fibersRemoved);
+    state.add("totals", totals);
+
+    state.add("gridWindow", dropletFiber::toScalarList(grid_->windowState()));
+
+    const fileName path = statePath(time_.timeName());
+    mkDir(path.path());
+    OFstream os(path);
+    os.precision(17);
+    os  << "// dropletFiber restart state of function object " << name()
+        << " at time " << time_.timeName() << nl;
+    state.write(os, false);
+    if (!os.good())
+    {
+        FatalErrorInFunction
+            << "Cannot write restart state " << path << exit(FatalError);
+    }
+}
+
+
+bool Foam::functionObjects::dropletFiberCollision::readState()
+{
+    const word startName = time_.timeName();
+    const fileName path = statePath(startName);
+    if (!isFile(path))
+    {
+        Info<< type() << " " << name() << ": no restart state " << path
+            << nl << "    "
+            << (time_.value() > 0 ? "restart without state: " : "")
+            << "starting fresh (fibers from the dictionary, empty grid window)"
+            << nl;
+        return false;
+    }
+
+    IFstream is(path);
+    const dictionary state(is);
+
+    const dictionary& fibers = state.subDict("fibers");
+    fibers_.clear();
+    fiberOrigin_.clear();
+    for (const entry& e : fibers)
+    {
+        const dictionary& d = e.dict();
+        fibers_.emplace_back(dropletFiber::fiberStateFromDict(d));
+        fiberOrigin_.push_back(d.get<word>("origin"));
+    }
+
+    const dictionary& injectors = state.subDict("injectors");
+    for (auto& injector : injectors_)
+    {
+        injector.setInjectedCount
+        (
+            injectors.lookupOrDefault<label>(word(injector.spec().name), 0)
+        );
+    }
+
+    const dictionary& totals = state.subDict("totals");
+    totals_.deposited = totals.get<scalar>("deposited");
+    totals_.outside = totals.get<scalar>("outside");
+    totals_.captured = totals.get<scalar>("captured");
+    totals_.fiberMassAdded = totals.get<scalar>("fiberMassAdded");
+    totals_.fiberMassRemoved = totals.get<scalar>("fiberMassRemoved");
+    totals_.fibersRemoved = totals.get<label>("fibersRemoved");
+
+    dropletFiber::checkedCoreCall
+    (
+        state,
+        [&]()
+        {
+            grid_->restoreWindowState
+            (
+                dropletFiber::toStdVector(state.get<scalarList>("gridWindow"))
+            );
+        }
+    );
+
+    Info<< type() << " " << name() << ": restarted from " << path << ": "
+        << label(fibers_.size()) << " fibers, captured mass so far "
+        << totals_.captured << " kg" << nl;
+    return true;
+}
+
+
+void Foam::functionObjects::dropletFiberCollision::writeVtkFiles()
+{
+    if (!Pstream::master() || (!writeVtk_ && !writeGridVtk_))
+    {
+        return;
+    }
+    const fileName dir =
+        baseFileDir()/name()/time_.timeName(time_.startTime().value());
+    mkDir(dir);
+    const scalar t = time_.value();
+
+    if (writeVtk_)
+    {
+        // Fibers: points of all fibers one after another, a polyline each
+        std::vector<Eigen::Vector3d> points;
+        std::vector<std::size_t> offsets;
+        ::dropletFiber::VtkField velocity{"velocity", 3, {}};
+        ::dropletFiber::VtkField sigma{"sigma", 1, {}};
+        ::dropletFiber::VtkField captured{"capturedMass", 1, {}};
+        ::dropletFiber::VtkField fiberId{"fiberId", 1, {}};
+        ::dropletFiber::VtkField tension{"tension", 1, {}};
+        ::dropletFiber::VtkField segmentCaptured{"segmentCapturedMass", 1, {}};
+        for (std::size_t f = 0; f < fibers_.size(); ++f)
+        {
+            const auto& fiber = fibers_[f];
+            offsets.push_back(points.size());
+            const Eigen::VectorXd lineDensity = fiber.lineDensityAtPoints();
+            const Eigen::VectorXd& segCaptured = fiber.capturedMassPerSegment();
+            for (Eigen::Index i = 0; i < fiber.pointCount(); ++i)
+            {
+                points.push_back(fiber.positions().col(i));
+                for (int c = 0; c < 3; ++c)
+                {
+                    velocity.values.push_back(fiber.velocities()(c, i));
+                }
+                sigma.values.push_back(lineDensity(i));
+                // captured mass a point stands for: half of each neighbour segment
+                const double left = i > 0 ? 0.5*segCaptured(i - 1) : 0.0;
+                const double right =
+                    i < fiber.segmentCount() ? 0.5*segCaptured(i) : 0.0;
+                captured.values.push_back(left + right);
+                fiberId.values.push_back(double(f));
+            }
+            for (Eigen::Index j = 0; j < fiber.segmentCount(); ++j)
+            {
+                tension.values.push_back(fiber.tension()(j));
+                segmentCaptured.values.push_back(segCaptured(j));
+            }
+        }
+        const word file = "fibers_" + time_.timeName() + ".vtp";
+        ::dropletFiber::writePolylines
+        (
+            dir/file, t, points, offsets,
+            {velocity, sigma, captured, fiberId},
+            {tension, segmentCaptured}
+        );
+        fibersSeries_->add(file, t);
+    }
+
+    if (writeGridVtk_)
+    {
+        const ::dropletFiber::DensityGrid& grid = *grid_;
+        const auto& g = gridSpec_;
+        const std::size_t n = g.nodeCount();
+        ::dropletFiber::VtkField rho{"rho", 1, std::vector<double>(n)};
+        ::dropletFiber::VtkField rNumber{"rMeanNumber", 1, std::vector<double>(n)};
+        ::dropletFiber::VtkField rMass{"rMeanMass", 1, std::vector<double>(n)};
+        ::dropletFiber::VtkField U{"U", 3, std::vector<double>(3*n)};
+        for (std::size_t k = 0; k < n; ++k)
+        {
+            const ::dropletFiber::NodeValues v = grid.nodeValues(k);
+            rho.values[k] = v.rho;
+            rNumber.values[k] = v.rMeanNumber;
+            rMass.values[k] = v.rMeanMass;
+            for (int c = 0; c < 3; ++c)
+            {
+                U.values[3*k + c] = v.velocity(c);
+            }
+        }
+        Eigen::Vector3d origin, spacing;
+        for (int d = 0; d < 3; ++d)
+        {
+            origin(d) = g.nodeCoordinate(d, 0);
+            spacing(d) = g.spacing(d);  // a flat direction: its thickness
+        }
+        const word file = "grid_" + time_.timeName() + ".vti";
+        ::dropletFiber::writeImageData
+        (
+            dir/file, t, origin, spacing, g.nodes, {rho, rNumber, rMass, U}
+        );
+        gridSeries_->add(file, t);
+    }
+}
+
+// ************************************************************************* //

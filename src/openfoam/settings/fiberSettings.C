@@ -1,0 +1,220 @@
+/*---------------------------------------------------------------------------*\
+  dropletFiber: stochastic droplet-fiber coupling for OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "fiberSettings.H"
+#include "dictionaryChecks.H"
+#include "uniformDimensionedFields.H"
+#include "IOobject.H"
+#include "IFstream.H"
+#include "vectorList.H"
+
+// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
+
+namespace
+{
+
+Eigen::Vector3d toEigen(const Foam::vector& v)
+{
+    return Eigen::Vector3d(v.x(), v.y(), v.z());
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * //
+
+::dropletFiber::FiberMaterial Foam::dropletFiber::readFiberMaterial
+(
+    const dictionary& dict,
+    const ::dropletFiber::FiberMaterial* defaults
+)
+{
+    ::dropletFiber::FiberMaterial m;
+    m.radius = getPositive(dict, "radius", defaults ? defaults->radius : -1);
+    m.density = getPositive(dict, "density", defaults ? defaults->density : -1);
+    if (!defaults && !dict.found("youngsModulus"))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'youngsModulus' is required: Young's modulus of the "
+            << "fibers [Pa], >= 0 (0: limp fibers)." << exit(FatalIOError);
+    }
+    m.youngsModulus =
+        getNonNegative
+        (
+            dict,
+            "youngsModulus",
+            defaults ? defaults->youngsModulus : 0
+        );
+    return m;
+}
+
+
+::dropletFiber::FiberSolverSettings Foam::dropletFiber::readFiberSolverSettings
+(
+    const dictionary& fibersDict,
+    const Time& runTime
+)
+{
+    ::dropletFiber::FiberSolverSettings s;
+
+    // Gravity: the entry, else the case's constant/g, else none
+    vector g(Zero);
+    if (fibersDict.found("gravity"))
+    {
+        g = fibersDict.get<vector>("gravity");
+    }
+    else
+    {
+        IOobject gIO
+        (
+            "g",
+            runTime.constant(),
+            runTime,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE,
+            false
+        );
+        if (gIO.typeHeaderOk<uniformDimensionedVectorField>(true))
+        {
+            g = uniformDimensionedVectorField(gIO).value();
+        }
+    }
+    s.gravity = toEigen(g);
+
+    const word drag =
+        getChoice
+        (
+            fibersDict,
+            "drag",
+            "slenderBodyOseen",
+            {"none", "linear", "slenderBodyStokes", "slenderBodyOseen"}
+        );
+    s.drag.model = ::dropletFiber::dragModelFromName(drag);
+    if (drag == "linear")
+    {
+        s.drag.normalCoefficient =
+            getNonNegative(fibersDict, "normalDragCoefficient", 0);
+        s.drag.tangentialCoefficient =
+            getNonNegative(fibersDict, "tangentialDragCoefficient", 0);
+        if (!fibersDict.found("normalDragCoefficient"))
+        {
+            FatalIOErrorInFunction(fibersDict)
+                << "Entry 'normalDragCoefficient' is required with drag linear "
+                << "(c_n [N s/m2], >= 0)." << exit(FatalIOError);
+        }
+    }
+
+    s.theta = fibersDict.lookupOrDefault<scalar>("theta", 0.5);
+    if (!(s.theta >= 0.5 && s.theta <= 1))
+    {
+        FatalIOErrorInFunction(fibersDict)
+            << "Entry 'theta' is " << s.theta
+            << ": allowed are values from 0.5 (implicit midpoint) to 1 "
+            << "(backward Euler)." << exit(FatalIOError);
+    }
+    return s;
+}
+
+
+std::vector<::dropletFiber::FiberInjectorSpec>
+Foam::dropletFiber::readFiberInjectors(const dictionary& fibersDict)
+{
+    std::vector<::dropletFiber::FiberInjectorSpec> specs;
+    const dictionary* injectorsPtr = fibersDict.findDict("injectors");
+    if (!injectorsPtr)
+    {
+        return specs;
+    }
+    const ::dropletFiber::FiberMaterial defaults =
+        readFiberMaterial(fibersDict, nullptr);
+    const label defaultPoints =
+        getLabelInRange(fibersDict, "points", 21, 2, 100000);
+
+    for (const entry& e : *injectorsPtr)
+    {
+        if (!e.isDict())
+        {
+            FatalIOErrorInFunction(*injectorsPtr)
+                << "Entry '" << e.keyword() << "' in 'injectors' is not a "
+                << "dictionary: each injector is a sub-dictionary with "
+                << "position, direction, velocity, length, rate."
+                << exit(FatalIOError);
+        }
+        const dictionary& d = e.dict();
+        ::dropletFiber::FiberInjectorSpec s;
+        s.name = e.keyword();
+        s.position = toEigen(d.get<vector>("position"));
+        s.direction = toEigen(d.get<vector>("direction"));
+        s.velocity = toEigen(d.get<vector>("velocity"));
+        s.length = getPositive(d, "length");
+        s.rate = getPositive(d, "rate");
+        s.startTime = d.lookupOrDefault<scalar>("startTime", 0);
+        s.endTime = d.lookupOrDefault<scalar>("endTime", GREAT);
+        s.points = getLabelInRange(d, "points", defaultPoints, 2, 100000);
+        s.material = readFiberMaterial(d, &defaults);
+        checkedCoreCall(d, [&s]() { s.validate(); });
+        specs.push_back(s);
+    }
+    return specs;
+}
+
+
+std::vector<Foam::dropletFiber::namedFiber>
+Foam::dropletFiber::readFixedFibers(const dictionary& fibersDict)
+{
+    std::vector<namedFiber> fibers;
+    const dictionary* fixedPtr = fibersDict.findDict("fixed");
+    if (!fixedPtr)
+    {
+        return fibers;
+    }
+    const ::dropletFiber::FiberMaterial defaults =
+        readFiberMaterial(fibersDict, nullptr);
+
+    for (const entry& e : *fixedPtr)
+    {
+        if (!e.isDict())
+        {
+            FatalIOErrorInFunction(*fixedPtr)
+                << "Entry '" << e.keyword() << "' in 'fixed' is not a "
+                << "dictionary: each fixed fiber is a sub-dictionary with "
+                << "points and hold." << exit(FatalIOError);
+        }
+        const dictionary& d = e.dict();
+        const vectorList pts = d.get<vectorList>("points");
+        if (pts.size() < 2)
+        {
+            FatalIOErrorInFunction(d)
+                << "Entry 'points' has " << pts.size()
+                << " points: a fiber needs at least 2." << exit(FatalIOError);
+        }
+        Eigen::Matrix3Xd x(3, pts.size());
+        forAll(pts, i)
+        {
+            x.col(i) = toEigen(pts[i]);
+        }
+        const ::dropletFiber::FiberMaterial material =
+            readFiberMaterial(d, &defaults);
+        const word hold =
+            getChoice(d, "hold", "fixed", {"fixed", "clamped", "pinned", "free"});
+
+        auto build = [&]() -> ::dropletFiber::Fiber
+        {
+            using ::dropletFiber::EndCondition;
+            if (hold == "fixed")
+            {
+                return ::dropletFiber::Fiber::immobileFiber(x, material);
+            }
+            const EndCondition start =
+                hold == "clamped" ? EndCondition::clampedEnd()
+              : hold == "pinned" ? EndCondition::pinnedEnd()
+              : EndCondition::freeEnd();
+            return ::dropletFiber::Fiber(x, material, start);
+        };
+        fibers.push_back({e.keyword(), checkedCoreCall(d, build)});
+    }
+    return fibers;
+}
+
+// ************************************************************************* //
