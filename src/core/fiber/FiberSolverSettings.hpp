@@ -41,8 +41,8 @@ struct FiberSolverSettings {
     // Also project velocities onto the inextensible motions after every sub-step
     // (mass-weighted, see VelocityProjection). Off by default: the midpoint step keeps
     // positions exactly inextensible without it and conserves energy to round-off
-    // (measured |dE|/E ~ 1e-13 over 100 pendulum periods), whereas the projection
-    // removes a little energy each step (O(h^3): 1.2e-3 over 100 periods at T/100).
+    // (measured |dE|/E ~ 1e-9 over 100 pendulum periods at T/100), whereas the
+    // projection removes a little energy each step (O(h^3): ~1e-3 over the same run).
     // The projection after droplet capture is always done: it is the physical
     // impulsive tension response to an inelastic impact.
     bool projectVelocitiesAfterSubStep = false;

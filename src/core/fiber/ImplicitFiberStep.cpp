@@ -62,7 +62,8 @@ SubStepResult ImplicitFiberStep::advance(Fiber& fiber, double h, const PointDrag
     const Eigen::Index size = 4 * n - 1;
     Eigen::VectorXd rhs(size);
     Eigen::Matrix3Xd residual(3, n);
-    Eigen::VectorXd magnitude(n);
+    Eigen::VectorXd magnitude(n);  // size of the terms of each residual row
+    Eigen::VectorXd noise(n);      // their round-off scale (before cancellation)
     Eigen::Matrix3Xd xTheta(3, n), vTheta(3, n);
     const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
 
@@ -92,6 +93,7 @@ SubStepResult ImplicitFiberStep::advance(Fiber& fiber, double h, const PointDrag
         vTheta = (y - xn) / h;
         residual.setZero();
         magnitude.setZero();
+        noise.setZero();
 
         for (Eigen::Index i = 0; i < n; ++i) {
             if (isHeld(i)) continue;
@@ -99,10 +101,16 @@ SubStepResult ImplicitFiberStep::advance(Fiber& fiber, double h, const PointDrag
             const Eigen::Vector3d load = h * (m(i) * g + state.externalForce.col(i));
             residual.col(i) += inertia - load;
             magnitude(i) += inertia.norm() + load.norm();
+            noise(i) += m(i) * (y.col(i).norm() + xn.col(i).norm() + h * vn.col(i).norm()) / (theta * h);
             addPointPoint(i, i, m(i) / (theta * h) * identity);
         }
         for (const BendingJoint& joint : joints) {
             const Eigen::Vector3d b = jointVector(joint, xTheta);
+            double bScale = joint.offset.norm();
+            for (int a = 0; a < joint.pointCount; ++a) {
+                bScale += std::abs(joint.coefficient[static_cast<std::size_t>(a)]) *
+                          xTheta.col(joint.point[static_cast<std::size_t>(a)]).norm();
+            }
             for (int a = 0; a < joint.pointCount; ++a) {
                 const Eigen::Index p = joint.point[static_cast<std::size_t>(a)];
                 const double ca = joint.coefficient[static_cast<std::size_t>(a)];
@@ -110,6 +118,7 @@ SubStepResult ImplicitFiberStep::advance(Fiber& fiber, double h, const PointDrag
                 if (!isHeld(p)) {
                     residual.col(p) += term;
                     magnitude(p) += term.norm();
+                    noise(p) += h * joint.stiffness * std::abs(ca) * bScale;
                 }
                 for (int c = 0; c < joint.pointCount; ++c) {
                     const double cc = joint.coefficient[static_cast<std::size_t>(c)];
@@ -134,6 +143,7 @@ SubStepResult ImplicitFiberStep::advance(Fiber& fiber, double h, const PointDrag
                 const Eigen::Vector3d force = cn * w + (ct - cn) * wt * t;
                 residual.col(i) -= h * force;
                 magnitude(i) += h * force.norm();
+                noise(i) += h * std::max(cn, ct) * (drag.airVelocity->col(i).norm() + vTheta.col(i).norm());
                 addPointPoint(i, i, cn * identity + (ct - cn) * t * t.transpose());
                 if (ct != cn) {
                     const Eigen::Matrix3d dForceDChord = (ct - cn) / chordLength *
@@ -147,13 +157,17 @@ SubStepResult ImplicitFiberStep::advance(Fiber& fiber, double h, const PointDrag
         for (Eigen::Index j = 0; j < s; ++j) {
             const Eigen::Vector3d d = xTheta.col(j + 1) - xTheta.col(j);
             const Eigen::Vector3d pull = lambda(j) / l(j) * d;  // tension force on point j
+            const double pullNoise =
+                h * std::abs(lambda(j)) / l(j) * (xTheta.col(j + 1).norm() + xTheta.col(j).norm());
             if (!isHeld(j)) {
                 residual.col(j) -= h * pull;
                 magnitude(j) += h * pull.norm();
+                noise(j) += pullNoise;
             }
             if (!isHeld(j + 1)) {
                 residual.col(j + 1) += h * pull;
                 magnitude(j + 1) += h * pull.norm();
+                noise(j + 1) += pullNoise;
             }
             const double k = h * theta * lambda(j) / l(j);
             addPointPoint(j, j, k * identity);
@@ -185,7 +199,9 @@ SubStepResult ImplicitFiberStep::advance(Fiber& fiber, double h, const PointDrag
                 }
                 continue;
             }
-            if (residual.col(i).norm() > settings.residualTolerance * magnitude(i)) residualSmall = false;
+            const double allowed = settings.residualTolerance * magnitude(i) +
+                                   64.0 * std::numeric_limits<double>::epsilon() * noise(i);
+            if (residual.col(i).norm() > allowed) residualSmall = false;
             rhs.segment<3>(pointRow(i)) = rowScale(i) * residual.col(i);
         }
 

@@ -1,0 +1,76 @@
+// AveragingWindow: the per-node sums of the last W committed time steps (the averaging
+// window [t_min, t_max] of eq. 26), and their total.
+//
+// Storage: a ring of W slots, each a full per-node array (GridQuantities layout), filled
+// as steps are committed (a slot is allocated when first used), plus the window total.
+// Memory: (filled slots + 1) * nodes * nQuantities * 8 bytes, e.g. 56 bytes per node
+// and slot for the 7 quantities.
+//
+// Exact, drift-free total: instead of a running sum with add-new/subtract-oldest (whose
+// round-off residue leaves small negative masses in empty regions and would make a
+// restarted run differ from a continuous one), every push recomputes the total over the
+// index boxes touched by the new and by the evicted step, summing the slots oldest to
+// newest. Outside those boxes both steps are zero, so the total there is unchanged. So
+// the total is always, bit for bit, the chronological sum of the slots, and a restored
+// window reproduces it exactly. Cost per push: (|new box| + |old box|) * nQuantities * W.
+#pragma once
+
+#include "grid/GridSpec.hpp"
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace dropletFiber
+{
+
+// Restart state of a window, flat (to be written by the caller in any format):
+//   counters = {format version 1, nx, ny, nz, nQuantities, window length, filled slots,
+//               committed steps, then per filled slot, oldest first: lo x y z, hi x y z}
+//   values   = per filled slot, oldest first, that slot's box, nQuantities per node,
+//              i fastest (only the touched box is stored).
+struct WindowState
+{
+    std::vector<std::int64_t> counters;
+    std::vector<double> values;
+};
+
+class AveragingWindow
+{
+public:
+    AveragingWindow(const std::array<int, 3>& nodes, int nQuantities, int length);
+
+    // Commit one step: `step` is a full per-node array that is zero outside `box`.
+    void push(const std::vector<double>& step, const IndexBox& box);
+
+    const std::vector<double>& total() const { return total_; }
+    int length() const { return length_; }
+    int filled() const { return filled_; }               // steps in the window, <= length
+    std::int64_t committedSteps() const { return committed_; }
+    // Union of the boxes of the steps in the window (where total can be non-zero).
+    IndexBox box() const;
+
+    WindowState save() const;
+    // Throws std::invalid_argument when the state does not fit this grid. A state saved
+    // with a different window length is accepted: the newest min(filled, length) steps
+    // are kept.
+    void restore(const WindowState& state);
+
+private:
+    std::size_t slotIndex(int age) const { return static_cast<std::size_t>((head_ + age) % length_); }
+    void recomputeTotal(const IndexBox& box);
+    template<class F>
+    void forEachBoxRow(const IndexBox& box, F&& f) const;
+
+    std::array<int, 3> nodes_;
+    int nQuantities_;
+    int length_;
+    std::vector<std::vector<double>> slots_;
+    std::vector<IndexBox> slotBoxes_;
+    int head_ = 0;   // slot of the oldest step
+    int filled_ = 0;
+    std::int64_t committed_ = 0;
+    std::vector<double> total_;
+};
+
+} // namespace dropletFiber

@@ -1,0 +1,34 @@
+// MultilinearWeights: bilinear (2D) / trilinear (3D) interpolation weights of a point on
+// the grid (MODEL.md sec. 4, between nodes), also used as the mass-conserving fallback
+// for a parcel whose kernel reaches no node (cloud-in-cell weights).
+//
+// Flat directions do not count: a 2D grid interpolates in its plane and ignores the
+// point's coordinate across the layer. Points outside the box in an active direction are
+// clamped to it (callers decide beforehand what outside means, see insideActiveBox).
+#pragma once
+
+#include "grid/GridSpec.hpp"
+
+#include <Eigen/Core>
+
+#include <array>
+#include <cstddef>
+
+namespace dropletFiber
+{
+
+struct CornerWeights
+{
+    int count = 0;                      // 1, 2, 4 or 8 corners (2^active dimensions)
+    std::array<std::size_t, 8> node{};  // flat node indices
+    std::array<double, 8> weight{};     // sum to 1, all >= 0
+    std::array<int, 3> lowerCorner{};   // index of the lowest corner per direction
+};
+
+CornerWeights multilinearWeights(const GridSpec& spec, const Eigen::Vector3d& point);
+
+// Inside the box in every active direction, with a tolerance of `relativeTolerance` times
+// the box size (so that points on the boundary that carry round-off still count).
+bool insideActiveBox(const GridSpec& spec, const Eigen::Vector3d& point, double relativeTolerance = 1e-12);
+
+} // namespace dropletFiber

@@ -1,0 +1,22 @@
+#include "grid/StepStatistics.hpp"
+
+namespace dropletFiber
+{
+
+StepStatistics& StepStatistics::operator+=(const StepStatistics& other)
+{
+    parcels += other.parcels;
+    parcelsEmpty += other.parcelsEmpty;
+    parcelsOutside += other.parcelsOutside;
+    parcelsPartlyOutside += other.parcelsPartlyOutside;
+    parcelsCapped += other.parcelsCapped;
+    parcelsFallback += other.parcelsFallback;
+    nodesVisited += other.nodesVisited;
+    nodesWeighted += other.nodesWeighted;
+    massIn += other.massIn;
+    massDeposited += other.massDeposited;
+    massOutside += other.massOutside;
+    return *this;
+}
+
+} // namespace dropletFiber

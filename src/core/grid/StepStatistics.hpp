@@ -1,0 +1,28 @@
+// StepStatistics: what happened to the parcels deposited in one time step, so that the
+// caller can report and warn (mass outside the grid, capped kernels, fallbacks). All
+// members are sums, so per-rank statistics add up across MPI ranks.
+#pragma once
+
+#include <cstdint>
+
+namespace dropletFiber
+{
+
+struct StepStatistics
+{
+    std::int64_t parcels = 0;              // deposit() calls
+    std::int64_t parcelsEmpty = 0;         // nParticle == 0 or diameter == 0: nothing to deposit
+    std::int64_t parcelsOutside = 0;       // path entirely outside the grid box
+    std::int64_t parcelsPartlyOutside = 0; // path leaves the box during the step
+    std::int64_t parcelsCapped = 0;        // influence radius limited by KernelSettings::rMaxCap
+    std::int64_t parcelsFallback = 0;      // kernel reached no node: multilinear weights used
+    std::int64_t nodesVisited = 0;         // nodes examined (bounding boxes of the swept capsules)
+    std::int64_t nodesWeighted = 0;        // nodes that received mass
+    double massIn = 0.0;                   // sum of parcel masses n m(r_p), kg
+    double massDeposited = 0.0;            // mass put on the grid nodes, kg
+    double massOutside = 0.0;              // massIn - massDeposited (part of the step outside the box)
+
+    StepStatistics& operator+=(const StepStatistics& other);
+};
+
+} // namespace dropletFiber

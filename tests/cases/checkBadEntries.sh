@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# Each bad dictionary entry stops the run with a FatalIOError that names the
+# entry. Usage: checkBadEntries.sh CASE_COPY (a prepared case: mesh made)
+set -uo pipefail
+case="$1"
+cd "$case" || exit 1
+cp system/controlDict system/controlDict.good
+passed=0; failed=0
+fo=functions/dropletFiber
+
+# expectError ENTRY VALUE PATTERN: set ENTRY to VALUE, run, expect PATTERN
+expectError() {
+    local entry="$1" value="$2" pattern="$3"
+    cp system/controlDict.good system/controlDict
+    if [ "$value" = "REMOVE" ]; then
+        foamDictionary system/controlDict -entry "$fo/$entry" -remove > /dev/null
+    else
+        foamDictionary system/controlDict -entry "$fo/$entry" -set "$value" > /dev/null
+    fi
+    pimpleFoam > log.bad 2>&1
+    local status=$?
+    if [ $status -ne 0 ] && grep -q "FOAM FATAL IO ERROR" log.bad && grep -q -E "$pattern" log.bad; then
+        passed=$((passed+1))
+        echo "ok: $entry = $value -> $(grep -A1 'FOAM FATAL IO ERROR' log.bad | tail -1)"
+    else
+        failed=$((failed+1))
+        echo "FAILED: $entry = $value (exit $status); log:"
+        grep -A4 "FOAM FATAL" log.bad || tail -5 log.bad
+    fi
+}
+
+expectError fibers/radius -1e-4 "Entry 'radius' is -0.0001"
+expectError fibers/density abc "density"
+expectError fibers/youngsModulus REMOVE "Entry 'youngsModulus' is required"
+expectError grid/nodes "(0 26 1)" "Entry 'nodes' is"
+expectError grid/lower "(0.3 0 0)" "Entries 'lower' .* and 'upper'"
+expectError grid/averagingSteps 0 "Entry 'averagingSteps' is 0"
+expectError grid/beta 2 "Entry 'beta' is 2"
+expectError grid/radiusAverage median "Entry 'radiusAverage' is 'median': allowed are"
+expectError fibers/drag stokes "Entry 'drag' is 'stokes': allowed are"
+expectError collision "{ sampling everywhere; }" "Entry 'sampling' is 'everywhere'"
+expectError air "{ rho -1.2; }" "Entry 'rho' is -1.2"
+expectError air "{ mu noSuchField; }" "Entry 'mu' names field 'noSuchField'"
+expectError fibers/fixed/across/points "((0.05 0.01 0.005))" "Entry 'points' has 1 points"
+expectError fibers/fixed/across/hold glued "Entry 'hold' is 'glued'"
+cp system/controlDict.good system/controlDict
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]
