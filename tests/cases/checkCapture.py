@@ -4,7 +4,7 @@ Usage: checkCapture.py CASE
 
 The expected value is computed here by hand from the case's injection settings,
 independently of the library:
-  50 streams, one parcel per stream per step (parcelsPerSecond 500 * deltaT 0.002),
+  50 streams, one parcel per stream per step (floor(50 * 505/s * 0.002 s) = 50),
   200 droplets of d = 50 um, rho_d = 1000 kg/m3, moving with the air at U = 1 m/s
   through a channel of height H = 0.05 m and depth 0.01 m:
       droplet mass density  rho = 50 * 200 * m(d) / deltaT / (U * H * depth)

@@ -19,9 +19,10 @@ cp -r "$caseDir" "$work/split"
     sed -i "s/^endTime .*/endTime         $half;/" system/controlDict
     ./Allrun > /dev/null
     sed -i "s/^endTime .*/endTime         $end;/" system/controlDict
-    pimpleFoam > log.restart 2>&1
+    "$(foamDictionary -entry application -value system/controlDict)" > log.restart 2>&1
 )
-for log in "$work"/full/log.pimpleFoam "$work"/split/log.pimpleFoam "$work"/split/log.restart; do
+app="$(foamDictionary -entry application -value "$caseDir/system/controlDict")"
+for log in "$work/full/log.$app" "$work/split/log.$app" "$work/split/log.restart"; do
     tail -n 3 "$log" | grep -q "^End" || { tail -n 30 "$log"; die "$log did not end"; }
 done
 grep -q "restarted from" "$work/split/log.restart" || die "the restarted run did not read the restart state"

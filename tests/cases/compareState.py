@@ -18,6 +18,9 @@ TOKEN = re.compile(r"[A-Za-z_][A-Za-z0-9_.:]*|[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+
 def entries(path):
     """[(dotted key, [numbers], [words])] in file order."""
     text = re.sub(r"//[^\n]*", "", open(path).read())
+    # OpenFOAM writes a list of equal values as N { value }: expand it
+    text = re.sub(r"(\d+)\s*\{\s*([^{}\s]+)\s*\}",
+                  lambda m: "(" + " ".join([m.group(2)] * int(m.group(1))) + ")", text)
     toks = TOKEN.findall(text)
     out, scope, i = [], [], 0
     while i < len(toks):

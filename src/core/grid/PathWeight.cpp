@@ -1,6 +1,7 @@
 #include "grid/PathWeight.hpp"
 
 #include "grid/GaussLegendre.hpp"
+#include "grid/ScaledErfc.hpp"
 
 #include <cmath>
 
@@ -15,22 +16,6 @@ constexpr double halfSqrtPi = 0.88622692545275801365; // sqrt(pi) / 2
 // Paths shorter than this fraction of the reach are taken as a point (error of order
 // (gamma L^2)^2, far below round-off).
 constexpr double stationaryFraction = 1e-12;
-
-// G(x1, x2) = int_{x1}^{x2} exp(-x^2) dx for a "long" interval (see regime choice below),
-// as a difference of positive quantities that does not cancel: erfc on the side where
-// both ends lie in the same tail, erf where the interval straddles zero.
-double gaussianIntegral(double x1, double x2)
-{
-    if (x1 >= 0.0)
-    {
-        return halfSqrtPi * (std::erfc(x1) - std::erfc(x2));
-    }
-    if (x2 <= 0.0)
-    {
-        return halfSqrtPi * (std::erfc(-x2) - std::erfc(-x1));
-    }
-    return halfSqrtPi * (std::erf(x2) - std::erf(x1));
-}
 
 // int_{xc-h}^{xc+h} exp(-x^2) dx = exp(-xc^2) * S with the Taylor series about the
 // midpoint: S = sum_m 2 h^(2m+1) / (2m+1)! * H_2m(xc) (H_n: Hermite polynomials,
@@ -80,24 +65,59 @@ PathWeight::PathWeight(const ParcelKernel& kernel, const Eigen::Vector3d& start,
     }
 }
 
-double PathWeight::integralAlongPath(
-    double lambdaM, double d0Squared, double halfChord, double lambda1, double lambda2) const
+double PathWeight::integralAlongPath(double lambdaM, double d0Squared) const
 {
     const double gamma = kernel_.gamma();
     const double edgeValue = kernel_.edgeValue();
-    const double u1 = lambda1 - lambdaM;
-    const double u2 = lambda2 - lambdaM;
-    const double width = lambda2 - lambda1;
+    // Half chord h of the reach circle on the path line: the node is within reach for
+    // lambda in (lambdaM - h, lambdaM + h). An end of the path is within reach iff its
+    // offset from lambdaM is below h (compared squared: no sqrt in the common case).
+    const double halfChordSquared = reachSquared_ - d0Squared;
+    const double toEnd = length_ - lambdaM;
+    const bool startWithin = lambdaM * lambdaM < halfChordSquared;
+    const bool endWithin = toEnd * toEnd < halfChordSquared;
+    double u1 = -lambdaM; // interval [u1, u2] in lambda - lambdaM
+    double u2 = toEnd;
+    double halfChord = 0.0;
+    if (!startWithin || !endWithin)
+    {
+        halfChord = std::sqrt(halfChordSquared);
+        if (!startWithin)
+        {
+            if (lambdaM + halfChord <= 0.0)
+            {
+                return 0.0; // the chord ends before the path starts
+            }
+            u1 = std::max(-halfChord, -lambdaM);
+        }
+        if (!endWithin)
+        {
+            if (lambdaM - halfChord >= length_)
+            {
+                return 0.0; // the chord starts after the path ends
+            }
+            u2 = std::min(halfChord, toEnd);
+        }
+        if (!(u2 > u1))
+        {
+            return 0.0;
+        }
+    }
+    const double width = u2 - u1;
 
-    // Largest q = gamma (halfChord^2 - u^2) on the interval; phi = exp(-a) expm1(q).
+    // Largest q = gamma (h^2 - u^2) on the interval; phi = exp(-a) expm1(q).
     const double uNearest = (u1 <= 0.0 && u2 >= 0.0) ? 0.0 : std::min(std::abs(u1), std::abs(u2));
-    const double qMax = gamma * (halfChord - uNearest) * (halfChord + uNearest);
+    const double qMax = gamma * (halfChordSquared - uNearest * uNearest);
 
     if (qMax < 0.25)
     {
         // Regime A: the interval only grazes the edge of the support. The Gaussian and the
         // constant of eq. 12 nearly cancel, so integrate phi = exp(-a) expm1(q) pointwise;
         // q is a quadratic of range <= 0.25 here, so the 10-point rule is exact to round-off.
+        if (halfChord == 0.0)
+        {
+            halfChord = std::sqrt(halfChordSquared);
+        }
         const GaussLegendreRule& rule = gaussLegendre();
         const double centre = 0.5 * (u1 + u2);
         const double half = 0.5 * width;
@@ -123,10 +143,32 @@ double PathWeight::integralAlongPath(
         return gaussian - edgeValue * width;
     }
 
-    // Regime C: the closed form of MODEL.md with erf/erfc.
-    const double gaussian
-        = std::exp(-gamma * d0Squared) * gaussianIntegral(sqrtGamma_ * u1, sqrtGamma_ * u2) / sqrtGamma_;
-    return gaussian - edgeValue * width;
+    // Regime C: the closed form of MODEL.md, int_{x1}^{x2} exp(-x^2) dx times exp(-gamma d0^2),
+    // written with the kernel's Gaussians at the interval's ends, g_i = exp(-gamma (d0^2 + u_i^2))
+    // (exp(-a) where the end is on the reach circle), and erfcScaled(x) = exp(x^2) erfc(x):
+    //   0 <= x1 < x2:  sqrt(pi)/2 [g1 erfcScaled(x1) - g2 erfcScaled(x2)]
+    //   x1 < x2 <= 0:  sqrt(pi)/2 [g2 erfcScaled(-x2) - g1 erfcScaled(-x1)]
+    //   x1 < 0 < x2:   sqrt(pi) exp(-gamma d0^2) - sqrt(pi)/2 [g1 erfcScaled(-x1) + g2 erfcScaled(x2)]
+    // Outside regime B the two terms differ by a factor >~ 1.5 (no cancellation).
+    const double x1 = sqrtGamma_ * u1;
+    const double x2 = sqrtGamma_ * u2;
+    const double g1 = (u1 == -halfChord) ? edgeValue : std::exp(-gamma * (d0Squared + u1 * u1));
+    const double g2 = (u2 == halfChord) ? edgeValue : std::exp(-gamma * (d0Squared + u2 * u2));
+    double gaussian;
+    if (x1 >= 0.0)
+    {
+        gaussian = halfSqrtPi * (g1 * erfcScaled(x1) - g2 * erfcScaled(x2));
+    }
+    else if (x2 <= 0.0)
+    {
+        gaussian = halfSqrtPi * (g2 * erfcScaled(-x2) - g1 * erfcScaled(-x1));
+    }
+    else
+    {
+        gaussian = 2.0 * halfSqrtPi * std::exp(-gamma * d0Squared)
+            - halfSqrtPi * (g1 * erfcScaled(-x1) + g2 * erfcScaled(x2));
+    }
+    return gaussian / sqrtGamma_ - edgeValue * width;
 }
 
 } // namespace dropletFiber

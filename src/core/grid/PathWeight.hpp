@@ -12,7 +12,8 @@
 //                 - exp(-gamma reach^2) (lambda_2 - lambda_1) ] / L.
 // Working in lambda (not tau) keeps L -> 0 finite: tau_min of eq. 21 diverges, lambda_m
 // does not. The integral is evaluated three ways so that it stays accurate to round-off
-// (see PathWeight.cpp): erf/erfc differences (long intervals), a Taylor series in the
+// (see PathWeight.cpp): scaled erfc (long intervals; the Gaussians at the ends of the
+// interval times exp(x^2) erfc(x), so no erf difference cancels), a Taylor series in the
 // half-width (short intervals, including L -> 0), and a Gauss-Legendre rule on
 // exp(-a) expm1(...) where the path only grazes the edge of the support (there the two
 // terms above nearly cancel). A path shorter than 1e-12 reach is taken as a point at its
@@ -53,22 +54,16 @@ public:
         {
             return 0.0;
         }
-        const double halfChord = std::sqrt(reachSquared_ - d0Squared);
-        const double lambda1 = std::max(0.0, lambdaM - halfChord);
-        const double lambda2 = std::min(length_, lambdaM + halfChord);
-        if (!(lambda2 > lambda1))
-        {
-            return 0.0;
-        }
-        return integralAlongPath(lambdaM, d0Squared, halfChord, lambda1, lambda2) * inverseLength_;
+        return integralAlongPath(lambdaM, d0Squared) * inverseLength_;
     }
 
     double length() const { return length_; }
     bool stationary() const { return stationary_; }
     const ParcelKernel& kernel() const { return kernel_; }
 
-    // int_{lambda1}^{lambda2} phi dlambda (metres); public for the accuracy tests.
-    double integralAlongPath(double lambdaM, double d0Squared, double halfChord, double lambda1, double lambda2) const;
+    // int phi dlambda over the part of the path within reach (metres), for a node at
+    // distance sqrt(d0Squared) < reach from the path line, projecting to lambdaM on it.
+    double integralAlongPath(double lambdaM, double d0Squared) const;
 
 private:
     ParcelKernel kernel_;

@@ -143,8 +143,8 @@ void Foam::functionObjects::dropletFiberCollision::readGrid
         getChoice(gridDict, "radiusAverage", "mass", {"number", "mass"});
     collision_.radiusAverage =
         radius == "number"
-      ? ::dropletFiber::RadiusAverage::number
-      : ::dropletFiber::RadiusAverage::mass;
+      ? ::dropletFiber::RadiusAverage::Number
+      : ::dropletFiber::RadiusAverage::Mass;
 }
 
 
@@ -157,12 +157,12 @@ void Foam::functionObjects::dropletFiberCollision::readCollision
     const dictionary collisionDict = dict.subOrEmptyDict("collision");
     const word sampling =
         getChoice(collisionDict, "sampling", "midpoint", {"midpoint", "integrated"});
-    collision_.sampling =
+    // midpoint: one sample (the paper); integrated: samplesPerSegment equal
+    // sub-segments, 0 = one per grid spacing the segment spans
+    collision_.samples =
         sampling == "midpoint"
-      ? ::dropletFiber::SegmentSampling::midpoint
-      : ::dropletFiber::SegmentSampling::integrated;
-    collision_.samplesPerSegment =
-        getLabelInRange(collisionDict, "samplesPerSegment", 4, 1, 1000);
+      ? 1
+      : int(getLabelInRange(collisionDict, "samplesPerSegment", 0, 0, 1000));
 }
 
 
@@ -186,12 +186,10 @@ void Foam::functionObjects::dropletFiberCollision::reportSettings() const
         << ", beta " << kernel_.beta
         << ", rMaxCap " << kernel_.rMaxCap
         << ", radiusAverage "
-        << (collision_.radiusAverage == ::dropletFiber::RadiusAverage::number
+        << (collision_.radiusAverage == ::dropletFiber::RadiusAverage::Number
             ? "number" : "mass") << nl
-        << "    collision: sampling "
-        << (collision_.sampling == ::dropletFiber::SegmentSampling::midpoint
-            ? "midpoint" : "integrated")
-        << ", samplesPerSegment " << collision_.samplesPerSegment << nl;
+        << "    collision: samples per segment " << collision_.samples
+        << " (1: midpoint, 0: one per grid spacing)" << nl;
     air_->report(Info);
     const auto& s = solverSettings_;
     Info<< "    fibers: gravity (" << s.gravity.x() << ' ' << s.gravity.y() << ' '
@@ -261,7 +259,7 @@ Foam::functionObjects::dropletFiberCollision::depositParcels(const scalar dt)
     // boxes of nodes the processors touched only
     if (Pstream::parRun())
     {
-        ::dropletFiber::IndexBox box = grid.touchedBox();
+        ::dropletFiber::IndexBox box = grid.stepBox();
         List<label> lo(3), hi(3);
         for (label d = 0; d < 3; ++d)
         {
@@ -284,13 +282,13 @@ Foam::functionObjects::dropletFiberCollision::depositParcels(const scalar dt)
         }
         if (!box.empty())
         {
-            std::vector<double> block = grid.extractStep(box);
+            std::vector<double> block = grid.packStep(box);
             List<scalar> values(label(block.size()));
             std::copy(block.begin(), block.end(), values.begin());
             Pstream::listCombineGather(values, plusEqOp<scalar>());
             Pstream::listCombineScatter(values);
             std::copy(values.begin(), values.end(), block.begin());
-            grid.replaceStep(box, block);
+            grid.unpackStep(box, block);
         }
     }
 

@@ -9,6 +9,7 @@ Description
 
 #include "dropletFiberCollision.H"
 #include "fiberStateIO.H"
+#include "dictionaryChecks.H"
 #include "Time.H"
 #include "fvMesh.H"
 #include "OFstream.H"
@@ -55,6 +56,9 @@ void Foam::functionObjects::dropletFiberCollision::writeState() const
     // copy (processorN/<time>/uniform/...), so that every processor reads its
     // own on restart, also after a change of the number of processors
     // through reconstructPar/decomposePar (which copy uniform/).
+    // Entries added to a dictionary are turned into tokens at the default
+    // precision: raise it for the restart state (bit-for-bit restart).
+    const unsigned oldPrecision = IOstream::defaultPrecision(17);
     dictionary state;
     state.add("time", time_.value());
     state.add("timeIndex", time_.timeIndex());
@@ -64,7 +68,7 @@ void Foam::functionObjects::dropletFiberCollision::writeState() const
     {
         dictionary d = dropletFiber::fiberStateDict(fibers_[f].state());
         d.add("origin", fiberOrigin_[f]);
-        fibers.add("fiber" + Foam::name(label(f)), d);
+        fibers.add(word("fiber" + Foam::name(label(f))), d);
     }
     state.add("fibers", fibers);
 
@@ -84,7 +88,18 @@ void Foam::functionObjects::dropletFiberCollision::writeState() const
     totals.add("fibersRemoved", totals_.fibersRemoved);
     state.add("totals", totals);
 
-    state.add("gridWindow", dropletFiber::toScalarList(grid_->windowState()));
+    const ::dropletFiber::WindowState window = grid_->saveWindow();
+    state.add
+    (
+        "gridWindowCounters",
+        dropletFiber::toScalarList
+        (
+            std::vector<double>(window.counters.begin(), window.counters.end())
+        )
+    );
+    state.add("gridWindowValues", dropletFiber::toScalarList(window.values));
+
+    IOstream::defaultPrecision(oldPrecision);
 
     const fileName path = statePath(time_.timeName());
     mkDir(path.path());
@@ -150,10 +165,14 @@ bool Foam::functionObjects::dropletFiberCollision::readState()
         state,
         [&]()
         {
-            grid_->restoreWindowState
-            (
-                dropletFiber::toStdVector(state.get<scalarList>("gridWindow"))
-            );
+            ::dropletFiber::WindowState window;
+            for (const scalar c : state.get<scalarList>("gridWindowCounters"))
+            {
+                window.counters.push_back(std::int64_t(c));
+            }
+            window.values =
+                dropletFiber::toStdVector(state.get<scalarList>("gridWindowValues"));
+            grid_->restoreWindow(window);
         }
     );
 
@@ -234,7 +253,7 @@ void Foam::functionObjects::dropletFiberCollision::writeVtkFiles()
         ::dropletFiber::VtkField U{"U", 3, std::vector<double>(3*n)};
         for (std::size_t k = 0; k < n; ++k)
         {
-            const ::dropletFiber::NodeValues v = grid.nodeValues(k);
+            const ::dropletFiber::DropletFieldValue v = grid.nodeValue(k);
             rho.values[k] = v.rho;
             rNumber.values[k] = v.rMeanNumber;
             rMass.values[k] = v.rMeanMass;

@@ -19,8 +19,8 @@ dictionary endDict(const ::dropletFiber::EndCondition& end)
       : end.type == ::dropletFiber::EndType::pinned ? "pinned"
       : "clamped";
     d.add("type", type);
-    d.add("anchorVelocity", dropletFiber::toScalarList(end.anchorVelocity.data(), 3));
-    d.add("clampDirection", dropletFiber::toScalarList(end.clampDirection.data(), 3));
+    d.add("anchorVelocity", Foam::dropletFiber::toScalarList(end.anchorVelocity.data(), 3));
+    d.add("clampDirection", Foam::dropletFiber::toScalarList(end.clampDirection.data(), 3));
     return d;
 }
 

@@ -1,0 +1,212 @@
+#include "grid/AveragingWindow.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace dropletFiber
+{
+
+namespace
+{
+constexpr std::int64_t formatVersion = 1;
+constexpr std::size_t headerSize = 8;
+} // namespace
+
+AveragingWindow::AveragingWindow(const std::array<int, 3>& nodes, int nQuantities, int length)
+    : nodes_(nodes), nQuantities_(nQuantities), length_(length)
+{
+    if (length < 1)
+    {
+        throw std::invalid_argument("averaging window: length must be at least 1 step, got " + std::to_string(length));
+    }
+    const std::size_t size = static_cast<std::size_t>(nodes[0]) * static_cast<std::size_t>(nodes[1])
+        * static_cast<std::size_t>(nodes[2]) * static_cast<std::size_t>(nQuantities);
+    slots_.resize(static_cast<std::size_t>(length));
+    slotBoxes_.resize(static_cast<std::size_t>(length));
+    total_.assign(size, 0.0);
+}
+
+// Calls f(offset, count) for each contiguous row (fixed j, k) of the box, in values.
+template<class F>
+void AveragingWindow::forEachBoxRow(const IndexBox& box, F&& f) const
+{
+    if (box.empty())
+    {
+        return;
+    }
+    const std::size_t q = static_cast<std::size_t>(nQuantities_);
+    const std::size_t rowLength = static_cast<std::size_t>(box.hi[0] - box.lo[0] + 1) * q;
+    for (int k = box.lo[2]; k <= box.hi[2]; ++k)
+    {
+        for (int j = box.lo[1]; j <= box.hi[1]; ++j)
+        {
+            const std::size_t node = static_cast<std::size_t>(box.lo[0])
+                + static_cast<std::size_t>(nodes_[0])
+                    * (static_cast<std::size_t>(j) + static_cast<std::size_t>(nodes_[1]) * static_cast<std::size_t>(k));
+            f(node * q, rowLength);
+        }
+    }
+}
+
+void AveragingWindow::push(const std::vector<double>& step, const IndexBox& box)
+{
+    if (step.size() != total_.size())
+    {
+        throw std::invalid_argument("averaging window: step array has the wrong size");
+    }
+    IndexBox evicted;
+    std::size_t slot;
+    if (filled_ == length_)
+    {
+        slot = static_cast<std::size_t>(head_);
+        evicted = slotBoxes_[slot];
+        std::vector<double>& old = slots_[slot];
+        forEachBoxRow(evicted, [&](std::size_t offset, std::size_t count)
+                      { std::fill(old.begin() + static_cast<std::ptrdiff_t>(offset),
+                                  old.begin() + static_cast<std::ptrdiff_t>(offset + count), 0.0); });
+        head_ = (head_ + 1) % length_;
+    }
+    else
+    {
+        slot = slotIndex(filled_);
+        ++filled_;
+    }
+    std::vector<double>& target = slots_[slot];
+    if (target.empty())
+    {
+        target.assign(total_.size(), 0.0);
+    }
+    forEachBoxRow(box, [&](std::size_t offset, std::size_t count)
+                  { std::copy(step.begin() + static_cast<std::ptrdiff_t>(offset),
+                              step.begin() + static_cast<std::ptrdiff_t>(offset + count),
+                              target.begin() + static_cast<std::ptrdiff_t>(offset)); });
+    slotBoxes_[slot] = box;
+    ++committed_;
+    recomputeTotal(evicted.united(box));
+}
+
+void AveragingWindow::recomputeTotal(const IndexBox& box)
+{
+    forEachBoxRow(box, [&](std::size_t offset, std::size_t count)
+                  {
+                      double* total = total_.data() + offset;
+                      std::fill(total, total + count, 0.0);
+                      // Oldest to newest: the same order in a continuous and a restored run.
+                      for (int age = 0; age < filled_; ++age)
+                      {
+                          const double* slot = slots_[slotIndex(age)].data() + offset;
+                          for (std::size_t n = 0; n < count; ++n)
+                          {
+                              total[n] += slot[n];
+                          }
+                      }
+                  });
+}
+
+IndexBox AveragingWindow::box() const
+{
+    IndexBox result;
+    for (int age = 0; age < filled_; ++age)
+    {
+        result = result.united(slotBoxes_[slotIndex(age)]);
+    }
+    return result;
+}
+
+WindowState AveragingWindow::save() const
+{
+    WindowState state;
+    state.counters = {formatVersion, nodes_[0], nodes_[1], nodes_[2], nQuantities_, length_, filled_, committed_};
+    for (int age = 0; age < filled_; ++age)
+    {
+        const IndexBox& b = slotBoxes_[slotIndex(age)];
+        state.counters.insert(state.counters.end(), {b.lo[0], b.lo[1], b.lo[2], b.hi[0], b.hi[1], b.hi[2]});
+        const std::vector<double>& slot = slots_[slotIndex(age)];
+        forEachBoxRow(b, [&](std::size_t offset, std::size_t count)
+                      { state.values.insert(state.values.end(), slot.begin() + static_cast<std::ptrdiff_t>(offset),
+                                            slot.begin() + static_cast<std::ptrdiff_t>(offset + count)); });
+    }
+    return state;
+}
+
+void AveragingWindow::restore(const WindowState& state)
+{
+    const std::vector<std::int64_t>& c = state.counters;
+    auto fail = [](const std::string& what) { throw std::invalid_argument("averaging window restart: " + what); };
+    if (c.size() < headerSize || c[0] != formatVersion)
+    {
+        fail("unknown format");
+    }
+    if (c[1] != nodes_[0] || c[2] != nodes_[1] || c[3] != nodes_[2])
+    {
+        fail("saved for a grid of " + std::to_string(c[1]) + "x" + std::to_string(c[2]) + "x" + std::to_string(c[3])
+             + " nodes, this grid has " + std::to_string(nodes_[0]) + "x" + std::to_string(nodes_[1]) + "x"
+             + std::to_string(nodes_[2]));
+    }
+    if (c[4] != nQuantities_)
+    {
+        fail("different number of quantities per node");
+    }
+    const std::int64_t savedFilled = c[6];
+    if (savedFilled < 0 || savedFilled > c[5] || c.size() != headerSize + 6 * static_cast<std::size_t>(savedFilled))
+    {
+        fail("inconsistent slot count");
+    }
+    // Read all boxes and check the value count before touching this window.
+    std::vector<IndexBox> boxes(static_cast<std::size_t>(savedFilled));
+    std::size_t expectedValues = 0;
+    for (std::size_t s = 0; s < boxes.size(); ++s)
+    {
+        for (int d = 0; d < 3; ++d)
+        {
+            boxes[s].lo[d] = static_cast<int>(c[headerSize + 6 * s + static_cast<std::size_t>(d)]);
+            boxes[s].hi[d] = static_cast<int>(c[headerSize + 6 * s + 3 + static_cast<std::size_t>(d)]);
+            if (!boxes[s].empty() && (boxes[s].lo[d] < 0 || boxes[s].hi[d] >= nodes_[d]))
+            {
+                fail("slot box outside the grid");
+            }
+        }
+        expectedValues += boxes[s].nodeCount() * static_cast<std::size_t>(nQuantities_);
+    }
+    if (expectedValues != state.values.size())
+    {
+        fail("value count does not match the slot boxes");
+    }
+
+    // Keep the newest min(savedFilled, length) steps.
+    const std::size_t skip = savedFilled > length_ ? static_cast<std::size_t>(savedFilled - length_) : 0;
+    for (auto& slot : slots_)
+    {
+        slot.clear();
+    }
+    std::fill(slotBoxes_.begin(), slotBoxes_.end(), IndexBox{});
+    std::fill(total_.begin(), total_.end(), 0.0);
+    head_ = 0;
+    filled_ = 0;
+    std::size_t position = 0;
+    for (std::size_t s = 0; s < boxes.size(); ++s)
+    {
+        const std::size_t count = boxes[s].nodeCount() * static_cast<std::size_t>(nQuantities_);
+        if (s >= skip)
+        {
+            std::vector<double>& slot = slots_[static_cast<std::size_t>(filled_)];
+            slot.assign(total_.size(), 0.0);
+            std::size_t read = position;
+            forEachBoxRow(boxes[s], [&](std::size_t offset, std::size_t rowCount)
+                          {
+                              std::copy(state.values.begin() + static_cast<std::ptrdiff_t>(read),
+                                        state.values.begin() + static_cast<std::ptrdiff_t>(read + rowCount),
+                                        slot.begin() + static_cast<std::ptrdiff_t>(offset));
+                              read += rowCount;
+                          });
+            slotBoxes_[static_cast<std::size_t>(filled_)] = boxes[s];
+            ++filled_;
+        }
+        position += count;
+    }
+    committed_ = c[7];
+    recomputeTotal(box());
+}
+
+} // namespace dropletFiber

@@ -1,0 +1,153 @@
+// DensityGrid: droplet mass density, mean radius and mean velocity on a regular grid,
+// from parcels (MODEL.md sec. 4, eqs. 19-26). Per time step:
+//     for each parcel: deposit(parcel, dt)     -> the step's accumulator
+//     commitStep()                              -> the step enters the averaging window
+//     nodeValues(...), sample(point)            -> fields averaged over the window
+//
+// One parcel's mass, step by step (deposit):
+//  1. Path: from position - velocity dt to position (Parcel.hpp convention).
+//  2. The path is clipped to the grid box (flat directions: the slab [lower, upper]).
+//     The parcel puts the fraction f of its mass on the grid that equals the fraction of
+//     the step it spends inside the box; the rest is reported as mass outside. So a parcel
+//     entirely outside gives nothing (even if its kernel would reach nodes: piling the
+//     mass of droplets outside onto the edge nodes would bias them), and a parcel
+//     crossing the boundary gives the time-averaged share of eq. 26.
+//  3. Kernel (ParcelKernel, eqs. 12-18), reach = r_max or the cap. When the cap binds,
+//     StepStatistics::parcelsCapped counts it (the caller can warn).
+//  4. Every node in the bounding box of the capsule swept by the clipped path (within
+//     reach of the path) gets omega_g (PathWeight, eq. 23); nodes farther than reach from
+//     the path are rejected before any exp/erf. Cost per parcel ~ nodes in that box,
+//     independent of the grid size (StepStatistics::nodesVisited counts them).
+//  5. Weights w_g = omega_g / sum omega (eq. 24): the mass given to the grid is f times the
+//     parcel's mass to round-off, also near edges (nodes outside the grid do not exist,
+//     so the normalisation runs over the existing ones).
+//  6. Fallback when sum omega == 0 (r_max smaller than the distance from the path to
+//     every node, e.g. n = 1, or only weights that underflow): the mass goes to the cell
+//     corners with multilinear (cloud-in-cell) weights, averaged over points spaced at
+//     most half a node spacing along the path. Mass is conserved;
+//     StepStatistics::parcelsFallback counts these parcels.
+//  7. Per node: mass w f n m, droplet count w f n, count*radius, mass*radius, mass*velocity
+//     (GridQuantities.hpp).
+//
+// Fields from the window (last W committed steps, equal weight per step, eq. 26), at a
+// node with window sums S_q over s steps (s = min(committed, W)) and node volume V:
+//     rho = S_mass / (V s),  number density = S_count / (V s),
+//     rMeanNumber = S_countRadius / S_count (eq. 10),  rMeanMass = S_massRadius / S_mass,
+//     velocity = S_momentum / S_mass (mass-weighted mean droplet velocity).
+// Empty nodes give zeros. sample(point) interpolates the sums S_q multilinearly and then
+// forms the same ratios: rho and the momentum density are exactly bilinear/trilinear
+// between nodes, and the means are not dragged to zero by empty neighbours.
+// Points outside the box (in active directions) give inside = false and zeros.
+//
+// Edge nodes: every node has the full volume h_x h_y [h_z] of eq. 26. Within about one
+// kernel width of the box boundary the density is biased (mass of parcels near the edge
+// stays inside, normalised over fewer nodes), so compare fields away from the edges or
+// make the grid a little larger than the region of interest.
+//
+// Parallel runs (MPI, done by the caller): each rank deposits its parcels; then the step
+// accumulator (stepValues(), nodes * nQuantities doubles) is summed over ranks within the
+// union of the ranks' stepBox() (pack/unpackStep help), and every rank calls commitStep().
+// The window is then identical on all ranks.
+//
+// Restart: saveWindow()/restoreWindow() (AveragingWindow.hpp); the restored grid gives
+// bit-for-bit the same fields and the same results for later steps.
+//
+// Invalid parcels (non-finite values, negative diameter/nParticle/density) and dt < 0
+// throw std::invalid_argument; nParticle == 0 or diameter == 0 is counted and skipped.
+#pragma once
+
+#include "grid/AveragingWindow.hpp"
+#include "grid/GridQuantities.hpp"
+#include "grid/GridSpec.hpp"
+#include "grid/Parcel.hpp"
+#include "grid/ParcelKernel.hpp"
+#include "grid/StepStatistics.hpp"
+
+#include <Eigen/Core>
+
+#include <array>
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+namespace dropletFiber
+{
+
+// Droplet field at a node or interpolated at a point.
+struct DropletFieldValue
+{
+    bool inside = true;          // false: point outside the grid box, all zeros
+    double rho = 0.0;            // droplet mass per volume of space, kg/m^3
+    double numberDensity = 0.0;  // droplets per volume, 1/m^3
+    double rMeanNumber = 0.0;    // number-weighted mean droplet radius (eq. 10), m
+    double rMeanMass = 0.0;      // mass-weighted mean droplet radius, m
+    Eigen::Vector3d velocity{0.0, 0.0, 0.0}; // mass-weighted mean droplet velocity, m/s
+};
+
+class DensityGrid
+{
+public:
+    // windowLength W >= 1: number of committed steps averaged. Throws std::invalid_argument
+    // on an invalid spec or settings.
+    DensityGrid(const GridSpec& spec, const KernelSettings& kernel = KernelSettings{}, int windowLength = 1);
+
+    const GridSpec& spec() const { return spec_; }
+    const KernelSettings& kernelSettings() const { return kernelSettings_; }
+    int kernelDimension() const { return kernelDimension_; } // 2 or 3, the r_min formula in use
+
+    // --- one time step ---------------------------------------------------------------
+    void deposit(const Parcel& parcel, double dt);
+    // Ends the step: the accumulator enters the window and is cleared; statistics move
+    // to lastStepStatistics().
+    void commitStep();
+    const StepStatistics& stepStatistics() const { return stepStatistics_; }
+    const StepStatistics& lastStepStatistics() const { return lastStepStatistics_; }
+
+    // --- step accumulator, for summing across MPI ranks --------------------------------
+    // nodes * nQuantities doubles, GridQuantities layout, zero outside stepBox().
+    std::vector<double>& stepValues() { return step_; }
+    const std::vector<double>& stepValues() const { return step_; }
+    IndexBox stepBox() const { return stepBox_; }
+    // Copies the box's values (nQuantities per node, i fastest) into a contiguous buffer...
+    std::vector<double> packStep(const IndexBox& box) const;
+    // ...and back: overwrites the box (e.g. with the sum over ranks); stepBox() becomes
+    // stepBox() united with box. Nodes outside the box are left as they are.
+    void unpackStep(const IndexBox& box, const std::vector<double>& values);
+
+    // --- averaging window and fields ----------------------------------------------------
+    int windowLength() const { return window_.length(); }
+    int stepsInWindow() const { return window_.filled(); }
+    std::int64_t committedSteps() const { return window_.committedSteps(); }
+    const std::vector<double>& windowTotals() const { return window_.total(); }
+    WindowState saveWindow() const { return window_.save(); }
+    void restoreWindow(const WindowState& state) { window_.restore(state); }
+
+    DropletFieldValue nodeValue(int i, int j, int k) const;
+    DropletFieldValue nodeValue(std::size_t flatIndex) const;
+    DropletFieldValue sample(const Eigen::Vector3d& point) const;
+    // Window mass per step on the grid: sum over nodes of S_mass / s (kg).
+    double windowMassPerStep() const;
+
+private:
+    // Window sums S_q (any weights) -> field values.
+    DropletFieldValue fieldFromSums(const std::array<double, nQuantities>& sums) const;
+    void accumulate(std::size_t node, double weight, const std::array<double, nQuantities>& parcelTotals);
+    void depositFallback(const Eigen::Vector3d& start, const Eigen::Vector3d& displacement,
+                         const std::array<double, nQuantities>& parcelTotals);
+    void markTouched(const std::array<int, 3>& index);
+
+    GridSpec spec_;
+    KernelSettings kernelSettings_;
+    int kernelDimension_;
+    std::array<std::vector<double>, 3> coordinates_; // node coordinates per direction
+    std::array<double, 3> inverseSpacing_{};
+    double nodeVolume_;
+    AveragingWindow window_;
+    std::vector<double> step_;
+    IndexBox stepBox_;
+    StepStatistics stepStatistics_;
+    StepStatistics lastStepStatistics_;
+    std::vector<std::pair<std::size_t, double>> scratch_; // (node, omega) of the current parcel
+};
+
+} // namespace dropletFiber

@@ -1,0 +1,474 @@
+// DensityGrid: mass conservation (eqs. 24-25), the edge cases (outside, partly outside,
+// no node reached, n = 1, zero velocity), node weights following phi, mean radii
+// (eq. 10 and the mass-weighted one), the averaging window (eq. 26), cost scaling,
+// restart and the MPI-style reduction. Expected values come from the physics (parcel
+// masses n rho 4/3 pi r^3, time fractions, bilinear weights, eq. 12 written out here),
+// never from the grid's own output.
+#include "grid/DensityGrid.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+using namespace dropletFiber;
+
+namespace
+{
+
+constexpr double pi = 3.14159265358979323846;
+
+double massOf(double n, double diameter, double rho)
+{
+    const double r = 0.5 * diameter;
+    return n * rho * 4.0 / 3.0 * pi * r * r * r;
+}
+
+GridSpec grid2D(int nx = 31, int ny = 21)
+{
+    GridSpec s;
+    s.lower = Eigen::Vector3d(0.0, 0.0, 0.0);
+    s.upper = Eigen::Vector3d(0.03, 0.02, 1e-3);
+    s.nodes = {{nx, ny, 1}};
+    return s;
+}
+
+GridSpec grid3D()
+{
+    GridSpec s;
+    s.lower = Eigen::Vector3d(0.0, 0.0, 0.0);
+    s.upper = Eigen::Vector3d(0.02, 0.015, 0.01);
+    s.nodes = {{21, 16, 11}};
+    return s;
+}
+
+double stepMass(const DensityGrid& grid)
+{
+    double m = 0.0;
+    const std::vector<double>& v = grid.stepValues();
+    for (std::size_t n = 0; n < grid.spec().nodeCount(); ++n)
+    {
+        m += v[n * nQuantities + quantityMass];
+    }
+    return m;
+}
+
+Parcel makeParcel(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity, double diameter, double n,
+                  double rho = 1000.0)
+{
+    Parcel p;
+    p.position = position;
+    p.velocity = velocity;
+    p.diameter = diameter;
+    p.nParticle = n;
+    p.rhoDroplet = rho;
+    return p;
+}
+
+// Squared distance from g to the segment [a, b] (the test's own geometry).
+double segmentDistanceSquared(const Eigen::Vector3d& g, const Eigen::Vector3d& a, const Eigen::Vector3d& b)
+{
+    const Eigen::Vector3d ab = b - a;
+    double t = ab.squaredNorm() > 0.0 ? (g - a).dot(ab) / ab.squaredNorm() : 0.0;
+    t = std::min(1.0, std::max(0.0, t));
+    return (a + t * ab - g).squaredNorm();
+}
+
+} // namespace
+
+TEST(DensityGrid, MassConservedForRandomClouds)
+{
+    for (const GridSpec& spec : {grid2D(), grid3D()})
+    {
+        for (double cap : {0.0, 4e-3})
+        {
+            KernelSettings settings;
+            settings.rMaxCap = cap;
+            DensityGrid grid(spec, settings);
+            std::mt19937_64 rng(42);
+            std::uniform_real_distribution<double> unit(0.0, 1.0);
+            const double dt = 1e-4;
+            int fullyInside = 0;
+            StepStatistics s;
+            double nodeMassTotal = 0.0;
+            for (int n = 0; n < 1500; ++n)
+            {
+                // Positions in a box 20 % larger than the grid: inside, near edges and
+                // corners, outside, crossing the boundary.
+                Eigen::Vector3d pos;
+                for (int d = 0; d < 3; ++d)
+                {
+                    const double size = spec.upper[d] - spec.lower[d];
+                    pos[d] = spec.lower[d] - 0.1 * size + 1.2 * size * unit(rng);
+                    if (spec.flat(d))
+                    {
+                        pos[d] = spec.lower[d] + size * unit(rng);
+                    }
+                }
+                Eigen::Vector3d vel(40.0 * (unit(rng) - 0.5), 40.0 * (unit(rng) - 0.5),
+                                    spec.flat(2) ? 0.0 : 40.0 * (unit(rng) - 0.5));
+                if (n % 10 == 0)
+                {
+                    vel.setZero();
+                }
+                // Droplet counts 1..3000 (n = 1 with 5 um droplets reaches no node: fallback).
+                const double count = n % 7 == 0 ? 1.0 : std::floor(std::exp(unit(rng) * std::log(3000.0)));
+                const double diameter = n % 7 == 0 ? 1e-5 : 1e-5 + 1e-4 * unit(rng);
+                const Parcel p = makeParcel(pos, vel, diameter, count);
+                // One parcel per step, so that the step accumulator holds this parcel only
+                // (differences of large sums would hide its round-off).
+                grid.deposit(p, dt);
+                const double given = stepMass(grid);
+                const double reported = grid.stepStatistics().massDeposited;
+                const double mass = massOf(count, diameter, 1000.0);
+                // What the nodes received is what the statistics report...
+                EXPECT_NEAR(given, reported, 1e-12 * mass) << "parcel " << n;
+                // ...and for a path that lies inside the box (start and end inside, box
+                // convex) it is the whole parcel mass.
+                if (spec.contains(p.position) && spec.contains(p.position - p.velocity * dt))
+                {
+                    ++fullyInside;
+                    EXPECT_NEAR(given, mass, 1e-12 * mass) << "parcel " << n;
+                }
+                for (std::size_t node = 0; node < spec.nodeCount(); ++node)
+                {
+                    for (int q : {quantityMass, quantityCount, quantityCountRadius, quantityMassRadius})
+                    {
+                        ASSERT_GE(grid.stepValues()[node * nQuantities + static_cast<std::size_t>(q)], 0.0);
+                    }
+                }
+                nodeMassTotal += given;
+                grid.commitStep();
+                s += grid.lastStepStatistics();
+            }
+            EXPECT_NEAR(s.massDeposited + s.massOutside, s.massIn, 1e-12 * s.massIn);
+            EXPECT_NEAR(nodeMassTotal, s.massDeposited, 1e-12 * s.massIn);
+            // All edge cases were exercised.
+            EXPECT_GT(fullyInside, 500);
+            EXPECT_GT(s.parcelsOutside, 10);
+            EXPECT_GT(s.parcelsPartlyOutside, 10);
+            EXPECT_GT(s.parcelsFallback, 10);
+            EXPECT_EQ(s.parcelsCapped > 0, cap > 0.0);
+        }
+    }
+}
+
+TEST(DensityGrid, ParcelCrossingTheBoundaryGivesItsTimeFraction)
+{
+    DensityGrid grid(grid2D());
+    // Path from x = -2 mm to x = +3 mm: 3/5 of the step inside the box.
+    const Parcel p = makeParcel(Eigen::Vector3d(3e-3, 5e-3, 5e-4), Eigen::Vector3d(50.0, 0.0, 0.0), 5e-5, 200.0);
+    grid.deposit(p, 1e-4);
+    const double mass = massOf(200.0, 5e-5, 1000.0);
+    EXPECT_NEAR(stepMass(grid), 0.6 * mass, 1e-12 * mass);
+    EXPECT_NEAR(grid.stepStatistics().massOutside, 0.4 * mass, 1e-12 * mass);
+    EXPECT_EQ(grid.stepStatistics().parcelsPartlyOutside, 1);
+}
+
+TEST(DensityGrid, ParcelOutsideGivesNothingEvenWhenItsKernelReachesNodes)
+{
+    DensityGrid grid(grid2D());
+    // 0.1 mm left of the box; reach r_max = 1 cm would cover many nodes.
+    grid.deposit(makeParcel(Eigen::Vector3d(-1e-4, 1e-2, 5e-4), Eigen::Vector3d::Zero(), 2e-5, 1000.0), 1e-4);
+    // Outside the slab of the 2D grid (z beyond the depth).
+    grid.deposit(makeParcel(Eigen::Vector3d(1e-2, 1e-2, 2e-3), Eigen::Vector3d::Zero(), 2e-5, 1000.0), 1e-4);
+    EXPECT_EQ(stepMass(grid), 0.0);
+    EXPECT_EQ(grid.stepStatistics().parcelsOutside, 2);
+    EXPECT_NEAR(grid.stepStatistics().massOutside, 2.0 * massOf(1000.0, 2e-5, 1000.0), 1e-25);
+    EXPECT_TRUE(grid.stepBox().empty());
+}
+
+TEST(DensityGrid, ParcelReachingNoNodeFallsBackToBilinearWeights)
+{
+    const GridSpec spec = grid2D(); // spacing 1 mm
+    DensityGrid grid(spec);
+    // n = 1, r = 1 um: reach 1 um, no node within reach. At (x, y) = (10.3, 7.6) mm.
+    const Eigen::Vector3d p(10.3e-3, 7.6e-3, 5e-4);
+    grid.deposit(makeParcel(p, Eigen::Vector3d::Zero(), 2e-6, 1.0), 1e-4);
+    EXPECT_EQ(grid.stepStatistics().parcelsFallback, 1);
+    const double mass = massOf(1.0, 2e-6, 1000.0);
+    const double fx = 0.3, fy = 0.6; // position within the cell (10..11, 7..8) mm
+    const std::vector<double>& v = grid.stepValues();
+    auto nodeMass = [&](int i, int j) { return v[spec.flatIndex(i, j, 0) * nQuantities + quantityMass]; };
+    EXPECT_NEAR(nodeMass(10, 7), mass * (1 - fx) * (1 - fy), 1e-9 * mass);
+    EXPECT_NEAR(nodeMass(11, 7), mass * fx * (1 - fy), 1e-9 * mass);
+    EXPECT_NEAR(nodeMass(10, 8), mass * (1 - fx) * fy, 1e-9 * mass);
+    EXPECT_NEAR(nodeMass(11, 8), mass * fx * fy, 1e-9 * mass);
+    EXPECT_NEAR(stepMass(grid), mass, 1e-14 * mass);
+
+    // A moving n = 1 parcel crossing several cells: mass conserved, spread along the path.
+    DensityGrid moving(spec);
+    moving.deposit(makeParcel(Eigen::Vector3d(15.2e-3, 7.6e-3, 5e-4), Eigen::Vector3d(50.0, 0.0, 0.0), 2e-6, 1.0), 1e-4);
+    EXPECT_EQ(moving.stepStatistics().parcelsFallback, 1);
+    EXPECT_NEAR(stepMass(moving), mass, 1e-14 * mass);
+    EXPECT_LE(moving.stepBox().lo[0], 10);
+    EXPECT_GE(moving.stepBox().hi[0], 15); // path from x = 10.2 to 15.2 mm
+}
+
+TEST(DensityGrid, StationaryParcelWeightsFollowPhi)
+{
+    // Zero velocity: omega_g = phi(|p - g|) (eq. 23 for L = 0), so node masses are
+    // proportional to eq. 12 with alpha of eq. 18 (written out here independently).
+    const GridSpec spec = grid2D();
+    DensityGrid grid(spec);
+    const double rp = 1e-5, n = 1000.0;
+    const Eigen::Vector3d p(12.25e-3, 9.5e-3, 5e-4);
+    grid.deposit(makeParcel(p, Eigen::Vector3d::Zero(), 2.0 * rp, n), 1e-4);
+    const double rMax = rp * n;
+    const double rMin = rp * std::sqrt(2.0 * std::sqrt(3.0) * n / pi);
+    const double alpha = rMax * rMax / (2.0 * std::pow(0.025 * rMax + 0.975 * rMin, 2));
+    auto phi = [&](double d) { return d < rMax ? std::exp(-alpha * d * d / (rMax * rMax)) - std::exp(-alpha) : 0.0; };
+    double phiSum = 0.0;
+    for (int j = 0; j < spec.nodes[1]; ++j)
+        for (int i = 0; i < spec.nodes[0]; ++i)
+            phiSum += phi((spec.nodePosition(i, j, 0) - p).head<2>().norm());
+    const double mass = massOf(n, 2.0 * rp, 1000.0);
+    for (int j = 0; j < spec.nodes[1]; ++j)
+        for (int i = 0; i < spec.nodes[0]; ++i)
+        {
+            const double expected = mass * phi((spec.nodePosition(i, j, 0) - p).head<2>().norm()) / phiSum;
+            EXPECT_NEAR(grid.stepValues()[spec.flatIndex(i, j, 0) * nQuantities + quantityMass], expected,
+                        1e-10 * expected + 1e-30 * mass)
+                << i << " " << j;
+        }
+}
+
+TEST(DensityGrid, MeanRadiiNumberAndMassWeighted)
+{
+    // Tiny kernels centred exactly on node (10, 5): all droplets land on that node, so its
+    // sums are the plain sums over the parcels.
+    const GridSpec spec = grid2D();
+    DensityGrid grid(spec);
+    const Eigen::Vector3d node = spec.nodePosition(10, 5, 0);
+    struct Drops { double n, r; Eigen::Vector3d u; };
+    const Drops drops[] = {{3.0, 2e-6, Eigen::Vector3d(1, 0, 0)}, {1.0, 5e-6, Eigen::Vector3d(0, 2, 0)},
+                           {2.0, 1e-6, Eigen::Vector3d(0, 0, 3)}};
+    double sn = 0, snr = 0, sm = 0, smr = 0;
+    Eigen::Vector3d smu = Eigen::Vector3d::Zero();
+    for (const Drops& d : drops)
+    {
+        // Stationary path (u = 0 during the step) but a droplet velocity: use dt = 0.
+        grid.deposit(makeParcel(node, d.u, 2.0 * d.r, d.n), 0.0);
+        const double m = massOf(d.n, 2.0 * d.r, 1000.0);
+        sn += d.n;
+        snr += d.n * d.r;
+        sm += m;
+        smr += m * d.r;
+        smu += m * d.u;
+    }
+    grid.commitStep();
+    const DropletFieldValue f = grid.nodeValue(10, 5, 0);
+    const double volume = 1e-3 * 1e-3 * 1e-3;
+    EXPECT_NEAR(f.rho, sm / volume, 1e-12 * sm / volume);
+    EXPECT_NEAR(f.numberDensity, sn / volume, 1e-12 * sn / volume);
+    EXPECT_NEAR(f.rMeanNumber, snr / sn, 1e-12 * snr / sn);  // eq. 10
+    EXPECT_NEAR(f.rMeanMass, smr / sm, 1e-12 * smr / sm);    // sum n m r / sum n m
+    EXPECT_LT((f.velocity - smu / sm).norm(), 1e-12);
+    EXPECT_GT(f.rMeanMass, f.rMeanNumber);                   // polydisperse: mass favours big drops
+    // The neighbours got nothing.
+    EXPECT_EQ(grid.nodeValue(11, 5, 0).rho, 0.0);
+    EXPECT_EQ(grid.nodeValue(11, 5, 0).rMeanNumber, 0.0);
+}
+
+TEST(DensityGrid, WindowAveragesTheLastWSteps)
+{
+    // W = 3. Step s puts mass M_s on node (4, 4) only (tiny stationary kernel on the node);
+    // rho there = mean of the M_s in the window / V, with s = min(committed, W) steps.
+    const GridSpec spec = grid2D();
+    DensityGrid grid(spec, KernelSettings{}, 3);
+    const Eigen::Vector3d node = spec.nodePosition(4, 4, 0);
+    const double counts[] = {1.0, 2.0, 4.0, 8.0, 16.0, 0.0, 0.0, 0.0};
+    const double volume = spec.nodeVolume();
+    std::vector<double> masses;
+    for (double c : counts)
+    {
+        if (c > 0.0)
+        {
+            grid.deposit(makeParcel(node, Eigen::Vector3d::Zero(), 2e-6, c), 1e-4);
+        }
+        grid.commitStep();
+        masses.push_back(massOf(c, 2e-6, 1000.0));
+        const std::size_t s = std::min<std::size_t>(masses.size(), 3);
+        double sum = 0.0;
+        for (std::size_t k = masses.size() - s; k < masses.size(); ++k)
+        {
+            sum += masses[k];
+        }
+        const double expected = sum / (volume * static_cast<double>(s));
+        EXPECT_NEAR(grid.nodeValue(4, 4, 0).rho, expected, 1e-12 * (expected + 1e-30)) << "step " << masses.size();
+        EXPECT_EQ(grid.stepsInWindow(), static_cast<int>(s));
+    }
+    // After three empty steps the window is exactly empty (no add/subtract residue).
+    EXPECT_EQ(grid.nodeValue(4, 4, 0).rho, 0.0);
+    EXPECT_EQ(grid.windowMassPerStep(), 0.0);
+}
+
+TEST(DensityGrid, CostScalesWithReachNotGridSize)
+{
+    // The same parcel, at the same place relative to the lower corner, on grids of
+    // 41^2, 401^2 and 1001^2 nodes with the same spacing (0.5 mm).
+    const double h = 5e-4;
+    const Eigen::Vector3d end(7.3e-3, 8.1e-3, 5e-4);
+    const Eigen::Vector3d velocity(12.0, -7.0, 0.0);
+    const double dt = 1e-4, rp = 1e-5, n = 150.0; // reach r_max = 1.5 mm = 3 spacings
+    const double reach = rp * n;
+    std::vector<std::int64_t> visited, weighted;
+    for (int nodes : {41, 401, 1001})
+    {
+        GridSpec spec;
+        spec.lower = Eigen::Vector3d(0.0, 0.0, 0.0);
+        spec.upper = Eigen::Vector3d((nodes - 1) * h, (nodes - 1) * h, 1e-3);
+        spec.nodes = {{nodes, nodes, 1}};
+        DensityGrid grid(spec);
+        grid.deposit(makeParcel(end, velocity, 2.0 * rp, n), dt);
+        visited.push_back(grid.stepStatistics().nodesVisited);
+        weighted.push_back(grid.stepStatistics().nodesWeighted);
+        if (nodes == 41)
+        {
+            // Nodes within reach of the path, counted by brute force over the whole grid.
+            const Eigen::Vector3d a = end - velocity * dt;
+            std::int64_t within = 0;
+            for (int j = 0; j < nodes; ++j)
+                for (int i = 0; i < nodes; ++i)
+                {
+                    Eigen::Vector3d g = spec.nodePosition(i, j, 0);
+                    g.z() = end.z();
+                    within += segmentDistanceSquared(g, a, end) < reach * reach ? 1 : 0;
+                }
+            EXPECT_EQ(grid.stepStatistics().nodesWeighted, within);
+            // Visited = the nodes of the capsule's bounding box, no more.
+            std::int64_t box = 1;
+            for (int d = 0; d < 2; ++d)
+            {
+                const double lo = std::min(a[d], end[d]) - reach, hi = std::max(a[d], end[d]) + reach;
+                box *= static_cast<std::int64_t>(std::floor(hi / h) - std::ceil(lo / h) + 1);
+            }
+            EXPECT_EQ(grid.stepStatistics().nodesVisited, box);
+            EXPECT_LT(box, 100);
+        }
+    }
+    EXPECT_EQ(visited[0], visited[1]);
+    EXPECT_EQ(visited[0], visited[2]);
+    EXPECT_EQ(weighted[0], weighted[2]);
+}
+
+TEST(DensityGrid, RestartReproducesContinuousRunBitForBit)
+{
+    const GridSpec spec = grid2D();
+    auto parcelsOfStep = [&](int step)
+    {
+        std::mt19937_64 rng(static_cast<std::uint64_t>(100 + step));
+        std::uniform_real_distribution<double> unit(0.0, 1.0);
+        std::vector<Parcel> parcels;
+        for (int n = 0; n < 200; ++n)
+        {
+            parcels.push_back(makeParcel(Eigen::Vector3d(0.03 * unit(rng), 0.02 * unit(rng), 5e-4),
+                                         Eigen::Vector3d(10.0 * unit(rng), -10.0 * unit(rng), 0.0),
+                                         1e-5 + 5e-5 * unit(rng), 1.0 + 500.0 * unit(rng)));
+        }
+        return parcels;
+    };
+    auto runStep = [&](DensityGrid& grid, int step)
+    {
+        for (const Parcel& p : parcelsOfStep(step))
+        {
+            grid.deposit(p, 1e-4);
+        }
+        grid.commitStep();
+    };
+    DensityGrid continuous(spec, KernelSettings{}, 4);
+    DensityGrid continuousShort(spec, KernelSettings{}, 2);
+    DensityGrid first(spec, KernelSettings{}, 4);
+    for (int step = 0; step < 6; ++step)
+    {
+        runStep(continuous, step);
+        runStep(continuousShort, step);
+        runStep(first, step);
+    }
+    const WindowState state = first.saveWindow();
+    DensityGrid restored(spec, KernelSettings{}, 4);
+    restored.restoreWindow(state);
+    DensityGrid restoredShort(spec, KernelSettings{}, 2); // window length changed on restart
+    restoredShort.restoreWindow(state);
+    EXPECT_EQ(restored.committedSteps(), 6);
+    for (int step = 6; step < 11; ++step)
+    {
+        ASSERT_TRUE(restored.windowTotals() == continuous.windowTotals()) << "step " << step;
+        ASSERT_TRUE(restoredShort.windowTotals() == continuousShort.windowTotals()) << "step " << step;
+        runStep(continuous, step);
+        runStep(continuousShort, step);
+        runStep(restored, step);
+        runStep(restoredShort, step);
+    }
+    EXPECT_TRUE(restored.windowTotals() == continuous.windowTotals());
+    const Eigen::Vector3d point(0.0123, 0.0077, 0.0);
+    EXPECT_EQ(restored.sample(point).rho, continuous.sample(point).rho);
+    EXPECT_EQ(restored.sample(point).rMeanMass, continuous.sample(point).rMeanMass);
+
+    // A state for another grid is refused with a message.
+    DensityGrid other(grid2D(32, 21));
+    EXPECT_THROW(other.restoreWindow(state), std::invalid_argument);
+}
+
+TEST(DensityGrid, SumOverRanksEqualsSerial)
+{
+    // Two "ranks" deposit half of the parcels each; the caller sums the step accumulators
+    // over the union of the touched boxes (as MPI_Allreduce would) and commits on both.
+    const GridSpec spec = grid2D();
+    DensityGrid serial(spec), rank0(spec), rank1(spec);
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int n = 0; n < 400; ++n)
+    {
+        const Parcel p = makeParcel(Eigen::Vector3d(0.01 + 0.01 * unit(rng), 0.005 + 0.01 * unit(rng), 5e-4),
+                                    Eigen::Vector3d(5.0 * unit(rng), 5.0 * unit(rng), 0.0), 3e-5, 100.0);
+        serial.deposit(p, 1e-4);
+        (n % 2 == 0 ? rank0 : rank1).deposit(p, 1e-4);
+    }
+    const IndexBox box = rank0.stepBox().united(rank1.stepBox());
+    std::vector<double> a = rank0.packStep(box);
+    const std::vector<double> b = rank1.packStep(box);
+    for (std::size_t k = 0; k < a.size(); ++k)
+    {
+        a[k] += b[k];
+    }
+    rank0.unpackStep(box, a);
+    rank1.unpackStep(box, a);
+    serial.commitStep();
+    rank0.commitStep();
+    rank1.commitStep();
+    EXPECT_TRUE(rank0.windowTotals() == rank1.windowTotals());
+    for (std::size_t k = 0; k < serial.windowTotals().size(); ++k)
+    {
+        EXPECT_NEAR(rank0.windowTotals()[k], serial.windowTotals()[k], 1e-13 * std::abs(serial.windowTotals()[k]));
+    }
+}
+
+TEST(DensityGrid, KernelDimensionFollowsGridUnlessSet)
+{
+    EXPECT_EQ(DensityGrid(grid2D()).kernelDimension(), 2);
+    EXPECT_EQ(DensityGrid(grid3D()).kernelDimension(), 3);
+    KernelSettings s;
+    s.dimension = KernelDimension::TwoD;
+    EXPECT_EQ(DensityGrid(grid3D(), s).kernelDimension(), 2);
+}
+
+TEST(DensityGrid, RejectsInvalidInput)
+{
+    DensityGrid grid(grid2D());
+    const Eigen::Vector3d p(0.01, 0.01, 5e-4);
+    EXPECT_THROW(grid.deposit(makeParcel(p, Eigen::Vector3d::Zero(), -1e-5, 10.0), 1e-4), std::invalid_argument);
+    EXPECT_THROW(grid.deposit(makeParcel(Eigen::Vector3d(NAN, 0, 0), Eigen::Vector3d::Zero(), 1e-5, 10.0), 1e-4),
+                 std::invalid_argument);
+    EXPECT_THROW(grid.deposit(makeParcel(p, Eigen::Vector3d::Zero(), 1e-5, -1.0), 1e-4), std::invalid_argument);
+    EXPECT_THROW(grid.deposit(makeParcel(p, Eigen::Vector3d::Zero(), 1e-5, 1.0), -1e-4), std::invalid_argument);
+    grid.deposit(makeParcel(p, Eigen::Vector3d::Zero(), 1e-5, 0.0), 1e-4); // empty parcel: skipped
+    EXPECT_EQ(grid.stepStatistics().parcelsEmpty, 1);
+    GridSpec bad = grid2D();
+    bad.nodes = {{0, 10, 1}};
+    EXPECT_THROW(DensityGrid{bad}, std::invalid_argument);
+    bad = grid2D();
+    bad.nodes = {{1, 1, 1}};
+    EXPECT_THROW(DensityGrid{bad}, std::invalid_argument);
+    EXPECT_THROW(DensityGrid(grid2D(), KernelSettings{}, 0), std::invalid_argument);
+}
