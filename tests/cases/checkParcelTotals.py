@@ -3,7 +3,7 @@
 Usage: checkParcelTotals.py CLOUD CASE
 
 1. Every step: parcels and droplet mass in our table equal OpenFOAM's own
-   cloudInfo (kinematicCloud::nParcels, massInSystem), one row later (see below).
+   cloudInfo (kinematicCloud::nParcels, massInSystem) at the same time.
 2. Every write time: they equal the totals computed here from the cloud files
    OpenFOAM wrote (d, nParticle, rho; all processor folders).
 Prints `N passed, N failed` and exits non-zero on a failure.
@@ -34,16 +34,16 @@ def close(a, b, rel=1e-10):
 
 
 check(len(ours) > 10, "table has %d rows" % len(ours))
-# OpenFOAM runs every function object's execute() before any write(), and
-# cloudInfo reports in write(): it sees the parcels after icoUncoupledKinematicCloud
-# has moved them on, i.e. the state that is written and that we see at the next
-# time. So our row i+1 is compared with cloudInfo's row i.
+# cloudInfo is listed with ours before the cloud's function object, so both see
+# the same parcels at every step (OpenFOAM runs each function object's execute()
+# and write() in list order).
 check(len(ours) == len(info), "rows: ours %d, cloudInfo %d" % (len(ours), len(info)))
-for row, ref in zip(ours[1:], info[:-1]):
+for row, ref in zip(ours, info):
+    check(abs(row["Time"] - ref["Time"]) < 1e-9, "times %g, %g" % (row["Time"], ref["Time"]))
     check(row["parcels"] == ref["nParcels"],
           "t=%g parcels %d vs cloudInfo %d" % (row["Time"], row["parcels"], ref["nParcels"]))
-    check(close(row["dropletMass[kg]"], ref["mass"]),
-          "t=%g mass %.12g vs cloudInfo %.12g" % (row["Time"], row["dropletMass[kg]"], ref["mass"]))
+    check(close(row["parcelMass"], ref["mass"]),
+          "t=%g mass %.12g vs cloudInfo %.12g" % (row["Time"], row["parcelMass"], ref["mass"]))
 
 ours_by_time = {round(r["Time"], 9): r for r in ours}
 root = os.path.join(case, "processor0") if os.path.isdir(os.path.join(case, "processor0")) else case
@@ -58,8 +58,8 @@ for t in times:
         continue
     check(parcels == row["parcels"], "t=%s parcels %d vs written %d" % (t, row["parcels"], parcels))
     check(close(droplets, row["droplets"]), "t=%s droplets %g vs written %g" % (t, row["droplets"], droplets))
-    check(close(mass, row["dropletMass[kg]"], 1e-9),
-          "t=%s mass %.12g vs written %.12g" % (t, row["dropletMass[kg]"], mass))
+    check(close(mass, row["parcelMass"], 1e-9),
+          "t=%s mass %.12g vs written %.12g" % (t, row["parcelMass"], mass))
     print("t=%s: %d parcels, %.6g droplets, %.6g kg (ours and OpenFOAM's)" % (t, parcels, droplets, mass))
 
 print("%d passed, %d failed" % (passed, failed))

@@ -56,6 +56,7 @@ PathWeight::PathWeight(const ParcelKernel& kernel, const Eigen::Vector3d& start,
 {
     reachSquared_ = kernel.reach() * kernel.reach();
     sqrtGamma_ = std::sqrt(kernel.gamma());
+    inverseSqrtGamma_ = 1.0 / sqrtGamma_;
     length_ = displacement.norm();
     stationary_ = !(length_ > stationaryFraction * kernel.reach());
     if (!stationary_)
@@ -76,34 +77,35 @@ double PathWeight::integralAlongPath(double lambdaM, double d0Squared) const
     const double toEnd = length_ - lambdaM;
     const bool startWithin = lambdaM * lambdaM < halfChordSquared;
     const bool endWithin = toEnd * toEnd < halfChordSquared;
-    double u1 = -lambdaM; // interval [u1, u2] in lambda - lambdaM
-    double u2 = toEnd;
+    // Integration interval [lambda1, lambda2]; an end that is not an end of the path lies
+    // on the reach circle (clipped), where the Gaussian is exactly exp(-a).
+    double lambda1 = 0.0;
+    double lambda2 = length_;
+    bool clipped1 = false;
+    bool clipped2 = false;
     double halfChord = 0.0;
     if (!startWithin || !endWithin)
     {
         halfChord = std::sqrt(halfChordSquared);
-        if (!startWithin)
+        if (!startWithin && lambdaM - halfChord > 0.0)
         {
-            if (lambdaM + halfChord <= 0.0)
-            {
-                return 0.0; // the chord ends before the path starts
-            }
-            u1 = std::max(-halfChord, -lambdaM);
+            lambda1 = lambdaM - halfChord;
+            clipped1 = true;
         }
-        if (!endWithin)
+        if (!endWithin && lambdaM + halfChord < length_)
         {
-            if (lambdaM - halfChord >= length_)
-            {
-                return 0.0; // the chord starts after the path ends
-            }
-            u2 = std::min(halfChord, toEnd);
+            lambda2 = lambdaM + halfChord;
+            clipped2 = true;
         }
-        if (!(u2 > u1))
+        if (!(lambda2 > lambda1))
         {
-            return 0.0;
+            return 0.0; // the chord misses the path
         }
     }
-    const double width = u2 - u1;
+    // Width from the lambdas (exact for an unclipped path; u2 - u1 would cancel for L -> 0).
+    const double width = lambda2 - lambda1;
+    const double u1 = clipped1 ? -halfChord : -lambdaM;
+    const double u2 = clipped2 ? halfChord : toEnd;
 
     // Largest q = gamma (h^2 - u^2) on the interval; phi = exp(-a) expm1(q).
     const double uNearest = (u1 <= 0.0 && u2 >= 0.0) ? 0.0 : std::min(std::abs(u1), std::abs(u2));
@@ -132,14 +134,14 @@ double PathWeight::integralAlongPath(double lambdaM, double d0Squared) const
 
     // From here on qMax >= 0.25: the mean of expm1(q) is at least qMax / 2 (q is concave),
     // so subtracting the constant term loses at most one digit.
-    const double xCentre = sqrtGamma_ * 0.5 * (u1 + u2);
+    const double xCentre = sqrtGamma_ * (0.5 * (lambda1 + lambda2) - lambdaM);
     const double xHalf = sqrtGamma_ * 0.5 * width;
     if (xHalf * (1.0 + std::abs(xCentre)) <= 0.5)
     {
         // Regime B: short interval in x (includes L -> 0): Taylor series about the middle,
         // one exponential, no erf difference that would cancel.
         const double gaussian
-            = std::exp(-(gamma * d0Squared + xCentre * xCentre)) * gaussianTaylorSum(xCentre, xHalf) / sqrtGamma_;
+            = std::exp(-(gamma * d0Squared + xCentre * xCentre)) * gaussianTaylorSum(xCentre, xHalf) * inverseSqrtGamma_;
         return gaussian - edgeValue * width;
     }
 
@@ -152,23 +154,30 @@ double PathWeight::integralAlongPath(double lambdaM, double d0Squared) const
     // Outside regime B the two terms differ by a factor >~ 1.5 (no cancellation).
     const double x1 = sqrtGamma_ * u1;
     const double x2 = sqrtGamma_ * u2;
-    const double g1 = (u1 == -halfChord) ? edgeValue : std::exp(-gamma * (d0Squared + u1 * u1));
-    const double g2 = (u2 == halfChord) ? edgeValue : std::exp(-gamma * (d0Squared + u2 * u2));
+    const double g1 = clipped1 ? edgeValue : std::exp(-gamma * (d0Squared + u1 * u1));
+    const double g2 = clipped2 ? edgeValue : std::exp(-gamma * (d0Squared + u2 * u2));
     double gaussian;
-    if (x1 >= 0.0)
+    if (x1 >= 0.0 || x2 <= 0.0)
     {
-        gaussian = halfSqrtPi * (g1 * erfcScaled(x1) - g2 * erfcScaled(x2));
-    }
-    else if (x2 <= 0.0)
-    {
-        gaussian = halfSqrtPi * (g2 * erfcScaled(-x2) - g1 * erfcScaled(-x1));
+        // Both ends on one side of the closest point: the nearer end minus the farther one.
+        const bool after = x1 >= 0.0;
+        const Fraction nearEnd = erfcScaledFraction(after ? x1 : -x2);
+        const Fraction farEnd = erfcScaledFraction(after ? x2 : -x1);
+        const double gNear = after ? g1 : g2;
+        const double gFar = after ? g2 : g1;
+        gaussian = halfSqrtPi
+            * (gNear * nearEnd.numerator * farEnd.denominator - gFar * farEnd.numerator * nearEnd.denominator)
+            / (nearEnd.denominator * farEnd.denominator);
     }
     else
     {
+        const Fraction start = erfcScaledFraction(-x1);
+        const Fraction end = erfcScaledFraction(x2);
         gaussian = 2.0 * halfSqrtPi * std::exp(-gamma * d0Squared)
-            - halfSqrtPi * (g1 * erfcScaled(-x1) + g2 * erfcScaled(x2));
+            - halfSqrtPi * (g1 * start.numerator * end.denominator + g2 * end.numerator * start.denominator)
+                / (start.denominator * end.denominator);
     }
-    return gaussian / sqrtGamma_ - edgeValue * width;
+    return gaussian * inverseSqrtGamma_ - edgeValue * width;
 }
 
 } // namespace dropletFiber

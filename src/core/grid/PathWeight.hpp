@@ -74,6 +74,7 @@ private:
     double inverseLength_ = 0.0;
     double reachSquared_ = 0.0;
     double sqrtGamma_ = 0.0;
+    double inverseSqrtGamma_ = 0.0;
     bool stationary_ = true;
 };
 

@@ -16,7 +16,15 @@
 namespace dropletFiber
 {
 
-inline double erfcScaled(double x)
+// erfcScaled(x) as numerator / denominator, so that a caller combining two of them
+// needs one division instead of two (division latency dominates the path weight).
+struct Fraction
+{
+    double numerator;
+    double denominator;
+};
+
+inline Fraction erfcScaledFraction(double x)
 {
     constexpr double inverseSqrtPi = 0.56418958354775628695;
     if (x <= 0.46875)
@@ -27,7 +35,7 @@ inline double erfcScaled(double x)
                           + 377.485237685302021) * z + 3209.37758913846947;
         const double q = (((z + 23.6012909523441209) * z + 244.024637934444173) * z + 1282.61652607737228) * z
             + 2844.23683343917062;
-        return std::exp(z) * (1.0 - x * p / q);
+        return {std::exp(z) * (q - x * p), q};
     }
     if (x <= 4.0)
     {
@@ -37,7 +45,7 @@ inline double erfcScaled(double x)
         const double q = (((((((x + 15.7449261107098347) * x + 117.693950891312499) * x + 537.181101862009858) * x
                              + 1621.38957456669019) * x + 3290.79923573345963) * x + 4362.61909014324716) * x
                           + 3439.36767414372164) * x + 1230.33935480374942;
-        return p / q;
+        return {p, q};
     }
     // x > 4: erfc(x) exp(x^2) = (1/sqrt(pi) - z R(z)) / x, z = 1/x^2.
     const double z = 1.0 / (x * x);
@@ -45,7 +53,13 @@ inline double erfcScaled(double x)
                        + 0.125781726111229246) * z + 0.0160837851487422766) * z + 6.58749161529837803e-4;
     const double q = ((((z + 2.56852019228982242) * z + 1.87295284992346047) * z + 0.527905102951428412) * z
                       + 0.0605183413124413191) * z + 0.00233520497626869185;
-    return (inverseSqrtPi - z * p / q) / x;
+    return {inverseSqrtPi * q - z * p, q * x};
+}
+
+inline double erfcScaled(double x)
+{
+    const Fraction f = erfcScaledFraction(x);
+    return f.numerator / f.denominator;
 }
 
 } // namespace dropletFiber

@@ -524,9 +524,12 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
     clockValue depositionStart(true);
     gatherParcels();
     const label nParcels = returnReduce(parcels_.size(), sumOp<label>());
+    const scalar nDroplets = returnReduce(parcels_.nDroplets(), sumOp<scalar>());
+    const scalar parcelMass = returnReduce(parcels_.totalMass(), sumOp<scalar>());
 
     // 2. Onto the grid; summed across processors; averaged over the window
     const Pair<scalar> deposit = depositParcels(dt);
+    totals_.parcelMass += parcelMass;
     totals_.deposited += deposit.first();
     totals_.outside += deposit.second();
     const scalar depositionTime = depositionStart.elapsed();
@@ -578,6 +581,8 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
         writeCurrentTime(os);
         os  << tab << label(fibers_.size())
             << tab << nParcels
+            << tab << nDroplets
+            << tab << parcelMass
             << tab << deposit.first()
             << tab << deposit.second()
             << tab << capturedStep
@@ -596,10 +601,12 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
             totals_.fiberMassAdded + totals_.captured
           - totals_.fiberMassRemoved - fiberMass();
         Info<< type() << " " << name() << " conservation at time "
-            << time_.timeName() << ":" << nl
-            << "    droplet mass deposited " << totals_.deposited
-            << " kg = on grid + outside it: outside " << totals_.outside
-            << " kg" << nl
+            << time_.timeName() << ", summed over all steps so far:" << nl
+            << "    parcel mass " << totals_.parcelMass << " kg = on grid "
+            << totals_.deposited << " + outside it " << totals_.outside
+            << " (balance "
+            << totals_.parcelMass - totals_.deposited - totals_.outside
+            << " kg)" << nl
             << "    fiber mass " << fiberMass() << " kg = added "
             << totals_.fiberMassAdded << " + captured " << totals_.captured
             << " - removed " << totals_.fiberMassRemoved

@@ -29,7 +29,7 @@ void Foam::functionObjects::dropletFiberCollision::writeFileHeader
     (
         const char* column :
         {
-            "fibers", "parcels", "massOnGrid", "massOutsideGrid",
+            "fibers", "parcels", "droplets", "parcelMass", "massOnGrid", "massOutsideGrid",
             "capturedStep", "capturedTotal", "fiberMass",
             "maxSegmentLengthError", "wallTimeDeposition", "wallTimeFibers"
         }
@@ -80,6 +80,7 @@ void Foam::functionObjects::dropletFiberCollision::writeState() const
     state.add("injectors", injectors);
 
     dictionary totals;
+    totals.add("parcelMass", totals_.parcelMass);
     totals.add("deposited", totals_.deposited);
     totals.add("outside", totals_.outside);
     totals.add("captured", totals_.captured);
@@ -153,6 +154,7 @@ bool Foam::functionObjects::dropletFiberCollision::readState()
     }
 
     const dictionary& totals = state.subDict("totals");
+    totals_.parcelMass = totals.get<scalar>("parcelMass");
     totals_.deposited = totals.get<scalar>("deposited");
     totals_.outside = totals.get<scalar>("outside");
     totals_.captured = totals.get<scalar>("captured");
