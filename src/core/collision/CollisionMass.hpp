@@ -23,6 +23,7 @@
 #include "grid/DensityGrid.hpp"
 
 #include <Eigen/Core>
+#include <Eigen/Geometry> // cross products (eq. 9)
 
 namespace dropletFiber
 {

@@ -1,0 +1,112 @@
+"""Plot the channel-spray tutorial: captured binder mass over time, the fibers in
+the spray at the end (coloured by sigma, mass per length, over the droplet mass
+density of the grid), and sigma along every fiber.
+
+Usage: /usr/bin/python3 plot.py [CASE_DIR] [OUTPUT_PNG]
+Reads postProcessing/dropletFiber/0/{dropletFiber.dat, the last fibers_*.vtp and
+grid_*.vti} (plain XML, read with the standard library).
+"""
+import json
+import math
+import os
+import sys
+import xml.etree.ElementTree as ET
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.collections import LineCollection  # noqa: E402
+
+case = sys.argv[1] if len(sys.argv) > 1 else "."
+png = sys.argv[2] if len(sys.argv) > 2 else os.path.join(case, "channelSpray.png")
+out = os.path.join(case, "postProcessing", "dropletFiber", "0")
+
+
+def table(path):
+    names, rows = None, []
+    for line in open(path):
+        if line.startswith("#"):
+            names = [c.strip() for c in line[1:].split("\t") if c.strip()]
+        elif line.strip():
+            rows.append(dict(zip(names, map(float, line.split()))))
+    return rows
+
+
+def last_file(series):
+    return os.path.join(out, json.load(open(os.path.join(out, series)))["files"][-1]["name"])
+
+
+def data_arrays(block):
+    return {da.get("Name"): [float(v) for v in da.text.split()] for da in block}
+
+
+rows = table(os.path.join(out, "dropletFiber.dat"))
+t = [r["Time"] for r in rows]
+
+# fibers at the end
+piece = ET.parse(last_file("fibers.vtp.series")).getroot().find("PolyData/Piece")
+p = [float(v) for v in piece.find("Points/DataArray").text.split()]
+points = [(p[3 * i], p[3 * i + 1]) for i in range(len(p) // 3)]
+point_data = data_arrays(piece.find("PointData"))
+sigma, fiber_id = point_data["sigma"], point_data["fiberId"]
+
+# grid at the end
+image = ET.parse(last_file("grid.vti.series")).getroot().find("ImageData")
+ext = [int(v) for v in image.get("WholeExtent").split()]
+origin = [float(v) for v in image.get("Origin").split()]
+spacing = [float(v) for v in image.get("Spacing").split()]
+nx, ny = ext[1] + 1, ext[3] + 1
+rho = data_arrays(image.find("Piece/PointData"))["rho"]
+rho_map = [[rho[i + nx * j] for i in range(nx)] for j in range(ny)]
+
+fig, axes = plt.subplots(1, 3, figsize=(16, 6), gridspec_kw={"width_ratios": [1.2, 1.0, 1.2]})
+
+ax = axes[0]
+ax.plot(t, [1e9 * r["capturedTotal"] for r in rows], label="captured binder, total")
+ax.set_xlabel("time [s]")
+ax.set_ylabel("captured binder mass [µg]")
+ax2 = ax.twinx()
+ax2.plot(t, [r["fibers"] for r in rows], color="grey", lw=0.8, label="fibers in the channel")
+ax2.set_ylabel("fibers in the channel", color="grey")
+ax.set_title("Binder captured by the fibers")
+ax.legend(loc="upper left")
+
+ax = axes[1]
+extent = [origin[0] * 100, (origin[0] + spacing[0] * (nx - 1)) * 100,
+          origin[1] * 100, (origin[1] + spacing[1] * (ny - 1)) * 100]
+im = ax.imshow(rho_map, origin="lower", extent=extent, cmap="Blues", aspect="equal")
+fig.colorbar(im, ax=ax, orientation="horizontal", fraction=0.05, pad=0.1,
+             label="droplet mass density [kg/m³]")
+segments, colours = [], []
+for i in range(len(points) - 1):
+    if fiber_id[i] == fiber_id[i + 1]:
+        a, b = points[i], points[i + 1]
+        segments.append([(100 * a[0], 100 * a[1]), (100 * b[0], 100 * b[1])])
+        colours.append(1e6 * 0.5 * (sigma[i] + sigma[i + 1]))
+lines = LineCollection(segments, array=colours, cmap="autumn_r", linewidths=2.5)
+ax.add_collection(lines)
+fig.colorbar(lines, ax=ax, fraction=0.1, pad=0.03, label="σ, fiber mass per length [mg/m]")
+ax.set_xlabel("x [cm]")
+ax.set_ylabel("y [cm]")
+ax.set_title("Spray and fibers at t = %.2f s" % t[-1])
+
+ax = axes[2]
+base = None
+for f in sorted(set(fiber_id)):
+    idx = [i for i, v in enumerate(fiber_id) if v == f]
+    s, arc = [0.0], [sigma[idx[0]]]
+    for k in range(1, len(idx)):
+        s.append(s[-1] + math.dist(points[idx[k - 1]], points[idx[k]]))
+        arc.append(sigma[idx[k]])
+    ax.plot([1000 * v for v in s], [1e6 * v for v in arc], lw=1)
+# bare glass fiber: rho_F pi r_F^2 (2500 kg/m3, r_F = 3 um)
+ax.axhline(1e6 * 2500 * math.pi * 3e-6 ** 2, color="k", ls="--", lw=0.8, label="bare glass fiber")
+ax.set_xlabel("arc length along the fiber [mm]")
+ax.set_ylabel("σ [mg/m]")
+ax.set_title("σ along each fiber at t = %.2f s" % t[-1])
+ax.legend()
+
+fig.tight_layout()
+fig.savefig(png, dpi=110)
+print("wrote", png)

@@ -1,0 +1,45 @@
+"""Summary of the channel-spray tutorial, printed at the end of Allrun.
+
+Usage: python3 summary.py [CASE_DIR] [LOG]
+Fibers, captured binder mass, and the conservation checks: captured binder at
+most the binder sprayed (mass introduced by the cloud's injectors), parcel mass =
+on the grid + outside it, and fiber mass = added + captured - removed. Exits
+non-zero when a check fails.
+"""
+import os
+import re
+import sys
+
+case = sys.argv[1] if len(sys.argv) > 1 else "."
+log = sys.argv[2] if len(sys.argv) > 2 else os.path.join(case, "log.pimpleFoam")
+rows = []
+names = None
+for line in open(os.path.join(case, "postProcessing/dropletFiber/0/dropletFiber.dat")):
+    if line.startswith("#"):
+        names = [c.strip() for c in line[1:].split("\t") if c.strip()]
+    elif line.strip():
+        rows.append(dict(zip(names, map(float, line.split()))))
+last = rows[-1]
+text = open(log).read()
+# last report of the cloud: mass introduced by every injector
+report = text[text.rfind("Cloud: kinematicCloud\n"):]
+sprayed = sum(float(m) for m in re.findall(r"mass introduced\s*=\s*(\S+)", report))
+balances = re.findall(r"\(balance (\S+) kg\)", text)[-2:]
+
+ok = True
+print("channelSpray summary at t = %g s" % last["Time"])
+print("  fibers in the channel        %d" % last["fibers"])
+print("  parcels in the channel       %d" % last["parcels"])
+print("  binder sprayed               %.4g kg" % sprayed)
+print("  binder captured by fibers    %.4g kg (%.3g %% of the sprayed binder)"
+      % (last["capturedTotal"], 100 * last["capturedTotal"] / sprayed))
+print("  fiber mass now               %.4g kg" % last["fiberMass"])
+if not last["capturedTotal"] <= sprayed:
+    ok = False
+    print("  FAILED: captured more binder than sprayed")
+for what, value in zip(("parcel mass = grid + outside", "fiber mass = added + captured - removed"), balances):
+    scale = max(last["capturedTotal"], 1e-30)
+    good = abs(float(value)) <= 1e-9 * max(scale, sprayed)
+    ok = ok and good
+    print("  conservation: %-40s balance %s kg %s" % (what, value, "ok" if good else "FAILED"))
+sys.exit(0 if ok else 1)
