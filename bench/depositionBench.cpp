@@ -10,6 +10,8 @@
 //   --budget    skip a configuration whose estimated time (all repeats) exceeds this
 //               (default 40 s); skipped rows are printed as such
 //   --repeats   timing repeats per configuration (default 3; best is reported)
+//   --only DIM REACH PARCELS   one deposition configuration only, no elementary costs
+//               (for profilers: perf record / valgrind --tool=callgrind)
 //
 // Workload (deterministic, seed fixed): grid box 5 x 7 cm (2D: 101 x 141 nodes, h = 0.5 mm,
 // 1 cm thick; 3D: 101 x 141 x 101 nodes, 5 cm deep). Parcels of droplets r_p = 10 um,
@@ -302,8 +304,17 @@ int main(int argc, char** argv)
     bool quick = false;
     double budget = 40.0;
     int repeats = 3;
+    int onlyDimension = 0;
+    double onlyReach = 0.0, onlyCount = 0.0;
     for (int a = 1; a < argc; ++a)
     {
+        if (!std::strcmp(argv[a], "--only") && a + 3 < argc)
+        {
+            onlyDimension = std::atoi(argv[++a]);
+            onlyReach = std::atof(argv[++a]);
+            onlyCount = std::atof(argv[++a]);
+            continue;
+        }
         if (!std::strcmp(argv[a], "--quick"))
         {
             quick = true;
@@ -323,6 +334,23 @@ int main(int argc, char** argv)
         }
     }
 
+    if (onlyDimension != 0)
+    {
+        const GridSpec spec = makeSpec(onlyDimension);
+        DensityGrid grid(spec, KernelSettings{}, 1);
+        const std::size_t count = static_cast<std::size_t>(onlyCount);
+        const std::vector<Parcel> pool
+            = makeParcels(spec, onlyDimension, onlyReach, std::min<std::size_t>(count, 1000000), 99);
+        const DepositionResult r = runDeposition(grid, pool, count, repeats);
+        printHeader();
+        const double ns = r.depositSeconds / onlyCount * 1e9;
+        std::printf("%3d %5.0f %6s %8s | %8.1f %8.1f %5.1f%% | %10.3f %9.1f %9.2f %8.2f %8.2f | %8s %5.1f%% %5d\n",
+                    onlyDimension, onlyReach, "random", bench::formatCount(onlyCount).c_str(), r.visitedPerParcel,
+                    r.weightedPerParcel, 100.0 * r.fallbackFraction, onlyCount / r.depositSeconds / 1e6, ns,
+                    1e3 * r.commitSeconds, ns / r.visitedPerParcel, ns / r.weightedPerParcel, "-", r.spreadPercent,
+                    r.repeats);
+        return 0;
+    }
     std::printf("== depositionBench ==\n\n");
     std::printf("-- elementary costs on this machine (ns per call; throughput = independent calls,\n"
                 "   latency = dependent chain; best of 5) --\n");

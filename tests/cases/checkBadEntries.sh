@@ -2,16 +2,8 @@
 # Each bad dictionary entry stops the run with a FatalIOError that names the
 # entry. Usage: checkBadEntries.sh CASE_DIR WORK_DIR (runs a copy)
 set -uo pipefail
-caseDir="$1"; work="$2"
-here="$(cd "${0%/*}" && pwd)"
-. "$here/../../bin/functions.sh"
-loadFoamEnvironment
-rm -rf "$work"; mkdir -p "$(dirname "$work")"; cp -r "$caseDir" "$work"
-cd "$work" || exit 1
-set +u  # RunFunctions is not written for set -u
-. "$WM_PROJECT_DIR/bin/tools/RunFunctions"
-restore0Dir > /dev/null
-blockMesh > log.blockMesh 2>&1 || { echo "FAILED: blockMesh"; exit 1; }
+. "$(cd "${0%/*}" && pwd)/lib/prepareCase.sh"
+prepareCaseCopy "$1" "$2"
 cp system/controlDict system/controlDict.good
 passed=0; failed=0
 fo=functions/dropletFiber

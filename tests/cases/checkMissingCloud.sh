@@ -3,16 +3,8 @@
 # exit, FatalIOError) with a message naming the cloud and listing the clouds
 # that exist. Usage: checkMissingCloud.sh CASE_DIR WORK_DIR
 set -uo pipefail
-caseDir="$1"; work="$2"
-here="$(cd "${0%/*}" && pwd)"
-. "$here/../../bin/functions.sh"
-loadFoamEnvironment
-rm -rf "$work"; mkdir -p "$(dirname "$work")"; cp -r "$caseDir" "$work"
-cd "$work" || exit 1
-set +u  # RunFunctions is not written for set -u
-. "$WM_PROJECT_DIR/bin/tools/RunFunctions"
-restore0Dir > /dev/null
-blockMesh > log.blockMesh 2>&1 || { echo "FAILED: blockMesh"; exit 1; }
+. "$(cd "${0%/*}" && pwd)/lib/prepareCase.sh"
+prepareCaseCopy "$1" "$2"
 # only the first clouds entry: ours (cloudInfo has one too)
 sed -i "0,/clouds          (kinematicCloud);/s//clouds          (noSuchCloud);/" system/controlDict
 grep -q "noSuchCloud" system/controlDict || { echo "FAILED: could not edit controlDict"; exit 1; }

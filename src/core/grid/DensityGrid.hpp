@@ -2,7 +2,7 @@
 // from parcels (MODEL.md sec. 4, eqs. 19-26). Per time step:
 //     for each parcel: deposit(parcel, dt)     -> the step's accumulator
 //     commitStep()                              -> the step enters the averaging window
-//     nodeValues(...), sample(point)            -> fields averaged over the window
+//     nodeValue(i, j, k), sample(point)         -> fields averaged over the window
 //
 // One parcel's mass, step by step (deposit):
 //  1. Path: from position - velocity dt to position (Parcel.hpp convention).
@@ -54,6 +54,11 @@
 //
 // Invalid parcels (non-finite values, negative diameter/nParticle/density) and dt < 0
 // throw std::invalid_argument; nParticle == 0 or diameter == 0 is counted and skipped.
+//
+// Memory: nQuantities = 7 doubles (56 bytes) per node for the step accumulator, the
+// window total, and each of the W window slots (allocated as the window fills):
+// (W + 2) * 56 bytes per node, e.g. 250 x 250 nodes, W = 10: 42 MB.
+// Time per parcel: ~ nodes within reach of its path (one erf-type evaluation each).
 #pragma once
 
 #include "grid/AveragingWindow.hpp"

@@ -19,15 +19,18 @@
 // terms above nearly cancel). A path shorter than 1e-12 reach is taken as a point at its
 // midpoint: omega = phi(|midpoint - g|), the L -> 0 limit.
 //
+// Accuracy: agrees with adaptive quadrature of eq. 23 to 1e-10 relative (typically
+// 1e-13), for L from 0 to many reaches and alpha from 0.3 to 1000 (PathWeightTest).
+// Within a relative gap g = 1 - d^2/reach^2 < 1e-5 of the rim of the support the rounding
+// of the inputs alone moves omega by ~1e-16/g relative (conditioning, not the method);
+// such weights are ~exp(-alpha) g and do not matter for the mass.
+//
 // Geometry is plain 3D; a 2D grid passes vectors with the flat component zeroed.
 #pragma once
 
 #include "grid/ParcelKernel.hpp"
 
 #include <Eigen/Core>
-
-#include <algorithm>
-#include <cmath>
 
 namespace dropletFiber
 {

@@ -122,14 +122,14 @@ void Foam::functionObjects::dropletFiberCollision::readGrid
     checkedCoreCall(gridDict, [this]() { gridSpec_.validate(); });
 
     averagingSteps_ = getLabelInRange(gridDict, "averagingSteps", 1, 1, 100000);
-    kernel_.beta = gridDict.lookupOrDefault<scalar>("beta", 0.025);
-    if (!(kernel_.beta > 0 && kernel_.beta <= 1))
-    {
-        FatalIOErrorInFunction(gridDict)
-            << "Entry 'beta' is " << kernel_.beta
-            << ": allowed are values in (0, 1] (eq. 18; the paper uses 0.025)."
-            << exit(FatalIOError);
-    }
+    const scalar defaultBeta = 0.025;   // the paper's value
+    kernel_.beta =
+        getCheckedScalar
+        (
+            gridDict, "beta", &defaultBeta,
+            [](scalar b) { return b > 0 && b <= 1; },
+            "in (0, 1] (eq. 18; the paper uses 0.025)"
+        );
     kernel_.rMaxCap = getNonNegative(gridDict, "rMaxCap", 0);
     const word dim =
         getChoice(gridDict, "dimension", "automatic", {"automatic", "2", "3"});
@@ -298,13 +298,15 @@ Foam::functionObjects::dropletFiberCollision::depositParcels(const scalar dt)
     const scalar deposited = returnReduce(stats.massDeposited, sumOp<scalar>());
     const scalar outside = returnReduce(stats.massOutside, sumOp<scalar>());
     const label capped = returnReduce(label(stats.parcelsCapped), sumOp<label>());
-    if (capped > 0)
+    if (capped > 0 && totals_.parcelsCapped == 0)
     {
         WarningInFunction
             << type() << " " << name() << ": the influence radius of "
             << capped << " parcels was capped at rMaxCap = " << kernel_.rMaxCap
-            << " m at time " << time_.timeName() << endl;
+            << " m at time " << time_.timeName() << nl
+            << "    (warned once; the count is reported at write times)" << endl;
     }
+    totals_.parcelsCapped += capped;
     return Pair<scalar>(deposited, outside);
 }
 
@@ -610,7 +612,9 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
             << "    fiber mass " << fiberMass() << " kg = added "
             << totals_.fiberMassAdded << " + captured " << totals_.captured
             << " - removed " << totals_.fiberMassRemoved
-            << " (balance " << balance << " kg)" << nl << endl;
+            << " (balance " << balance << " kg)" << nl
+            << "    parcel-steps with the influence radius capped at rMaxCap: "
+            << totals_.parcelsCapped << nl << endl;
     }
 
     return true;

@@ -87,6 +87,7 @@ void Foam::functionObjects::dropletFiberCollision::writeState() const
     totals.add("fiberMassAdded", totals_.fiberMassAdded);
     totals.add("fiberMassRemoved", totals_.fiberMassRemoved);
     totals.add("fibersRemoved", totals_.fibersRemoved);
+    totals.add("parcelsCapped", totals_.parcelsCapped);
     state.add("totals", totals);
 
     const ::dropletFiber::WindowState window = grid_->saveWindow();
@@ -161,6 +162,7 @@ bool Foam::functionObjects::dropletFiberCollision::readState()
     totals_.fiberMassAdded = totals.get<scalar>("fiberMassAdded");
     totals_.fiberMassRemoved = totals.get<scalar>("fiberMassRemoved");
     totals_.fibersRemoved = totals.get<label>("fibersRemoved");
+    totals_.parcelsCapped = totals.lookupOrDefault<label>("parcelsCapped", 0);
 
     dropletFiber::checkedCoreCall
     (

@@ -105,14 +105,14 @@ Eigen::Vector3d toEigen(const Foam::vector& v)
         }
     }
 
-    s.theta = fibersDict.lookupOrDefault<scalar>("theta", 0.5);
-    if (!(s.theta >= 0.5 && s.theta <= 1))
-    {
-        FatalIOErrorInFunction(fibersDict)
-            << "Entry 'theta' is " << s.theta
-            << ": allowed are values from 0.5 (implicit midpoint) to 1 "
-            << "(backward Euler)." << exit(FatalIOError);
-    }
+    const scalar midpoint = 0.5;
+    s.theta =
+        getCheckedScalar
+        (
+            fibersDict, "theta", &midpoint,
+            [](scalar t) { return t >= 0.5 && t <= 1; },
+            "from 0.5 (implicit midpoint) to 1 (backward Euler)"
+        );
     return s;
 }
 

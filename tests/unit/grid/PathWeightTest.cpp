@@ -315,7 +315,7 @@ TEST(PathWeight, LongPathTendsToGaussianLineIntegral)
     const PathWeight w(kernel, Eigen::Vector3d(-5.0, 0.0, 0.0), Eigen::Vector3d(length, 0.0, 0.0));
     const double h = std::sqrt(reach * reach - d0 * d0);
     const double expected
-        = (std::exp(-gamma * d0 * d0) * std::sqrt(M_PI / gamma) * std::erf(std::sqrt(gamma) * h)
+        = (std::exp(-gamma * d0 * d0) * std::sqrt(3.14159265358979323846 / gamma) * std::erf(std::sqrt(gamma) * h)
               - 2.0 * h * std::exp(-gamma * reach * reach))
         / length;
     EXPECT_NEAR(w.omega(Eigen::Vector3d(0.0, d0, 0.0)), expected, 1e-14 * expected);

@@ -32,7 +32,7 @@ TEST(ScaledErfc, MatchesLongDoubleReference)
         // Asymptotic series sum (-1)^n (2n-1)!! / (2 x^2)^n, five terms (error < 1e-15 for x >= 50).
         const double z = 1.0 / (2.0 * x * x);
         const double series = 1.0 - z + 3.0 * z * z - 15.0 * z * z * z + 105.0 * z * z * z * z;
-        const double asymptotic = series / (x * std::sqrt(M_PI));
+        const double asymptotic = series / (x * std::sqrt(3.14159265358979323846));
         EXPECT_NEAR(erfcScaled(x) / asymptotic, 1.0, 1e-14) << x;
     }
     EXPECT_EQ(erfcScaled(0.0), 1.0);
