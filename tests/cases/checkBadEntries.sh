@@ -2,6 +2,7 @@
 # Each bad dictionary entry stops the run with a FatalIOError that names the
 # entry. Usage: checkBadEntries.sh CASE_DIR WORK_DIR (runs a copy)
 set -uo pipefail
+# shellcheck disable=SC1091
 . "$(cd "${0%/*}" && pwd)/lib/prepareCase.sh"
 prepareCaseCopy "$1" "$2"
 cp system/controlDict system/controlDict.good

@@ -3,6 +3,7 @@
 # exit, FatalIOError) with a message naming the cloud and listing the clouds
 # that exist. Usage: checkMissingCloud.sh CASE_DIR WORK_DIR
 set -uo pipefail
+# shellcheck disable=SC1091
 . "$(cd "${0%/*}" && pwd)/lib/prepareCase.sh"
 prepareCaseCopy "$1" "$2"
 # only the first clouds entry: ours (cloudInfo has one too)
@@ -12,7 +13,7 @@ pimpleFoam > log.missingCloud 2>&1
 status=$?
 passed=0; failed=0
 check() { if eval "$1"; then passed=$((passed+1)); else failed=$((failed+1)); echo "FAILED: $2"; fi; }
-check '[ $status -ne 0 ]' "pimpleFoam exited with $status, expected a failure"
+check "[ $status -ne 0 ]" "pimpleFoam exited with $status, expected a failure"
 check 'grep -q "FOAM FATAL IO ERROR" log.missingCloud' "no FatalIOError in the log"
 check 'grep -q "Cloud .noSuchCloud. named in entry .clouds." log.missingCloud' "error does not name the cloud and the entry"
 check 'grep -A1 "Clouds that exist" log.missingCloud | grep -q kinematicCloud' "error does not list the existing cloud"

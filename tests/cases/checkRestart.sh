@@ -6,6 +6,7 @@
 set -euo pipefail
 caseDir="$1"; work="$2"; half="$3"; end="$4"
 here="$(cd "${0%/*}" && pwd)"
+# shellcheck disable=SC1091
 . "$here/../../bin/functions.sh"
 loadFoamEnvironment
 PY=/usr/bin/python3; [ -x "$PY" ] || PY=python3

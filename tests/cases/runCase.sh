@@ -10,6 +10,7 @@
 set -euo pipefail
 caseDir="$1"; workDir="$2"; mode="$3"; shift 3
 here="$(cd "${0%/*}" && pwd)"
+# shellcheck disable=SC1091
 . "$here/../../bin/functions.sh"
 loadFoamEnvironment
 
