@@ -31,7 +31,7 @@ expectError() {
 }
 
 expectError fibers/radius -1e-4 "Entry 'radius' is -0.0001"
-expectError fibers/density abc "density"
+expectError fibers/density abc "controlDict.functions.dropletFiber.fibers.density at line"
 expectError fibers/youngsModulus REMOVE "Entry 'youngsModulus' is required"
 expectError grid/nodes "(0 26 1)" "Entry 'nodes' is"
 expectError grid/lower "(0.3 0 0)" "Entries 'lower' .* and 'upper'"
