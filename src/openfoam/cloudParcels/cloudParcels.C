@@ -7,7 +7,6 @@
 #include "IOField.H"
 #include "objectRegistry.H"
 #include "dictionary.H"
-#include "mathematicalConstants.H"
 
 // * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
 
@@ -56,29 +55,12 @@ void Foam::dropletFiber::cloudParcels::clear()
 }
 
 
-Foam::scalar Foam::dropletFiber::cloudParcels::mass(const label i) const
-{
-    return nParticle[i]*rho[i]*constant::mathematical::pi/6.0*pow3(d[i]);
-}
-
-
 Foam::scalar Foam::dropletFiber::cloudParcels::nDroplets() const
 {
     scalar sum = 0;
     for (const scalar n : nParticle)
     {
         sum += n;
-    }
-    return sum;
-}
-
-
-Foam::scalar Foam::dropletFiber::cloudParcels::totalMass() const
-{
-    scalar sum = 0;
-    for (label i = 0; i < size(); ++i)
-    {
-        sum += mass(i);
     }
     return sum;
 }

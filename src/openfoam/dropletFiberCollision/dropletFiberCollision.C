@@ -240,7 +240,7 @@ void Foam::functionObjects::dropletFiberCollision::gatherParcels()
 }
 
 
-Foam::Pair<Foam::scalar>
+::dropletFiber::StepStatistics
 Foam::functionObjects::dropletFiberCollision::depositParcels(const scalar dt)
 {
     ::dropletFiber::DensityGrid& grid = *grid_;
@@ -292,12 +292,16 @@ Foam::functionObjects::dropletFiberCollision::depositParcels(const scalar dt)
         }
     }
 
-    const ::dropletFiber::StepStatistics stats = grid.stepStatistics();
+    // This step's statistics, summed over processors (every member is a sum)
+    ::dropletFiber::StepStatistics stats = grid.stepStatistics();
     grid.commitStep();
+    reduce(stats.massIn, sumOp<scalar>());
+    reduce(stats.massDeposited, sumOp<scalar>());
+    reduce(stats.massOutside, sumOp<scalar>());
+    label capped = label(stats.parcelsCapped);
+    reduce(capped, sumOp<label>());
+    stats.parcelsCapped = capped;
 
-    const scalar deposited = returnReduce(stats.massDeposited, sumOp<scalar>());
-    const scalar outside = returnReduce(stats.massOutside, sumOp<scalar>());
-    const label capped = returnReduce(label(stats.parcelsCapped), sumOp<label>());
     if (capped > 0 && totals_.parcelsCapped == 0)
     {
         WarningInFunction
@@ -307,7 +311,7 @@ Foam::functionObjects::dropletFiberCollision::depositParcels(const scalar dt)
             << "    (warned once; the count is reported at write times)" << endl;
     }
     totals_.parcelsCapped += capped;
-    return Pair<scalar>(deposited, outside);
+    return stats;
 }
 
 
@@ -527,13 +531,12 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
     gatherParcels();
     const label nParcels = returnReduce(parcels_.size(), sumOp<label>());
     const scalar nDroplets = returnReduce(parcels_.nDroplets(), sumOp<scalar>());
-    const scalar parcelMass = returnReduce(parcels_.totalMass(), sumOp<scalar>());
 
     // 2. Onto the grid; summed across processors; averaged over the window
-    const Pair<scalar> deposit = depositParcels(dt);
-    totals_.parcelMass += parcelMass;
-    totals_.deposited += deposit.first();
-    totals_.outside += deposit.second();
+    const ::dropletFiber::StepStatistics deposit = depositParcels(dt);
+    totals_.parcelMass += deposit.massIn;
+    totals_.deposited += deposit.massDeposited;
+    totals_.outside += deposit.massOutside;
     const scalar depositionTime = depositionStart.elapsed();
 
     // 3. New fibers
@@ -584,9 +587,9 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
         os  << tab << label(fibers_.size())
             << tab << nParcels
             << tab << nDroplets
-            << tab << parcelMass
-            << tab << deposit.first()
-            << tab << deposit.second()
+            << tab << deposit.massIn
+            << tab << deposit.massDeposited
+            << tab << deposit.massOutside
             << tab << capturedStep
             << tab << totals_.captured
             << tab << fiberMass()
