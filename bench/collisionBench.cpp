@@ -8,9 +8,10 @@
 // Usage: collisionBench [--repeats N]
 //
 // Workload: grid box 5 x 7 cm, h = 0.5 mm (2D 101 x 141, 3D 101 x 141 x 101), window of one
-// step holding 1e5 parcels (r_p = 10 um, n = 150) spread uniformly; segments at random
-// positions and orientations inside the box, length h / 2 (1 sample) or 2 mm (auto),
-// fiber radius 3 um, moving at 0.1 m/s; dt = 1e-4 s.
+// step holding 1e5 parcels (r_p = 10 um, n = 150) spread uniformly; segments in fibers of
+// 100 consecutive segments (random, gently turning chains starting in the middle half of the
+// box, turned back at its walls), segment length h / 2 (1 sample) or 2 mm (auto), fiber
+// radius 3 um, moving at 0.1 m/s; dt = 1e-4 s.
 #include "BenchCommon.hpp"
 
 #include "collision/CollisionMass.hpp"
@@ -85,21 +86,41 @@ int main(int argc, char** argv)
             double baseline = 0.0;
             for (double count : {1e3, 1e4, 1e5, 1e6})
             {
+                // fibers of 100 consecutive segments (a random, gently turning chain that
+                // stays in the box), as the fiber solver hands them over
                 std::vector<Segment> segments(static_cast<std::size_t>(count));
-                for (Segment& s : segments)
+                Eigen::Vector3d point, direction;
+                for (std::size_t k = 0; k < segments.size(); ++k)
                 {
-                    Eigen::Vector3d direction(rng.uniform(-1, 1), rng.uniform(-1, 1),
-                                              dimension == 3 ? rng.uniform(-1, 1) : 0.0);
+                    if (k % 100 == 0)
+                    {
+                        for (int d = 0; d < 3; ++d)
+                        {
+                            point[d] = rng.uniform(spec.lower[d] + 0.25 * (spec.upper[d] - spec.lower[d]),
+                                                   spec.upper[d] - 0.25 * (spec.upper[d] - spec.lower[d]));
+                        }
+                        direction = Eigen::Vector3d(rng.uniform(-1, 1), rng.uniform(-1, 1),
+                                                    dimension == 3 ? rng.uniform(-1, 1) : 0.0);
+                    }
+                    direction += 0.3 * Eigen::Vector3d(rng.uniform(-1, 1), rng.uniform(-1, 1),
+                                                       dimension == 3 ? rng.uniform(-1, 1) : 0.0);
                     direction.normalize();
+                    Eigen::Vector3d next = point + length * direction;
                     for (int d = 0; d < 3; ++d)
                     {
-                        s.a[d] = rng.uniform(spec.lower[d] + length, spec.upper[d] - length);
+                        if (!spec.flat(d) && (next[d] < spec.lower[d] + length || next[d] > spec.upper[d] - length))
+                        {
+                            direction[d] = -direction[d]; // turn back at the walls
+                        }
                     }
+                    next = point + length * direction;
+                    segments[k].a = point;
+                    segments[k].b = next;
                     if (dimension == 2)
                     {
-                        s.a.z() = 0.005;
+                        segments[k].a.z() = segments[k].b.z() = 0.005;
                     }
-                    s.b = s.a + length * direction;
+                    point = next;
                 }
                 const int inner = static_cast<int>(std::max(1.0, 2e5 / count));
                 double totalMass = 0.0;

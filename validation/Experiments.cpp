@@ -1,6 +1,8 @@
 #include "Experiments.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 namespace dropletFiber
@@ -103,8 +105,9 @@ namespace
 const std::vector<std::string> referenceColumns{"truth",  "formula", "geometric", "spread",
                                                 "spreadSE", "fine",   "fineSE"};
 
+// fineSteps: steps per seed of the fine reference (0: as many as the spread count).
 void addReferences(const PaperSetting& setting, const SprayDefinition& spray, const FiberCircle& fiber,
-                   std::vector<double>& values)
+                   std::vector<double>& values, int fineSteps = 0)
 {
     const SprayStreams streams(spray);
     values.push_back(analyticCollisionMass(streams, fiber));
@@ -116,8 +119,9 @@ void addReferences(const PaperSetting& setting, const SprayDefinition& spray, co
     values.push_back(spread.standardError);
     SprayDefinition jittered = spray;
     jittered.jitter = true;
-    const MeanAndError fine
-        = geometricMass(jittered, fiber, DropletPlacement::Spread, setting.spreadSeeds, setting.spreadStepsPerSeed);
+    const MeanAndError fine = fineSteps > 0
+        ? geometricMass(jittered, fiber, DropletPlacement::Spread, setting.fineSeeds, fineSteps)
+        : geometricMass(jittered, fiber, DropletPlacement::Spread, setting.spreadSeeds, setting.spreadStepsPerSeed);
     values.push_back(fine.mean);
     values.push_back(fine.standardError);
 }
@@ -196,8 +200,9 @@ Table figure8(const PaperSetting& setting)
 
 namespace
 {
+// fineSteps: steps per seed of the fine reference (thin fibers catch few streams: noisy).
 Table fiberRadiusSweep(const PaperSetting& setting, const std::string& name, const std::vector<double>& radii,
-                       const std::vector<GridMethod>& methods, bool numberColumns)
+                       const std::vector<GridMethod>& methods, bool numberColumns, int fineSteps)
 {
     Table t;
     t.name = name;
@@ -214,7 +219,7 @@ Table fiberRadiusSweep(const PaperSetting& setting, const std::string& name, con
     {
         const FiberCircle fiber = fiberOf(setting, radius);
         std::vector<double> values{radius};
-        addReferences(setting, spray, fiber, values);
+        addReferences(setting, spray, fiber, values, fineSteps);
         addGrids(setting, spray, fiber, methods, values);
         if (numberColumns)
         {
@@ -236,7 +241,7 @@ Table figure9(const PaperSetting& setting)
     return fiberRadiusSweep(setting, "figure9", setting.fig9FiberRadii,
                             {paperGridMethod(setting, setting.fig9Grid, polyWindow),
                              improvedGridMethod(setting, setting.fig9Grid, polyWindow)},
-                            true);
+                            true, setting.fineSteps / 20);
 }
 
 Table figure10(const PaperSetting& setting)
@@ -250,7 +255,7 @@ Table figure10(const PaperSetting& setting)
     {
         methods.push_back(improvedGridMethod(setting, nodes, polyWindow));
     }
-    return fiberRadiusSweep(setting, "figure10", setting.fig10FiberRadii, methods, false);
+    return fiberRadiusSweep(setting, "figure10", setting.fig10FiberRadii, methods, false, 0);
 }
 
 Table radiusStudy(const PaperSetting& setting)
@@ -269,8 +274,11 @@ Table radiusStudy(const PaperSetting& setting)
     {
         const FiberCircle fiber = fiberOf(setting, radius);
         // The fine reference: many steps, so that its standard error is small.
-        const MeanAndError fine
-            = geometricMass(jittered, fiber, DropletPlacement::Spread, setting.fineSeeds, setting.fineSteps);
+        // Thicker fibers catch more streams per step (smaller relative noise per step) and
+        // cost more per step: fewer steps for them.
+        const int steps = std::max(setting.fineSteps / 20,
+                                   static_cast<int>(setting.fineSteps * std::min(1.0, 1e-4 / radius)));
+        const MeanAndError fine = geometricMass(jittered, fiber, DropletPlacement::Spread, setting.fineSeeds, steps);
         const Eigen::Vector3d velocity = setting.speed * downward;
         GridMethod grid = improvedGridMethod(setting, setting.fig9Grid, polyWindow);
         const double gridMass = runGridMethod(setting, spray, fiber, grid).mass;
@@ -280,7 +288,26 @@ Table radiusStudy(const PaperSetting& setting)
               {radius, fine.mean, fine.standardError,
                formulaCollisionMass(rho, rMass, fiber, setting.depth, velocity, setting.dt),
                formulaCollisionMass(rho, rNumber, fiber, setting.depth, velocity, setting.dt), gridMass, gridNumber,
-               rMass, rNumber, static_cast<double>(setting.fineSteps) * setting.fineSeeds});
+               rMass, rNumber, static_cast<double>(steps) * setting.fineSeeds});
+    }
+    return t;
+}
+
+Table geometricSawtooth(const PaperSetting& setting)
+{
+    Table t;
+    t.name = "sawtooth";
+    t.columns = {"fiberRadius", "truth", "geometric", "grid100_paper", "grid100_improved"};
+    const SprayDefinition spray = monodisperseSpray(setting, setting.fig8Streams, 10.0);
+    const SprayStreams streams(spray);
+    for (double radius : setting.sawtoothFiberRadii())
+    {
+        const FiberCircle fiber = fiberOf(setting, radius);
+        t.add("r_F " + std::to_string(radius * 1e3) + " mm",
+              {radius, analyticCollisionMass(streams, fiber),
+               geometricMass(spray, fiber, DropletPlacement::ParcelPoint, 1, setting.spreadStepsPerSeed).mean,
+               runGridMethod(setting, spray, fiber, paperGridMethod(setting, 100)).mass,
+               runGridMethod(setting, spray, fiber, improvedGridMethod(setting, 100)).mass});
     }
     return t;
 }

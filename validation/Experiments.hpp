@@ -49,6 +49,9 @@ Table figure8(const PaperSetting& setting);   // x: droplets per parcel
 Table figure9(const PaperSetting& setting);   // x: fiber radius, polydisperse
 Table figure10(const PaperSetting& setting);  // x: fiber radius up to 14 mm, grids 100 and 250
 Table radiusStudy(const PaperSetting& setting);
+// The geometric count against the flow-rate expectation as the fiber radius sweeps across
+// the stream lattice (100 streams, r_F 9-11 mm): the staircase behind the geometric error.
+Table geometricSawtooth(const PaperSetting& setting);
 // Relative error of grid variants (beta, sampling, edge margin, deposit rule, window) over
 // the sweeps of figures 7 and 8 at 100x100; rows: variant label, figure, x, error.
 Table accuracyStudy(const PaperSetting& setting);

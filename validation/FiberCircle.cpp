@@ -2,6 +2,7 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <vector>
@@ -36,11 +37,21 @@ double gridCollisionMass(const DensityGrid& grid, const FiberCircle& fiber, doub
                              collision)
             .mass;
     }
-    const int n = options.outlineSegments;
-    if (n < 3)
+    if (options.outlineSegments < 3 || !(options.maxSegmentInSpacings > 0.0))
     {
-        throw std::invalid_argument("gridCollisionMass: the outline needs at least 3 segments");
+        throw std::invalid_argument("gridCollisionMass: the outline needs >= 3 segments of positive length");
     }
+    double spacing = 0.0;
+    for (int d = 0; d < 3; ++d)
+    {
+        if (!grid.spec().flat(d))
+        {
+            spacing = spacing == 0.0 ? grid.spec().spacing(d) : std::min(spacing, grid.spec().spacing(d));
+        }
+    }
+    const double perimeter = 2.0 * pi * fiber.radius;
+    const int n = std::max(options.outlineSegments,
+                           static_cast<int>(std::ceil(perimeter / (options.maxSegmentInSpacings * spacing))));
     const Eigen::Vector3d u = flowDirection.normalized();
     std::vector<double> weights(static_cast<std::size_t>(n));
     std::vector<Eigen::Vector3d> midpoints(static_cast<std::size_t>(n));

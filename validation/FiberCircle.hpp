@@ -16,7 +16,10 @@
 //             its share of the fiber's projected width. The weights sum to 1, so in a
 //             uniform field this is exactly eq. 9; in a grid field it averages rho over the
 //             width the fiber actually sweeps, which a cylinder 2 cm thick (40 grid cells
-//             at 100x100) needs: a single sample sees one cell's value.
+//             at 100x100) needs: a single sample sees one cell's value. The sum is a
+//             midpoint rule across the interpolated field, so segments are at most a
+//             quarter node spacing long (more segments than outlineSegments when needed):
+//             a field that resolves single streams (fine grids) varies within one cell.
 #pragma once
 
 #include "collision/CollisionMass.hpp"
@@ -44,7 +47,8 @@ struct FiberCircle
 struct Eq9Options
 {
     Eq9Sampling sampling = Eq9Sampling::Outline;
-    int outlineSegments = 256;
+    int outlineSegments = 256;            // at least this many segments...
+    double maxSegmentInSpacings = 0.25;   // ...and none longer than this many node spacings
     RadiusAverage radiusAverage = RadiusAverage::Mass;
 };
 

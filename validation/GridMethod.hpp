@@ -29,9 +29,12 @@ struct GridMethod
     // same node spacing as the N x N grid of the box (edge study).
     double margin = 0.0;
     // Deposit rule for parcels the grid cannot resolve: a parcel whose kernel width (the
-    // inflection point of eq. 16, r_max / sqrt(2 alpha)) is below
-    // cloudInCellBelow * (node spacing) is deposited with cloud-in-cell (multilinear) weights
-    // along its path instead of the kernel. 0: the paper (always the kernel).
+    // inflection point of eq. 16, r_max / sqrt(2 alpha)) is below cloudInCellBelow times the
+    // larger node spacing is deposited with cloud-in-cell (multilinear) weights along its
+    // path instead of the kernel. 0: the paper (always the kernel). Why: eq. 24 normalises
+    // a kernel much narrower than the spacing onto the one or two nearest nodes (nearest-
+    // node assignment, which moves mass by up to half a cell); multilinear weights keep
+    // the parcel's centre of mass (see docs/validation.md, accuracy study).
     // Done without touching the core: such parcels go to a second grid whose kernel reach
     // is capped to nothing (DensityGrid's multilinear fallback), and that grid's step is
     // added to the first before the step is committed.

@@ -43,7 +43,7 @@ struct PaperSetting
     double injectionPhase = 0.37;         // parcels' offset within a step (avoids ties)
 
     // --- evaluation -----------------------------------------------------------------------
-    int outlineSegments = 256;            // closed polyline approximating the circle
+    int outlineSegments = 256;            // closed polyline approximating the circle (at least)
     double beta = 0.025;                  // paper, eq. 18
 
     // --- figure 7: fixed total flow rate, 50-500 streams ---------------------------------
@@ -83,8 +83,22 @@ struct PaperSetting
     // --- statistics of the geometric references -------------------------------------------
     int spreadSeeds = 16;                 // droplets spread within r_min: seeds...
     int spreadStepsPerSeed = 8;           // ...times steps counted per seed
-    int fineSteps = 200000;               // fine reference (radius question): steps per seed
+    // Fine reference (jittered injection, spread droplets): radius question, up to fineSteps
+    // steps per seed (fewer for thick fibers); figure 9, fineSteps / 20 per seed.
+    int fineSteps = 100000;
     int fineSeeds = 10;
+
+    // Geometric staircase: fiber radii 9-11 mm in steps of 0.05 mm (100 streams).
+    double sawtoothStep = 5e-5;
+    std::vector<double> sawtoothFiberRadii() const
+    {
+        std::vector<double> radii;
+        for (double r = 9e-3; r <= 11e-3 + 1e-12; r += sawtoothStep)
+        {
+            radii.push_back(r);
+        }
+        return radii;
+    }
 
     double dropletMass(double radius) const { return dropletDensity * 4.0 / 3.0 * pi * radius * radius * radius; }
     double injectionWidth() const { return 2.0 * injectionHalfWidth; }
@@ -102,6 +116,7 @@ struct PaperSetting
         s.spreadSeeds = 6;
         s.spreadStepsPerSeed = 4;
         s.fineSteps = 40000;
+        s.sawtoothStep = 5e-4;
         s.fineSeeds = 6;
         return s;
     }

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <fstream>
 #include <stdexcept>
+#include <string>
 
 namespace dropletFiber
 {
@@ -53,7 +54,13 @@ void Table::write(const std::string& directory) const
     char buffer[64];
     for (const TableRow& row : rows)
     {
-        out << row.label;
+        // The label is quoted (it may hold commas); a quote inside is doubled (RFC 4180).
+        out << '"';
+        for (char c : row.label)
+        {
+            out << (c == '"' ? "\"\"" : std::string(1, c));
+        }
+        out << '"';
         for (double v : row.values)
         {
             std::snprintf(buffer, sizeof buffer, "%.17g", v);

@@ -25,7 +25,8 @@ struct Table
     void add(const std::string& label, const std::vector<double>& values);
     int column(const std::string& columnName) const; // throws if absent
     double value(std::size_t row, const std::string& columnName) const;
-    // Writes <directory>/<name>.csv (17 significant digits).
+    // Writes <directory>/<name>.csv: header "label,<columns>", the label quoted, values with
+    // 17 significant digits.
     void write(const std::string& directory) const;
 };
 

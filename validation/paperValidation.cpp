@@ -4,7 +4,7 @@
 //     paperValidation [--reduced] [--out DIR] [--only figure7,figure8,...]
 //
 // --reduced: fewer sweep points and seeds (PaperSetting::reduced), for a quick look.
-// Experiments: figure7 figure8 figure9 figure10 radius accuracy (default: all).
+// Experiments: figure7 figure8 figure9 figure10 radius sawtooth accuracy (default: all).
 #include "Experiments.hpp"
 
 #include <chrono>
@@ -22,7 +22,7 @@ namespace
 {
 void usage()
 {
-    std::cerr << "usage: paperValidation [--reduced] [--out DIR] [--only figure7,figure8,figure9,figure10,radius,accuracy]\n";
+    std::cerr << "usage: paperValidation [--reduced] [--out DIR] [--only figure7,figure8,figure9,figure10,radius,sawtooth,accuracy]\n";
 }
 
 Table settingTable(const PaperSetting& s, bool reduced)
@@ -100,7 +100,7 @@ int main(int argc, char** argv)
 
     const std::vector<std::pair<std::string, std::function<Table(const PaperSetting&)>>> experiments{
         {"figure7", figure7}, {"figure8", figure8}, {"figure9", figure9},
-        {"figure10", figure10}, {"radius", radiusStudy}, {"accuracy", accuracyStudy}};
+        {"figure10", figure10}, {"radius", radiusStudy}, {"sawtooth", geometricSawtooth}, {"accuracy", accuracyStudy}};
     try
     {
         for (const auto& [name, run] : experiments)
