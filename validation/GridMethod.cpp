@@ -31,10 +31,9 @@ GridOutcome runGridMethod(const PaperSetting& setting, const SprayDefinition& sp
                           const GridMethod& method)
 {
     const GridSpec spec = gridSpecFor(setting, method);
-    DensityGrid grid(spec, method.kernel, method.window);
-    KernelSettings pointSettings = method.kernel;
-    pointSettings.rMaxCap = 1e-9 * spec.spacing(0); // reaches no node: multilinear fallback
-    DensityGrid pointGrid(spec, pointSettings, 1);
+    KernelSettings kernelSettings = method.kernel;
+    kernelSettings.cloudInCellBelow = method.cloudInCellBelow;
+    DensityGrid grid(spec, kernelSettings, method.window);
     const SprayStreams streams(spray);
     const double h = std::max(spec.spacing(0), spec.spacing(1));
     // Nodes eq. 9 can interpolate: within one cell of the circle's bounding box.
@@ -47,8 +46,8 @@ GridOutcome runGridMethod(const PaperSetting& setting, const SprayDefinition& sp
         {
             const Parcel& p = sp.parcel;
             // Farthest a parcel reaches: its kernel's support, or one cell (cloud-in-cell
-            // fallback when the kernel reaches no node).
-            const ParcelKernel kernel(0.5 * p.diameter, p.nParticle, method.kernel, 2);
+            // weights, or the fallback when the kernel reaches no node).
+            const ParcelKernel kernel(0.5 * p.diameter, p.nParticle, kernelSettings, 2);
             const double reach = std::max(kernel.reach(), h);
             const double yEnd = p.position.y(), yStart = yEnd - p.velocity.y() * spray.dt;
             const double x = p.position.x();
@@ -57,30 +56,10 @@ GridOutcome runGridMethod(const PaperSetting& setting, const SprayDefinition& sp
             {
                 continue;
             }
-            const double width = kernel.rMax() / std::sqrt(2.0 * kernel.alpha());
-            if (width < method.cloudInCellBelow * h)
-            {
-                pointGrid.deposit(p, spray.dt);
-            }
-            else
-            {
-                grid.deposit(p, spray.dt);
-            }
+            grid.deposit(p, spray.dt);
             ++outcome.parcelsDeposited;
         }
-        outcome.parcelsFallback = grid.stepStatistics().parcelsFallback + pointGrid.stepStatistics().parcelsFallback;
-        const IndexBox box = grid.stepBox().united(pointGrid.stepBox());
-        if (!box.empty() && !pointGrid.stepBox().empty())
-        {
-            std::vector<double> values = grid.packStep(box);
-            const std::vector<double> pointValues = pointGrid.packStep(box);
-            for (std::size_t q = 0; q < values.size(); ++q)
-            {
-                values[q] += pointValues[q];
-            }
-            grid.unpackStep(box, values);
-        }
-        pointGrid.commitStep();
+        outcome.parcelsFallback = grid.stepStatistics().parcelsFallback + grid.stepStatistics().parcelsCloudInCell;
         grid.commitStep();
     }
     outcome.mass = gridCollisionMass(grid, fiber, setting.depth, 0.0, spray.dt, Eigen::Vector3d(0.0, -1.0, 0.0),

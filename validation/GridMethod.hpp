@@ -35,9 +35,7 @@ struct GridMethod
     // a kernel much narrower than the spacing onto the one or two nearest nodes (nearest-
     // node assignment, which moves mass by up to half a cell); multilinear weights keep
     // the parcel's centre of mass (see docs/validation.md, accuracy study).
-    // Done without touching the core: such parcels go to a second grid whose kernel reach
-    // is capped to nothing (DensityGrid's multilinear fallback), and that grid's step is
-    // added to the first before the step is committed.
+    // This is KernelSettings::cloudInCellBelow of the core.
     double cloudInCellBelow = 0.0;
 };
 
@@ -45,7 +43,7 @@ struct GridOutcome
 {
     double mass = 0.0;               // eq. 9 at the fiber, kg per step
     double rhoAtFiber = 0.0;         // the grid's density at the fiber centre
-    std::int64_t parcelsFallback = 0; // parcels of the last step that reached no node (cloud-in-cell)
+    std::int64_t parcelsFallback = 0; // parcels of the last step deposited cloud-in-cell (no node reached, or unresolved)
     std::int64_t parcelsDeposited = 0;
 };
 

@@ -123,6 +123,7 @@ DensityGrid::DensityGrid(const GridSpec& spec, const KernelSettings& kernel, int
             coordinates_[d][static_cast<std::size_t>(i)] = spec.nodeCoordinate(d, i);
         }
         inverseSpacing_[d] = spec.flat(d) ? 0.0 : 1.0 / spec.spacing(d);
+        largestSpacing_ = spec.flat(d) ? largestSpacing_ : std::max(largestSpacing_, spec.spacing(d));
     }
     step_.assign(spec.nodeCount() * nQuantities, 0.0);
 }
@@ -186,6 +187,12 @@ void DensityGrid::deposit(const Parcel& parcel, double dt)
     if (kernel.capped())
     {
         ++stats.parcelsCapped;
+    }
+    if (kernel.width() < kernelSettings_.cloudInCellBelow * largestSpacing_)
+    {
+        ++stats.parcelsCloudInCell;
+        depositFallback(clipStart, clipDisplacement, totals);
+        return;
     }
     const PathWeight pathWeight(kernel, clipStart, clipDisplacement);
     const double reach = kernel.reach();

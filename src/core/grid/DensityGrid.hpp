@@ -13,7 +13,9 @@
 //     mass of droplets outside onto the edge nodes would bias them), and a parcel
 //     crossing the boundary gives the time-averaged share of eq. 26.
 //  3. Kernel (ParcelKernel, eqs. 12-18), reach = r_max or the cap. When the cap binds,
-//     StepStatistics::parcelsCapped counts it (the caller can warn).
+//     StepStatistics::parcelsCapped counts it (the caller can warn). A kernel narrower
+//     than KernelSettings::cloudInCellBelow times the largest spacing is not resolved by
+//     the grid: the parcel goes to the cell corners as in 6 (parcelsCloudInCell).
 //  4. Every node in the bounding box of the capsule swept by the clipped path (within
 //     reach of the path) gets omega_g (PathWeight, eq. 23); nodes farther than reach from
 //     the path are rejected before any exp/erf. Cost per parcel ~ nodes in that box,
@@ -146,6 +148,7 @@ private:
     int kernelDimension_;
     std::array<std::vector<double>, 3> coordinates_; // node coordinates per direction
     std::array<double, 3> inverseSpacing_{};
+    double largestSpacing_ = 0.0; // over the active directions (KernelSettings::cloudInCellBelow)
     double nodeVolume_;
     AveragingWindow window_;
     std::vector<double> step_;

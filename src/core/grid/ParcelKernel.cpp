@@ -22,6 +22,11 @@ void KernelSettings::validate() const
     {
         throw std::invalid_argument("kernel: rMaxCap must be finite (use 0 for no cap)");
     }
+    if (!(cloudInCellBelow >= 0.0) || !std::isfinite(cloudInCellBelow))
+    {
+        throw std::invalid_argument("kernel: cloudInCellBelow must be finite and >= 0 (0: always the kernel), got "
+                                    + std::to_string(cloudInCellBelow));
+    }
 }
 
 double influenceRadiusMax(double dropletRadius, double nParticle)
@@ -99,6 +104,11 @@ double ParcelKernel::phiSquared(double distanceSquared) const
         return edgeValue_ * std::expm1(q);
     }
     return std::exp(-gamma_ * distanceSquared) - edgeValue_;
+}
+
+double ParcelKernel::width() const
+{
+    return rMax_ / std::sqrt(2.0 * alpha_);
 }
 
 } // namespace dropletFiber

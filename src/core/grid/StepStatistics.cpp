@@ -11,6 +11,7 @@ StepStatistics& StepStatistics::operator+=(const StepStatistics& other)
     parcelsPartlyOutside += other.parcelsPartlyOutside;
     parcelsCapped += other.parcelsCapped;
     parcelsFallback += other.parcelsFallback;
+    parcelsCloudInCell += other.parcelsCloudInCell;
     nodesVisited += other.nodesVisited;
     nodesWeighted += other.nodesWeighted;
     massIn += other.massIn;

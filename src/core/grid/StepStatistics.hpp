@@ -16,6 +16,7 @@ struct StepStatistics
     std::int64_t parcelsPartlyOutside = 0; // path leaves the box during the step
     std::int64_t parcelsCapped = 0;        // influence radius limited by KernelSettings::rMaxCap
     std::int64_t parcelsFallback = 0;      // kernel reached no node: multilinear weights used
+    std::int64_t parcelsCloudInCell = 0;   // kernel narrower than KernelSettings::cloudInCellBelow allows
     std::int64_t nodesVisited = 0;         // nodes examined (bounding boxes of the swept capsules)
     std::int64_t nodesWeighted = 0;        // nodes that received mass
     double massIn = 0.0;                   // sum of parcel masses n m(r_p), kg

@@ -131,6 +131,9 @@ void Foam::functionObjects::dropletFiberCollision::readGrid
             "in (0, 1] (eq. 18; the paper uses 0.025)"
         );
     kernel_.rMaxCap = getNonNegative(gridDict, "rMaxCap", 0);
+    // Better than the paper (docs/validation.md): parcels whose kernel the grid
+    // cannot resolve are deposited with cloud-in-cell weights; 0 = the paper
+    kernel_.cloudInCellBelow = getNonNegative(gridDict, "cloudInCellBelow", 0.5);
     const word dim =
         getChoice(gridDict, "dimension", "automatic", {"automatic", "2", "3"});
     kernel_.dimension =
@@ -185,6 +188,7 @@ void Foam::functionObjects::dropletFiberCollision::reportSettings() const
         << "), averagingSteps " << averagingSteps_
         << ", beta " << kernel_.beta
         << ", rMaxCap " << kernel_.rMaxCap
+        << ", cloudInCellBelow " << kernel_.cloudInCellBelow
         << ", radiusAverage "
         << (collision_.radiusAverage == ::dropletFiber::RadiusAverage::Number
             ? "number" : "mass") << nl
