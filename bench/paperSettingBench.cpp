@@ -23,8 +23,10 @@
 //     m_ref per step = sum over segments 2 rho (r_F + r_p) |l x v| dt   (true rho, eq. 9).
 //
 // Grid method (the core): DensityGrid 101 x 141 nodes (h = 0.5 mm, thickness T), window of
-// one step, default kernel (reach r_max = n r_p), then collisionMass() of every segment at
-// its midpoint. Explicit method: every parcel's path against the fiber, by brute force and
+// one step, kernel reach r_max = n r_p, then collisionMass() of every segment at its
+// midpoint; two variants on the same parcels: the kernel for every parcel (the paper,
+// cloudInCellBelow 0) and cloudInCellBelow 0.5 (the function object's default: parcels whose
+// kernel is narrower than h/2 are deposited with cloud-in-cell weights). Explicit method: every parcel's path against the fiber, by brute force and
 // with a uniform-grid segment hash (1 mm cells); a hit of a parcel counts its n droplets.
 //
 // Error per step: e = (estimate - m_ref) / m_ref for the total mass on the fiber. Reported:
@@ -181,18 +183,21 @@ struct RunResult
 {
     double n = 0.0;
     double parcels = 0.0; // in the box, mean
-    ErrorStats grid;
-    MethodCost gridCost, gridDeposit;
+    std::array<MethodCost, 2> gridCost, gridDeposit; // per grid variant
     std::array<ErrorStats, 2> explicitStats; // per fiber radius
     std::array<MethodCost, 2> hashCost;
     std::array<double, 2> bruteBest{{0.0, 0.0}};
     std::array<double, 2> meanHits{{0.0, 0.0}}; // parcel hits per step
-    std::array<double, 2> gridStatsForRadius{{0.0, 0.0}};
-    std::array<ErrorStats, 2> gridByRadius;
+    std::array<std::array<ErrorStats, 2>, 2> gridByRadius; // [variant][fiber radius]
+    std::array<double, 2> cloudInCellFraction{{0.0, 0.0}};
     bool bruteChecked = true;
 };
 
 const std::array<double, 2> fiberRadii{{2e-4, 5e-6}};
+// Grid variants: KernelSettings::cloudInCellBelow = 0 (the kernel for every parcel, the
+// paper) and 0.5 (the function object's default: kernels narrower than h/2 -> cloud-in-cell).
+const std::array<double, 2> cloudInCellBelow{{0.0, 0.5}};
+const std::array<const char*, 2> variantName{{"kernel (paper, cloudInCellBelow 0)", "cloudInCellBelow 0.5 (function object default)"}};
 
 RunResult run(double n, int steps, bool withBrute, bool withGrid)
 {
@@ -224,7 +229,13 @@ RunResult run(double n, int steps, bool withBrute, bool withGrid)
     spec.lower = Eigen::Vector3d(-xHalf, 0.0, -0.5 * depth);
     spec.upper = Eigen::Vector3d(xHalf, yTop, 0.5 * depth);
     spec.nodes = {{101, 141, 1}};
-    DensityGrid grid(spec, KernelSettings{}, 1);
+    std::vector<DensityGrid> grids;
+    for (double below : cloudInCellBelow)
+    {
+        KernelSettings settings;
+        settings.cloudInCellBelow = below;
+        grids.emplace_back(spec, settings, 1);
+    }
     SegmentHash hash(circle, spec.lower, spec.upper, 1e-3, fiberRadii[0] + dropletRadius);
     BruteForce brute(circle);
 
@@ -236,8 +247,9 @@ RunResult run(double n, int steps, bool withBrute, bool withGrid)
         spray.advance();
         parcelSum += static_cast<double>(spray.size());
         // --- grid method: deposit every parcel, commit, collision mass of every segment
-        if (withGrid)
+        for (std::size_t v = 0; v < grids.size() && withGrid; ++v)
         {
+            DensityGrid& grid = grids[v];
             const auto start = bench::Clock::now();
             Parcel p;
             p.velocity = velocity;
@@ -249,6 +261,8 @@ RunResult run(double n, int steps, bool withBrute, bool withGrid)
                 p.position = Eigen::Vector3d(spray.x[i], spray.y[i], spray.z[i]);
                 grid.deposit(p, dt);
             }
+            result.cloudInCellFraction[v] = static_cast<double>(grid.stepStatistics().parcelsCloudInCell)
+                / static_cast<double>(std::max<std::int64_t>(1, grid.stepStatistics().parcels));
             grid.commitStep();
             const double depositSeconds = bench::secondsSince(start);
             // the grid's collision mass is linear in (r_F + <r>): evaluate for both radii, time the first
@@ -266,13 +280,13 @@ RunResult run(double n, int steps, bool withBrute, bool withGrid)
                 }
                 if (r == 0)
                 {
-                    result.gridCost.add(depositSeconds + bench::secondsSince(collisionStart));
-                    result.gridDeposit.add(depositSeconds);
+                    result.gridCost[v].add(depositSeconds + bench::secondsSince(collisionStart));
+                    result.gridDeposit[v].add(depositSeconds);
                 }
-                result.gridByRadius[static_cast<std::size_t>(r)].add(total, referenceTotal[static_cast<std::size_t>(r)]);
-                result.gridByRadius[static_cast<std::size_t>(r)].addSegments(
-                    segmentMass, reference[static_cast<std::size_t>(r)],
-                    referenceTotal[static_cast<std::size_t>(r)] / static_cast<double>(circle.size()));
+                ErrorStats& stats = result.gridByRadius[v][static_cast<std::size_t>(r)];
+                stats.add(total, referenceTotal[static_cast<std::size_t>(r)]);
+                stats.addSegments(segmentMass, reference[static_cast<std::size_t>(r)],
+                                  referenceTotal[static_cast<std::size_t>(r)] / static_cast<double>(circle.size()));
             }
         }
         // --- explicit method, hashed (every step) and brute force (a few steps, checked equal)
@@ -358,7 +372,6 @@ int main(int argc, char** argv)
     std::vector<RunResult> results;
     for (double n : ns)
     {
-        // the grid with n = 1 has r_max = r_p: every parcel falls back to cloud-in-cell; run it anyway
         // n = 1: r_max = r_p is far below the node spacing (every parcel would fall back to
         // cloud-in-cell weights) and 2.8e6 parcels per step: the grid method is not run there
         results.push_back(run(n, steps, true, n > 1.0));
@@ -366,17 +379,23 @@ int main(int argc, char** argv)
         std::fprintf(stderr, "  n = %g done (%.0f parcels)\n", n, r.parcels);
     }
 
-    std::printf("-- cost per step (best over the steps; ms) and per parcel (ns) --\n");
-    std::printf("%6s %9s | %9s %9s %9s | %10s %10s %9s | %10s %10s | %s\n", "n", "parcels", "grid ms", "(deposit)",
-                "ns/parcel", "hash ms rF1", "hash ms rF2", "ns/parcel", "brute ms", "ns/pair", "brute=hash");
+    std::printf("-- cost per step (best over the steps; ms) and per parcel (ns); grid = deposit + commit + collision of\n"
+                "   the 100 segments, variant K = kernel for every parcel (paper), C = cloudInCellBelow 0.5 --\n");
+    std::printf("%6s %9s | %9s %9s %6s | %9s %9s %6s | %10s %10s %9s | %10s %9s | %s\n", "n", "parcels", "grid K ms",
+                "ns/parcel", "", "grid C ms", "ns/parcel", "cic", "hash ms rF1", "hash ms rF2", "ns/parcel", "brute ms",
+                "ns/pair", "brute=hash");
     for (RunResult& r : results)
     {
-        if (r.gridCost.all.empty())
+        for (std::size_t v = 0; v < 2; ++v)
         {
-            r.gridCost.best = r.gridDeposit.best = 0.0;
+            if (r.gridCost[v].all.empty())
+            {
+                r.gridCost[v].best = r.gridDeposit[v].best = 0.0;
+            }
         }
-        std::printf("%6.0f %9.0f | %9.2f %9.2f %9.1f | %10.2f %10.2f %9.1f | %10.1f %10.2f | %s\n", r.n, r.parcels,
-                    1e3 * r.gridCost.best, 1e3 * r.gridDeposit.best, r.gridCost.best / r.parcels * 1e9,
+        std::printf("%6.0f %9.0f | %9.2f %9.1f %6s | %9.2f %9.1f %5.0f%% | %10.2f %10.2f %9.1f | %10.1f %9.2f | %s\n", r.n,
+                    r.parcels, 1e3 * r.gridCost[0].best, r.gridCost[0].best / r.parcels * 1e9, "",
+                    1e3 * r.gridCost[1].best, r.gridCost[1].best / r.parcels * 1e9, 100.0 * r.cloudInCellFraction[1],
                     1e3 * r.hashCost[0].best, 1e3 * r.hashCost[1].best, r.hashCost[0].best / r.parcels * 1e9,
                     1e3 * r.bruteBest[0], r.bruteBest[0] / (r.parcels * circleSegments) * 1e9,
                     r.bruteChecked ? "yes" : "NO");
@@ -399,20 +418,25 @@ int main(int argc, char** argv)
         const double lambda = refTotal / m;
         std::printf("\n-- errors, fiber radius r_F = %g m: reference %.4g kg per step = %.1f droplet hits per step --\n",
                     rF, refTotal, lambda);
-        std::printf("%6s | %8s %8s %8s %8s | %8s %8s %8s %8s %10s\n", "n", "grid bias", "noise", "rms", "seg rms",
-                    "expl bias", "noise", "Poisson", "seg rms", "hits/step");
+        std::printf("%6s | %8s %8s %8s | %8s %8s %8s | %8s %8s %8s %8s %10s\n", "n", "K bias", "noise", "seg rms",
+                    "C bias", "noise", "seg rms", "expl bias", "noise", "Poisson", "seg rms", "hits/step");
         for (RunResult& r : results)
         {
-            const ErrorStats& g = r.gridByRadius[ri];
             const ErrorStats& e = r.explicitStats[ri];
-            if (g.steps == 0)
+            std::printf("%6.0f |", r.n);
+            for (std::size_t v = 0; v < 2; ++v)
             {
-                std::printf("%6.0f | %8s %8s %8s %8s | %8.4f %8.4f %8.4f %8.3f %10.2f\n", r.n, "-", "-", "-", "-",
-                            e.bias(), e.noise(), std::sqrt(r.n / lambda), e.segmentRms(), r.meanHits[ri]);
-                continue;
+                const ErrorStats& g = r.gridByRadius[v][ri];
+                if (g.steps == 0)
+                {
+                    std::printf(" %8s %8s %8s |", "-", "-", "-");
+                }
+                else
+                {
+                    std::printf(" %8.4f %8.4f %8.3f |", g.bias(), g.noise(), g.segmentRms());
+                }
             }
-            std::printf("%6.0f | %8.4f %8.4f %8.4f %8.3f | %8.4f %8.4f %8.4f %8.3f %10.2f\n", r.n, g.bias(), g.noise(),
-                        g.rms(), g.segmentRms(), e.bias(), e.noise(), std::sqrt(r.n / lambda), e.segmentRms(),
+            std::printf(" %8.4f %8.4f %8.4f %8.3f %10.2f\n", e.bias(), e.noise(), std::sqrt(r.n / lambda), e.segmentRms(),
                         r.meanHits[ri]);
         }
         // equal statistical error
@@ -427,25 +451,29 @@ int main(int argc, char** argv)
                     "     B = explicit at n = 1 averaged over K = noise_e(1)^2 / noise_g^2 independent evaluations\n"
                     "         (steps or replicas), the cost of actually reaching the grid's noise (= A when n_e >= 1).\n",
                     rF);
-        std::printf("%6s %9s %9s | %9s %9s %10s | %10s %8s %8s | %10s %8s %8s\n", "n_g", "noise_g", "grid ms", "n_e",
-                    "K", "parcels_e", "hash ms B", "ratio A", "ratio B", "brute ms B", "ratio A", "ratio B");
-        for (RunResult& r : results)
+        for (std::size_t v = 0; v < 2; ++v)
         {
-            if (r.gridCost.all.empty())
+            std::printf("   grid variant: %s\n", variantName[v]);
+            std::printf("%6s %9s %9s | %9s %9s %10s | %10s %8s %8s | %10s %8s %8s\n", "n_g", "noise_g", "grid ms", "n_e",
+                        "K", "parcels_e", "hash ms B", "ratio A", "ratio B", "brute ms B", "ratio A", "ratio B");
+            for (RunResult& r : results)
             {
-                continue;
+                if (r.gridCost[v].all.empty())
+                {
+                    continue;
+                }
+                const double noise = r.gridByRadius[v][ri].noise();
+                const double nEqual = noise * noise * lambda;
+                const double nUsed = std::max(1.0, nEqual);
+                const double parcelsE = ones.parcels / nUsed;
+                const double k = nEqual < 1.0 ? std::max(1.0, noiseOne * noiseOne / (noise * noise)) : 1.0;
+                const double hashA = 1e3 * hashPerParcel * parcelsE;
+                const double bruteA = 1e3 * brutePerParcel * parcelsE;
+                const double gridMs = 1e3 * r.gridCost[v].best;
+                std::printf("%6.0f %9.4f %9.2f | %9.3f %9.1f %10.0f | %10.2f %7.1fx %7.1fx | %10.0f %7.0fx %7.0fx\n", r.n,
+                            noise, gridMs, nEqual, k, parcelsE, k * hashA, hashA / gridMs, k * hashA / gridMs,
+                            k * bruteA, bruteA / gridMs, k * bruteA / gridMs);
             }
-            const double noise = r.gridByRadius[ri].noise();
-            const double nEqual = noise * noise * lambda;
-            const double nUsed = std::max(1.0, nEqual);
-            const double parcelsE = ones.parcels / nUsed;
-            const double k = nEqual < 1.0 ? std::max(1.0, noiseOne * noiseOne / (noise * noise)) : 1.0;
-            const double hashA = 1e3 * hashPerParcel * parcelsE;
-            const double bruteA = 1e3 * brutePerParcel * parcelsE;
-            const double gridMs = 1e3 * r.gridCost.best;
-            std::printf("%6.0f %9.4f %9.2f | %9.3f %9.1f %10.0f | %10.2f %7.1fx %7.1fx | %10.0f %7.0fx %7.0fx\n", r.n, noise,
-                        gridMs, nEqual, k, parcelsE, k * hashA, hashA / gridMs, k * hashA / gridMs, k * bruteA,
-                        bruteA / gridMs, k * bruteA / gridMs);
         }
     }
     std::printf("\nratio = explicit cost / grid cost per step at equal statistical error (> 1: grid method faster).\n"

@@ -42,11 +42,14 @@ bin="$build/bench"
 {
     echo "date: $(date -Is)"
     echo "host: $(uname -srm)"
-    lscpu | grep -E "Model name|^CPU\(s\)|Thread|Core|Socket|MHz|L1d|L2|L3|Flags" | sed 's/^Flags:.*avx512f.*/Flags: ... avx2 fma avx512f ... (see lscpu)/'
+    lscpu | grep -E "Model name|^CPU\(s\)|Thread|Core|Socket|MHz|L1d|L2|L3|Hypervisor|Flags" | sed 's/^Flags:.*avx512f.*/Flags: ... avx2 fma avx512f ... (see lscpu)/'
+    grep -m3 -E "^cpu family|^model\s|^cpu MHz" /proc/cpuinfo
     getconf -a | grep -E "LEVEL[123]_D?CACHE_SIZE"
     free -g | head -2
     echo "compiler: $(c++ --version | head -1)"
     echo "CMAKE_CXX_FLAGS_RELEASE: $(grep CMAKE_CXX_FLAGS_RELEASE: "$build/CMakeCache.txt" | cut -d= -f2-) (std=c++17, no -march)"
+    echo "core at commit: $(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)$(git -C "$root" diff --quiet HEAD -- src/core 2>/dev/null || echo ' (src/core modified)')"
+    echo "clock: thread CPU time (BENCH_CLOCK=wall for wall-clock time)"
     echo "load average at start: $(cat /proc/loadavg)"
 } > "$out/machine.txt"
 cat "$out/machine.txt"

@@ -93,6 +93,24 @@ Foam::scalar Foam::dropletFiber::airSampler::cellValue
 }
 
 
+Foam::label Foam::dropletFiber::airSampler::findCell
+(
+    const point& p,
+    const label hint
+) const
+{
+    if
+    (
+        hint >= 0 && hint < mesh_.nCells()
+     && mesh_.pointInCell(p, hint, polyMesh::FACE_PLANES)
+    )
+    {
+        return hint;
+    }
+    return mesh_.findCell(p);
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::dropletFiber::airSampler::airSampler
@@ -155,10 +173,12 @@ Foam::scalar Foam::dropletFiber::airSampler::referenceViscosity() const
     // across processors in one reduction
     constexpr label width = 6;
     List<scalar> values(width*n, Zero);
+    cellHint_.setSize(n, -1);
     for (label i = 0; i < n; ++i)
     {
         const point p(points(0, i), points(1, i), points(2, i));
-        const label celli = mesh_.findCell(p);
+        const label celli = findCell(p, cellHint_[i]);
+        cellHint_[i] = celli;
         if (celli < 0)
         {
             continue;
