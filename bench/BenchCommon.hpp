@@ -107,8 +107,9 @@ private:
 // Keeps a value alive so the compiler cannot drop the computation that made it.
 inline void sink(double value)
 {
-    static volatile double keep;
+    static volatile double keep = 0.0;
     keep = value;
+    (void)keep;
 }
 
 inline double envDouble(const char* name, double fallback)

@@ -8,15 +8,17 @@
 //
 // Usage:
 //   gridTrafficBench --parcels PREFIX RANKS --lower X Y Z --upper X Y Z --spacing H
-//                    [--flat DIR] [--cap RMAXCAP] [--dt DT] [--label TEXT]
+//                    [--flat DIR] [--cap RMAXCAP] [--cic BELOW] [--dt DT] [--label TEXT]
 //       parcels from PREFIX0.txt .. PREFIX<RANKS-1>.txt (bench/foamParcels.py writes
 //       them from an OpenFOAM case, one file per processor directory); --flat 2: one node
-//       layer in z (the 2D case's empty direction, as the function object does)
+//       layer in z (the 2D case's empty direction, as the function object does); --cic:
+//       KernelSettings::cloudInCellBelow (the function object's default is 0.5; default here 0)
 //   gridTrafficBench --synthetic3d
 //       a 3D cone spray (see makeCone), decomposed into 2 and 4 ranks
 //
 // Bytes: the union box of N nodes is sent as N * 7 doubles (GridQuantities); with P ranks,
-// listCombineGather + listCombineScatter send 2 (P - 1) such messages per step.
+// listCombineGather + listCombineScatter send 2 (P - 1) such messages per step. "touched %":
+// nodes that received mass on some rank, the least any sparse exchange would have to move.
 #include "BenchCommon.hpp"
 
 #include "grid/DensityGrid.hpp"
@@ -84,6 +86,7 @@ struct TrafficRow
     std::size_t gridNodes = 0;
     std::vector<std::size_t> rankBoxNodes;
     std::size_t unionNodes = 0;
+    std::size_t touchedNodes = 0; // nodes with mass on any rank: what a sparse exchange would move
     double packSeconds = 0.0;   // packStep + unpackStep of the union box on one rank
     double visitedPerParcel = 0.0;
     double weightedPerParcel = 0.0;
@@ -100,6 +103,7 @@ TrafficRow measure(const std::string& label, const GridSpec& spec, const KernelS
     row.gridNodes = spec.nodeCount();
     IndexBox unionBox;
     std::vector<Parcel> all;
+    std::vector<char> touched(spec.nodeCount(), 0);
     for (const std::vector<Parcel>& parcels : rankParcels)
     {
         DensityGrid grid(spec, kernel, 1);
@@ -108,11 +112,19 @@ TrafficRow measure(const std::string& label, const GridSpec& spec, const KernelS
             grid.deposit(p, dt);
         }
         row.rankBoxNodes.push_back(grid.stepBox().empty() ? 0 : grid.stepBox().nodeCount());
+        for (std::size_t node = 0; node < spec.nodeCount(); ++node)
+        {
+            touched[node] |= grid.stepValues()[node * nQuantities + quantityMass] != 0.0 ? 1 : 0;
+        }
         unionBox = unionBox.united(grid.stepBox());
         all.insert(all.end(), parcels.begin(), parcels.end());
     }
     row.parcels = all.size();
     row.unionNodes = unionBox.empty() ? 0 : unionBox.nodeCount();
+    for (char t : touched)
+    {
+        row.touchedNodes += t != 0 ? 1 : 0;
+    }
 
     // serial deposition cost of the whole spray, and the pack/unpack cost of the union box
     DensityGrid grid(spec, kernel, 1);
@@ -143,9 +155,9 @@ TrafficRow measure(const std::string& label, const GridSpec& spec, const KernelS
 
 void printHeader()
 {
-    std::printf("%-34s %5s %7s %9s %10s | %-23s %9s %10s %9s | %8s %9s | %8s %7s %7s %6s\n", "spray", "ranks",
+    std::printf("%-34s %5s %7s %9s %10s | %-23s %9s %10s %9s | %8s %9s | %9s | %8s %7s %7s %6s\n", "spray", "ranks",
                 "parcels", "nodes", "full MB", "rank boxes (% of grid)", "union %", "msg MB", "MB/step", "saved",
-                "pack ms", "ns/parc", "visit/p", "wght/p", "capped");
+                "pack ms", "touched %", "ns/parc", "visit/p", "wght/p", "capped");
 }
 
 void printRow(const TrafficRow& r)
@@ -161,10 +173,12 @@ void printRow(const TrafficRow& r)
                       100.0 * static_cast<double>(b) / static_cast<double>(r.gridNodes));
         boxes += buffer;
     }
-    std::printf("%-34s %5d %7zu %9zu %10.3f | %-23s %8.1f%% %10.3f %9.3f | %7.1f%% %9.3f | %8.0f %7.1f %7.1f %5.0f%%\n",
+    std::printf("%-34s %5d %7zu %9zu %10.3f | %-23s %8.1f%% %10.3f %9.3f | %7.1f%% %9.3f | %8.1f%% | %8.0f %7.1f %7.1f "
+                "%5.0f%%\n",
                 r.label.c_str(), r.ranks, r.parcels, r.gridNodes, fullMB, boxes.c_str(),
                 100.0 * static_cast<double>(r.unionNodes) / static_cast<double>(r.gridNodes), msgMB,
-                2.0 * (r.ranks - 1) * msgMB, 100.0 * (1.0 - msgMB / fullMB), 1e3 * r.packSeconds, r.nsPerParcel,
+                2.0 * (r.ranks - 1) * msgMB, 100.0 * (1.0 - msgMB / fullMB), 1e3 * r.packSeconds,
+                100.0 * static_cast<double>(r.touchedNodes) / static_cast<double>(r.gridNodes), r.nsPerParcel,
                 r.visitedPerParcel, r.weightedPerParcel, 100.0 * r.cappedFraction);
 }
 
@@ -205,7 +219,7 @@ int main(int argc, char** argv)
     int ranks = 0;
     bool synthetic = false;
     Eigen::Vector3d lower(0, 0, 0), upper(0, 0, 0);
-    double spacing = 0.0, cap = 0.0, dt = 5e-4;
+    double spacing = 0.0, cap = 0.0, dt = 5e-4, cic = 0.0;
     int flat = -1;
     for (int a = 1; a < argc; ++a)
     {
@@ -241,6 +255,10 @@ int main(int argc, char** argv)
         {
             cap = std::atof(argv[++a]);
         }
+        else if (arg == "--cic" && a + 1 < argc)
+        {
+            cic = std::atof(argv[++a]);
+        }
         else if (arg == "--dt" && a + 1 < argc)
         {
             dt = std::atof(argv[++a]);
@@ -266,6 +284,7 @@ int main(int argc, char** argv)
     }
     KernelSettings kernel;
     kernel.rMaxCap = cap;
+    kernel.cloudInCellBelow = cic;
     if (synthetic)
     {
         const GridSpec spec = specFromSpacing(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0.1, 0.15, 0.1), 0.002);

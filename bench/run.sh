@@ -9,7 +9,7 @@
 #                 60 steps in the paper setting, tutorial -short): ~5 min
 #   -no-tutorial  skip the channelSpray runs (tutorial share, its spray's traffic)
 #   -out DIR      where the outputs go (default build-bench/bench-results/<date>)
-# Full run: ~30-40 min on 2 cores (the tutorial serial + 2 ranks included).
+# Full run: ~12 min on 2 cores (the tutorial serial + 2 ranks included).
 #
 # Builds in build-bench (Release, the project's flags). The OpenFOAM part needs
 # the library built with ./Allwmake.
@@ -84,10 +84,10 @@ if $tutorial; then
     run tutorialShare "$root/bench/tutorialShare.sh" $short -keep "$out/tutorial"
     # the tutorial's own spray: per-rank boxes of the 2-rank run at its last write time
     case_dir="$out/tutorial/parallel/channelSpray"
-    last=$(ls -d "$case_dir"/processor0/[0-9]* | xargs -n1 basename | sort -g | tail -1)
+    last=$(find "$case_dir/processor0" -mindepth 1 -maxdepth 1 -type d -name '[0-9]*' -printf '%f\n' | sort -g | tail -1)
     python3 "$root/bench/foamParcels.py" "$case_dir" "$last" "$out/tutorialParcels_rank" > "$out/tutorialParcels.txt"
     run gridTrafficTutorial "$bin/gridTrafficBench" --parcels "$out/tutorialParcels_rank" 2 \
-        --lower 0 0 0 --upper 0.05 0.15 0.01 --spacing 1e-3 --flat 2 --cap 6e-3 --dt 5e-4 \
+        --lower 0 0 0 --upper 0.05 0.15 0.01 --spacing 1e-3 --flat 2 --cap 6e-3 --cic 0.5 --dt 5e-4 \
         --label "channelSpray t=$last, 2 ranks"
 fi
 echo

@@ -38,10 +38,12 @@ echo "scratch: $scratch"
 
 for mode in serial parallel; do
     dir="$scratch/$mode/channelSpray"
-    rm -rf "$scratch/$mode"
+    rm -rf "${scratch:?}/$mode"
     mkdir -p "$scratch/$mode"
     cp -r "$tutorial" "$dir"
-    (cd "$dir" && ./Allclean >/dev/null 2>&1 || true)
+    if ! (cd "$dir" && ./Allclean >/dev/null 2>&1); then
+        echo "tutorialShare: Allclean failed in $dir (continuing)" >&2
+    fi
     args="$short"
     [ "$mode" = parallel ] && args="-parallel $short"
     echo "running channelSpray $args ..."
