@@ -256,7 +256,18 @@ Foam::functionObjects::dropletFiberCollision::depositParcels(const scalar dt)
         p.diameter = parcels_.d[i];
         p.nParticle = parcels_.nParticle[i];
         p.rhoDroplet = parcels_.rho[i];
-        grid.deposit(p, dt);
+        try
+        {
+            grid.deposit(p, dt);
+        }
+        catch (const std::exception& e)
+        {
+            // A parcel with NaN or negative values: a broken cloud, not ours
+            FatalErrorInFunction
+                << type() << " " << name() << ": parcel " << i
+                << " at " << parcels_.position[i] << " cannot be deposited: "
+                << e.what() << exit(FatalError);
+        }
     }
 
     // Sum the step's accumulation across processors, over the union of the
@@ -565,12 +576,21 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
             List<bool> inside;
             return air_->sample(points, inside);
         };
-    const ::dropletFiber::StepReport report =
-        dropletFiber::checkedCoreCall
-        (
-            dict_,
-            [&]() { return solver_->step(fibers_, dt, sampler, &capture); }
-        );
+    ::dropletFiber::StepReport report;
+    try
+    {
+        report = solver_->step(fibers_, dt, sampler, &capture);
+    }
+    catch (const std::exception& e)
+    {
+        // A fiber that cannot be advanced even at the smallest sub-step stops
+        // the run with the reason (the results written so far stay)
+        FatalErrorInFunction
+            << type() << " " << name() << ": fiber step failed at time "
+            << time_.timeName() << ": " << e.what() << nl
+            << "    Reduce the time step, or raise fibers.maxSubSteps ("
+            << solverSettings_.maxSubSteps << ")." << exit(FatalError);
+    }
     totals_.captured += capturedStep;
 
     // 6. Fibers that left

@@ -105,6 +105,9 @@ Eigen::Vector3d toEigen(const Foam::vector& v)
         }
     }
 
+    s.maxSubSteps =
+        int(getLabelInRange(fibersDict, "maxSubSteps", s.maxSubSteps, 1, 1000000));
+
     const scalar midpoint = 0.5;
     s.theta =
         getCheckedScalar
