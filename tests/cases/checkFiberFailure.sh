@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# A fiber that cannot be advanced (a limp, fast fiber with one sub-step allowed)
+# stops the run with an OpenFOAM error giving the reason, not a crash, and the
+# per-step table written so far stays. Usage: checkFiberFailure.sh CASE_DIR WORK_DIR
+set -uo pipefail
+# shellcheck disable=SC1091
+. "$(cd "${0%/*}" && pwd)/lib/prepareCase.sh"
+prepareCaseCopy "$1" "$2"
+fo=functions/dropletFiber/fibers
+foamDictionary system/controlDict -entry $fo/maxSubSteps -set 1 > /dev/null
+foamDictionary system/controlDict -entry $fo/youngsModulus -set 0 > /dev/null
+foamDictionary system/controlDict -entry $fo/injectors/spinner/velocity -set "(30 -20 0)" > /dev/null
+"$(foamDictionary -entry application -value system/controlDict)" > log.fail 2>&1
+status=$?
+passed=0; failed=0
+check() { if eval "$1"; then passed=$((passed+1)); else failed=$((failed+1)); echo "FAILED: $2"; fi; }
+check "[ $status -ne 0 ]" "solver exited with $status, expected a failure"
+check 'grep -q "FOAM FATAL ERROR" log.fail' "no OpenFOAM fatal error in the log"
+check 'grep -q "fiber step failed at time .*did not converge" log.fail' "the error does not give the reason"
+check '! grep -q -i "segmentation\|terminate called" log.fail' "the run crashed"
+rows=$(grep -vc "^#" postProcessing/dropletFiber/0/dropletFiber.dat)
+check "[ ${rows:-0} -ge 1 ]" "the table written before the failure is gone"
+grep -A2 "FOAM FATAL ERROR" log.fail | head -3
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]
