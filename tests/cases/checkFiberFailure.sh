@@ -12,8 +12,6 @@ foamDictionary system/controlDict -entry $fo/youngsModulus -set 0 > /dev/null
 foamDictionary system/controlDict -entry $fo/injectors/spinner/velocity -set "(30 -20 0)" > /dev/null
 "$(foamDictionary -entry application -value system/controlDict)" > log.fail 2>&1
 status=$?
-passed=0; failed=0
-check() { if eval "$1"; then passed=$((passed+1)); else failed=$((failed+1)); echo "FAILED: $2"; fi; }
 check "[ $status -ne 0 ]" "solver exited with $status, expected a failure"
 check 'grep -q "FOAM FATAL ERROR" log.fail' "no OpenFOAM fatal error in the log"
 check 'grep -q "fiber step failed at time .*did not converge" log.fail' "the error does not give the reason"
@@ -21,5 +19,4 @@ check '! grep -q -i "segmentation\|terminate called" log.fail' "the run crashed"
 rows=$(grep -vc "^#" postProcessing/dropletFiber/0/dropletFiber.dat)
 check "[ ${rows:-0} -ge 1 ]" "the table written before the failure is gone"
 grep -A2 "FOAM FATAL ERROR" log.fail | head -3
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+checkSummary

@@ -11,13 +11,10 @@ sed -i "0,/clouds          (kinematicCloud);/s//clouds          (noSuchCloud);/"
 grep -q "noSuchCloud" system/controlDict || { echo "FAILED: could not edit controlDict"; exit 1; }
 pimpleFoam > log.missingCloud 2>&1
 status=$?
-passed=0; failed=0
-check() { if eval "$1"; then passed=$((passed+1)); else failed=$((failed+1)); echo "FAILED: $2"; fi; }
 check "[ $status -ne 0 ]" "pimpleFoam exited with $status, expected a failure"
 check 'grep -q "FOAM FATAL IO ERROR" log.missingCloud' "no FatalIOError in the log"
 check 'grep -q "Cloud .noSuchCloud. named in entry .clouds." log.missingCloud' "error does not name the cloud and the entry"
 check 'grep -A1 "Clouds that exist" log.missingCloud | grep -q kinematicCloud' "error does not list the existing cloud"
 check '! grep -q "^Time = 0.004" log.missingCloud' "run went on after the error"
 grep -A6 "FOAM FATAL IO ERROR" log.missingCloud | head -8
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+checkSummary

@@ -1,7 +1,9 @@
 # shellcheck shell=bash
+# Helpers of the case checks that run the solver themselves (sourced, not run).
+#
 # prepareCaseCopy CASE_DIR WORK_DIR: load OpenFOAM, copy the case to WORK_DIR
 # (replacing it), restore 0/ and make the mesh; leaves the shell in WORK_DIR.
-# For checks that run the solver themselves (sourced, not run).
+
 prepareCaseCopy() {
     local caseDir="$1" work="$2" here
     here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
@@ -15,4 +17,22 @@ prepareCaseCopy() {
     . "$WM_PROJECT_DIR/bin/tools/RunFunctions"
     restore0Dir > /dev/null
     blockMesh > log.blockMesh 2>&1 || { echo "FAILED: blockMesh"; exit 1; }
+}
+
+# check CONDITION MESSAGE: evaluate a shell condition, count it as passed or
+# failed (printing MESSAGE when it fails); checkSummary prints the counts in
+# the `N passed, N failed` form and returns non-zero when any failed.
+checksPassed=0
+checksFailed=0
+check() {
+    if eval "$1"; then
+        checksPassed=$((checksPassed + 1))
+    else
+        checksFailed=$((checksFailed + 1))
+        echo "FAILED: $2"
+    fi
+}
+checkSummary() {
+    echo "$checksPassed passed, $checksFailed failed"
+    [ "$checksFailed" -eq 0 ]
 }
