@@ -161,8 +161,7 @@ Foam::scalar Foam::dropletFiber::airSampler::referenceViscosity() const
 
 ::dropletFiber::AirSample Foam::dropletFiber::airSampler::sample
 (
-    const Eigen::Matrix3Xd& points,
-    List<bool>& inside
+    const Eigen::Matrix3Xd& points
 ) const
 {
     const label n = points.cols();
@@ -201,12 +200,10 @@ Foam::scalar Foam::dropletFiber::airSampler::referenceViscosity() const
     air.velocity.resize(3, n);
     air.density.resize(n);
     air.viscosity.resize(n);
-    inside.setSize(n);
     for (label i = 0; i < n; ++i)
     {
         const scalar* v = &values[width*i];
         const scalar found = v[5];
-        inside[i] = found > 0;
         if (found > 0)
         {
             air.velocity.col(i) = Eigen::Vector3d(v[0], v[1], v[2])/found;

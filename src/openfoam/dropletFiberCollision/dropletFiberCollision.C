@@ -11,6 +11,7 @@ Description
 
 #include "dropletFiberCollision.H"
 #include "dictionaryChecks.H"
+#include "fiberStateIO.H"
 #include "cloud.H"
 #include "Time.H"
 #include "fvMesh.H"
@@ -33,19 +34,6 @@ namespace functionObjects
     );
 }
 }
-
-
-// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
-
-namespace
-{
-
-Eigen::Vector3d toEigen(const Foam::vector& v)
-{
-    return Eigen::Vector3d(v.x(), v.y(), v.z());
-}
-
-} // End anonymous namespace
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -116,8 +104,8 @@ void Foam::functionObjects::dropletFiberCollision::readGrid
         }
     }
 
-    gridSpec_.lower = toEigen(lower);
-    gridSpec_.upper = toEigen(upper);
+    gridSpec_.lower = dropletFiber::toEigen(lower);
+    gridSpec_.upper = dropletFiber::toEigen(upper);
     gridSpec_.nodes = {{int(nodes.x()), int(nodes.y()), int(nodes.z())}};
     checkedCoreCall(gridDict, [this]() { gridSpec_.validate(); });
 
@@ -251,8 +239,8 @@ Foam::functionObjects::dropletFiberCollision::depositParcels(const scalar dt)
     for (label i = 0; i < parcels_.size(); ++i)
     {
         ::dropletFiber::Parcel p;
-        p.position = toEigen(parcels_.position[i]);
-        p.velocity = toEigen(parcels_.U[i]);
+        p.position = dropletFiber::toEigen(parcels_.position[i]);
+        p.velocity = dropletFiber::toEigen(parcels_.U[i]);
         p.diameter = parcels_.d[i];
         p.nParticle = parcels_.nParticle[i];
         p.rhoDroplet = parcels_.rho[i];
@@ -573,8 +561,7 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
     const ::dropletFiber::AirSampler sampler =
         [this](const Eigen::Matrix3Xd& points)
         {
-            List<bool> inside;
-            return air_->sample(points, inside);
+            return air_->sample(points);
         };
     ::dropletFiber::StepReport report;
     try

@@ -4,23 +4,11 @@
 
 #include "fiberSettings.H"
 #include "dictionaryChecks.H"
+#include "fiberStateIO.H"
 #include "uniformDimensionedFields.H"
 #include "IOobject.H"
 #include "IFstream.H"
 #include "vectorList.H"
-
-// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
-
-namespace
-{
-
-Eigen::Vector3d toEigen(const Foam::vector& v)
-{
-    return Eigen::Vector3d(v.x(), v.y(), v.z());
-}
-
-} // End anonymous namespace
-
 
 // * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * //
 
@@ -80,7 +68,7 @@ Eigen::Vector3d toEigen(const Foam::vector& v)
             g = uniformDimensionedVectorField(gIO).value();
         }
     }
-    s.gravity = toEigen(g);
+    s.gravity = dropletFiber::toEigen(g);
 
     const word drag =
         getChoice
@@ -147,9 +135,9 @@ Foam::dropletFiber::readFiberInjectors(const dictionary& fibersDict)
         const dictionary& d = e.dict();
         ::dropletFiber::FiberInjectorSpec s;
         s.name = e.keyword();
-        s.position = toEigen(d.get<vector>("position"));
-        s.direction = toEigen(d.get<vector>("direction"));
-        s.velocity = toEigen(d.get<vector>("velocity"));
+        s.position = dropletFiber::toEigen(d.get<vector>("position"));
+        s.direction = dropletFiber::toEigen(d.get<vector>("direction"));
+        s.velocity = dropletFiber::toEigen(d.get<vector>("velocity"));
         s.length = getPositive(d, "length");
         s.rate = getPositive(d, "rate");
         s.startTime = d.lookupOrDefault<scalar>("startTime", 0);
@@ -195,7 +183,7 @@ Foam::dropletFiber::readFixedFibers(const dictionary& fibersDict)
         Eigen::Matrix3Xd x(3, pts.size());
         forAll(pts, i)
         {
-            x.col(i) = toEigen(pts[i]);
+            x.col(i) = dropletFiber::toEigen(pts[i]);
         }
         const ::dropletFiber::FiberMaterial material =
             readFiberMaterial(d, &defaults);
