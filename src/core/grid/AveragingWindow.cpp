@@ -13,6 +13,22 @@ constexpr std::int64_t formatVersion = 1;
 constexpr std::size_t headerSize = 8;
 } // namespace
 
+bool AveragingWindow::boxHolds(const IndexBox& box, std::size_t node) const
+{
+    const std::size_t nx = static_cast<std::size_t>(nodes_[0]);
+    const std::size_t ny = static_cast<std::size_t>(nodes_[1]);
+    const std::array<int, 3> index{{static_cast<int>(node % nx), static_cast<int>((node / nx) % ny),
+                                    static_cast<int>(node / (nx * ny))}};
+    for (int d = 0; d < 3; ++d)
+    {
+        if (index[d] < box.lo[d] || index[d] > box.hi[d])
+        {
+            return false;
+        }
+    }
+    return true;
+}
+
 AveragingWindow::AveragingWindow(const std::array<int, 3>& nodes, int nQuantities, int length)
     : nodes_(nodes), nQuantities_(nQuantities), length_(length)
 {
@@ -83,10 +99,42 @@ void AveragingWindow::push(const std::vector<double>& step, const IndexBox& box)
                               target.begin() + static_cast<std::ptrdiff_t>(offset)); });
     slotBoxes_[slot] = box;
     ++committed_;
-    recomputeTotal(evicted.united(box));
+    staleBox_ = staleBox_.united(evicted.united(box));
 }
 
-void AveragingWindow::recomputeTotal(const IndexBox& box)
+const std::vector<double>& AveragingWindow::total() const
+{
+    if (!staleBox_.empty())
+    {
+        recomputeTotal(staleBox_);
+        staleBox_ = IndexBox{};
+    }
+    return total_;
+}
+
+void AveragingWindow::nodeTotal(std::size_t node, double* sums) const
+{
+    const std::size_t q = static_cast<std::size_t>(nQuantities_);
+    const std::size_t offset = node * q;
+    if (!boxHolds(staleBox_, node))
+    {
+        std::copy(total_.begin() + static_cast<std::ptrdiff_t>(offset),
+                  total_.begin() + static_cast<std::ptrdiff_t>(offset + q), sums);
+        return;
+    }
+    // The same additions in the same order as recomputeTotal.
+    std::fill(sums, sums + q, 0.0);
+    for (int age = 0; age < filled_; ++age)
+    {
+        const double* slot = slots_[slotIndex(age)].data() + offset;
+        for (std::size_t n = 0; n < q; ++n)
+        {
+            sums[n] += slot[n];
+        }
+    }
+}
+
+void AveragingWindow::recomputeTotal(const IndexBox& box) const
 {
     forEachBoxRow(box, [&](std::size_t offset, std::size_t count)
                   {
@@ -206,6 +254,7 @@ void AveragingWindow::restore(const WindowState& state)
         position += count;
     }
     committed_ = c[7];
+    staleBox_ = IndexBox{};
     recomputeTotal(box());
 }
 

@@ -8,11 +8,16 @@
 //
 // Exact, drift-free total: instead of a running sum with add-new/subtract-oldest (whose
 // round-off residue leaves small negative masses in empty regions and would make a
-// restarted run differ from a continuous one), every push recomputes the total over the
-// index boxes touched by the new and by the evicted step, summing the slots oldest to
-// newest. Outside those boxes both steps are zero, so the total there is unchanged. So
-// the total is always, bit for bit, the chronological sum of the slots, and a restored
-// window reproduces it exactly. Cost per push: (|new box| + |old box|) * nQuantities * W.
+// restarted run differ from a continuous one), the total is the sum of the slots, oldest
+// to newest, recomputed over the index boxes touched by the new and by the evicted steps
+// (outside them both steps are zero, so the total there is unchanged). So the total is
+// always, bit for bit, the chronological sum of the slots, and a restored window
+// reproduces it exactly.
+//
+// Lazily: push() only marks those boxes stale. total() brings the whole array up to
+// date (cost: |stale box| * nQuantities * W, paid by output at write times), while
+// nodeTotal() sums the slots of one node in the same order (bit-identical to total()),
+// so the per-step sampling along the fibers does not pay for the whole box every step.
 #pragma once
 
 #include "grid/GridSpec.hpp"
@@ -43,7 +48,10 @@ public:
     // Commit one step: `step` is a full per-node array that is zero outside `box`.
     void push(const std::vector<double>& step, const IndexBox& box);
 
-    const std::vector<double>& total() const { return total_; }
+    // The window total of every node (brings the stale box up to date first).
+    const std::vector<double>& total() const;
+    // The window total of one node, nQuantities values into `sums` (no full update).
+    void nodeTotal(std::size_t node, double* sums) const;
     int length() const { return length_; }
     int filled() const { return filled_; }               // steps in the window, <= length
     std::int64_t committedSteps() const { return committed_; }
@@ -58,7 +66,8 @@ public:
 
 private:
     std::size_t slotIndex(int age) const { return static_cast<std::size_t>((head_ + age) % length_); }
-    void recomputeTotal(const IndexBox& box);
+    void recomputeTotal(const IndexBox& box) const;
+    bool boxHolds(const IndexBox& box, std::size_t node) const;
     template<class F>
     void forEachBoxRow(const IndexBox& box, F&& f) const;
 
@@ -70,7 +79,9 @@ private:
     int head_ = 0;   // slot of the oldest step
     int filled_ = 0;
     std::int64_t committed_ = 0;
-    std::vector<double> total_;
+    // total_ is a cache of the slots' sum, valid outside staleBox_.
+    mutable std::vector<double> total_;
+    mutable IndexBox staleBox_;
 };
 
 } // namespace dropletFiber

@@ -418,8 +418,7 @@ DropletFieldValue DensityGrid::fieldFromSums(const std::array<double, nQuantitie
 DropletFieldValue DensityGrid::nodeValue(std::size_t flatIndex) const
 {
     std::array<double, nQuantities> sums{};
-    const double* total = window_.total().data() + flatIndex * nQuantities;
-    std::copy(total, total + nQuantities, sums.begin());
+    window_.nodeTotal(flatIndex, sums.data());
     return fieldFromSums(sums);
 }
 
@@ -438,13 +437,14 @@ DropletFieldValue DensityGrid::sample(const Eigen::Vector3d& point) const
     }
     const CornerWeights corners = multilinearWeights(spec_, point);
     std::array<double, nQuantities> sums{};
+    std::array<double, nQuantities> total{};
     for (int c = 0; c < corners.count; ++c)
     {
-        const double* total = window_.total().data() + corners.node[static_cast<std::size_t>(c)] * nQuantities;
+        window_.nodeTotal(corners.node[static_cast<std::size_t>(c)], total.data());
         const double w = corners.weight[static_cast<std::size_t>(c)];
         for (int q = 0; q < nQuantities; ++q)
         {
-            sums[static_cast<std::size_t>(q)] += w * total[q];
+            sums[static_cast<std::size_t>(q)] += w * total[static_cast<std::size_t>(q)];
         }
     }
     return fieldFromSums(sums);

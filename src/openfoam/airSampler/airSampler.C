@@ -99,13 +99,25 @@ Foam::label Foam::dropletFiber::airSampler::findCell
     const label hint
 ) const
 {
-    if
-    (
-        hint >= 0 && hint < mesh_.nCells()
-     && mesh_.pointInCell(p, hint, polyMesh::FACE_PLANES)
-    )
+    if (!mesh_.bounds().contains(p))
     {
-        return hint;
+        return -1;
+    }
+    if (hint >= 0 && hint < mesh_.nCells())
+    {
+        // FACE_PLANES is exact for the convex cells of block meshes and cheap;
+        // a point it misses (warped faces) still ends in the full search
+        if (mesh_.pointInCell(p, hint, polyMesh::FACE_PLANES))
+        {
+            return hint;
+        }
+        for (const label nbr : mesh_.cellCells()[hint])
+        {
+            if (mesh_.pointInCell(p, nbr, polyMesh::FACE_PLANES))
+            {
+                return nbr;
+            }
+        }
     }
     return mesh_.findCell(p);
 }
