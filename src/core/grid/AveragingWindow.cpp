@@ -166,6 +166,12 @@ WindowState AveragingWindow::save() const
 {
     WindowState state;
     state.counters = {formatVersion, nodes_[0], nodes_[1], nodes_[2], nQuantities_, length_, filled_, committed_};
+    std::size_t valueCount = 0;
+    for (int age = 0; age < filled_; ++age)
+    {
+        valueCount += slotBoxes_[slotIndex(age)].nodeCount() * static_cast<std::size_t>(nQuantities_);
+    }
+    state.values.reserve(valueCount);
     for (int age = 0; age < filled_; ++age)
     {
         const IndexBox& b = slotBoxes_[slotIndex(age)];

@@ -93,33 +93,50 @@ Foam::scalar Foam::dropletFiber::airSampler::cellValue
 }
 
 
+Foam::label Foam::dropletFiber::airSampler::findCellNear
+(
+    const point& p,
+    const label seed
+) const
+{
+    if (seed < 0 || seed >= mesh_.nCells())
+    {
+        return -1;
+    }
+    // FACE_PLANES is exact for the convex cells of block meshes and cheap; a
+    // point it misses (warped faces) still ends in the full search
+    if (mesh_.pointInCell(p, seed, polyMesh::FACE_PLANES))
+    {
+        return seed;
+    }
+    for (const label nbr : mesh_.cellCells()[seed])
+    {
+        if (mesh_.pointInCell(p, nbr, polyMesh::FACE_PLANES))
+        {
+            return nbr;
+        }
+    }
+    return -1;
+}
+
+
 Foam::label Foam::dropletFiber::airSampler::findCell
 (
     const point& p,
-    const label hint
+    const label hint,
+    const label previousPointCell
 ) const
 {
     if (!mesh_.bounds().contains(p))
     {
         return -1;
     }
-    if (hint >= 0 && hint < mesh_.nCells())
+    label celli = findCellNear(p, hint);
+    if (celli < 0 && previousPointCell != hint)
     {
-        // FACE_PLANES is exact for the convex cells of block meshes and cheap;
-        // a point it misses (warped faces) still ends in the full search
-        if (mesh_.pointInCell(p, hint, polyMesh::FACE_PLANES))
-        {
-            return hint;
-        }
-        for (const label nbr : mesh_.cellCells()[hint])
-        {
-            if (mesh_.pointInCell(p, nbr, polyMesh::FACE_PLANES))
-            {
-                return nbr;
-            }
-        }
+        celli = findCellNear(p, previousPointCell);
     }
-    return mesh_.findCell(p);
+    return celli >= 0 ? celli : mesh_.findCell(p);
 }
 
 
@@ -185,11 +202,13 @@ Foam::scalar Foam::dropletFiber::airSampler::referenceViscosity() const
     constexpr label width = 6;
     List<scalar> values(width*n, Zero);
     cellHint_.setSize(n, -1);
+    label previousPointCell = -1;
     for (label i = 0; i < n; ++i)
     {
         const point p(points(0, i), points(1, i), points(2, i));
-        const label celli = findCell(p, cellHint_[i]);
+        const label celli = findCell(p, cellHint_[i], previousPointCell);
         cellHint_[i] = celli;
+        previousPointCell = celli;
         if (celli < 0)
         {
             continue;
