@@ -68,6 +68,7 @@
 #include "grid/GridSpec.hpp"
 #include "grid/Parcel.hpp"
 #include "grid/ParcelKernel.hpp"
+#include "grid/PathWeight.hpp"
 #include "grid/StepStatistics.hpp"
 
 #include <Eigen/Core>
@@ -155,7 +156,14 @@ private:
     IndexBox stepBox_;
     StepStatistics stepStatistics_;
     StepStatistics lastStepStatistics_;
-    std::vector<std::pair<std::size_t, double>> scratch_; // (node, omega) of the current parcel
+    // The current parcel's bounding box, node by node (i fastest; padded to whole lanes):
+    // projection on the path line, squared distance from it, omega; then the nodes that
+    // receive mass as (node, omega).
+    std::vector<double> boxLambda_;
+    std::vector<double> boxDistanceSquared_;
+    std::vector<double> boxOmega_;
+    PathWeight::Scratch omegaScratch_;
+    std::vector<std::pair<std::size_t, double>> scratch_;
 };
 
 } // namespace dropletFiber
