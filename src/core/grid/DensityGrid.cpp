@@ -1,7 +1,6 @@
 #include "grid/DensityGrid.hpp"
 
 #include "grid/MultilinearWeights.hpp"
-#include "grid/Lanes.hpp"
 #include "grid/PathWeight.hpp"
 
 #include <algorithm>
@@ -215,72 +214,32 @@ void DensityGrid::deposit(const Parcel& parcel, double dt)
         lo[d] = static_cast<int>(std::min(std::max(first, 0.0), last));
         hi[d] = static_cast<int>(std::min(std::max(lastReached, -1.0), last));
     }
-    // Omega of every node in the box: first the geometry (or, for a stationary parcel, phi
-    // directly), then PathWeight::omegas two nodes at a time without branches.
+    scratch_.clear();
+    double omegaSum = 0.0;
+    std::int64_t visited = 0;
     const std::size_t nx = static_cast<std::size_t>(spec_.nodes[0]);
     const std::size_t ny = static_cast<std::size_t>(spec_.nodes[1]);
-    const std::size_t rowLength = static_cast<std::size_t>(std::max(hi[0] - lo[0] + 1, 0));
-    const std::size_t boxNodes
-        = rowLength * static_cast<std::size_t>(std::max(hi[1] - lo[1] + 1, 0)) * static_cast<std::size_t>(std::max(hi[2] - lo[2] + 1, 0));
-    const std::size_t padded = (boxNodes + laneCount - 1) / laneCount * laneCount;
-    if (boxOmega_.size() < padded)
-    {
-        boxLambda_.resize(padded);
-        boxDistanceSquared_.resize(padded);
-        boxOmega_.resize(padded);
-        scratch_.resize(padded);
-    }
-    const bool stationary = pathWeight.stationary();
-    std::size_t n = 0;
     for (int k = lo[2]; k <= hi[2]; ++k)
     {
         const double oz = coordinates_[2][static_cast<std::size_t>(k)] - clipStart.z();
         for (int j = lo[1]; j <= hi[1]; ++j)
         {
             const double oy = coordinates_[1][static_cast<std::size_t>(j)] - clipStart.y();
-            for (int i = lo[0]; i <= hi[0]; ++i, ++n)
+            const std::size_t row = nx * (static_cast<std::size_t>(j) + ny * static_cast<std::size_t>(k));
+            for (int i = lo[0]; i <= hi[0]; ++i)
             {
                 const Eigen::Vector3d offset(coordinates_[0][static_cast<std::size_t>(i)] - clipStart.x(), oy, oz);
-                if (stationary)
+                const double omega = pathWeight.omegaFromOffset(offset);
+                if (omega > 0.0)
                 {
-                    boxOmega_[n] = pathWeight.omegaFromOffset(offset);
-                }
-                else
-                {
-                    pathWeight.project(offset, boxLambda_[n], boxDistanceSquared_[n]);
+                    scratch_.emplace_back(row + static_cast<std::size_t>(i), omega);
+                    omegaSum += omega;
                 }
             }
+            visited += hi[0] >= lo[0] ? hi[0] - lo[0] + 1 : 0;
         }
     }
-    if (!stationary)
-    {
-        for (; n < padded; ++n)
-        {
-            boxLambda_[n] = 0.0;
-            boxDistanceSquared_[n] = 2.0 * reach * reach; // out of reach: omega 0
-        }
-        pathWeight.omegas(boxLambda_.data(), boxDistanceSquared_.data(), boxOmega_.data(), padded, omegaScratch_);
-    }
-    // Sum in node order (as the weights are listed), and list the nodes with omega > 0
-    // (appended at every node, kept by advancing the count: no branch).
-    double omegaSum = 0.0;
-    std::size_t weightedCount = 0;
-    n = 0;
-    for (int k = lo[2]; k <= hi[2]; ++k)
-    {
-        for (int j = lo[1]; j <= hi[1]; ++j)
-        {
-            const std::size_t row = nx * (static_cast<std::size_t>(j) + ny * static_cast<std::size_t>(k));
-            for (int i = lo[0]; i <= hi[0]; ++i, ++n)
-            {
-                const double omega = boxOmega_[n];
-                scratch_[weightedCount] = {row + static_cast<std::size_t>(i), omega};
-                weightedCount += omega > 0.0 ? 1 : 0;
-                omegaSum += omega;
-            }
-        }
-    }
-    stats.nodesVisited += static_cast<std::int64_t>(boxNodes);
+    stats.nodesVisited += visited;
 
     // 5-6. Normalise (eq. 24), or fall back to cloud-in-cell weights.
     if (!(omegaSum >= DBL_MIN))
@@ -290,11 +249,11 @@ void DensityGrid::deposit(const Parcel& parcel, double dt)
         return;
     }
     const double inverseSum = 1.0 / omegaSum;
-    for (std::size_t w = 0; w < weightedCount; ++w)
+    for (const auto& [node, omega] : scratch_)
     {
-        accumulate(scratch_[w].first, scratch_[w].second * inverseSum, totals);
+        accumulate(node, omega * inverseSum, totals);
     }
-    stats.nodesWeighted += static_cast<std::int64_t>(weightedCount);
+    stats.nodesWeighted += static_cast<std::int64_t>(scratch_.size());
     // The touched box: the weighted nodes lie inside [lo, hi].
     IndexBox box;
     box.lo = lo;

@@ -68,7 +68,6 @@
 #include "grid/GridSpec.hpp"
 #include "grid/Parcel.hpp"
 #include "grid/ParcelKernel.hpp"
-#include "grid/PathWeight.hpp"
 #include "grid/StepStatistics.hpp"
 
 #include <Eigen/Core>
@@ -156,14 +155,7 @@ private:
     IndexBox stepBox_;
     StepStatistics stepStatistics_;
     StepStatistics lastStepStatistics_;
-    // The current parcel's bounding box, node by node (i fastest; padded to whole lanes):
-    // projection on the path line, squared distance from it, omega; then the nodes that
-    // receive mass as (node, omega).
-    std::vector<double> boxLambda_;
-    std::vector<double> boxDistanceSquared_;
-    std::vector<double> boxOmega_;
-    PathWeight::Scratch omegaScratch_;
-    std::vector<std::pair<std::size_t, double>> scratch_;
+    std::vector<std::pair<std::size_t, double>> scratch_; // (node, omega) of the current parcel
 };
 
 } // namespace dropletFiber

@@ -1,7 +1,7 @@
 #include "grid/PathWeight.hpp"
 
 #include "grid/GaussLegendre.hpp"
-#include "grid/Lanes.hpp"
+#include "grid/ScaledErfc.hpp"
 
 #include <cmath>
 
@@ -10,6 +10,8 @@ namespace dropletFiber
 
 namespace
 {
+
+constexpr double halfSqrtPi = 0.88622692545275801365; // sqrt(pi) / 2
 
 // Paths shorter than this fraction of the reach are taken as a point (error of order
 // (gamma L^2)^2, far below round-off).
@@ -62,206 +64,9 @@ PathWeight::PathWeight(const ParcelKernel& kernel, const Eigen::Vector3d& start,
         inverseLength_ = 1.0 / length_;
         direction_ = displacement * inverseLength_;
     }
-    closedForm_.length = length_;
-    closedForm_.reachSquared = reachSquared_;
-    closedForm_.gamma = kernel.gamma();
-    closedForm_.sqrtGamma = sqrtGamma_;
-    closedForm_.inverseSqrtGamma = inverseSqrtGamma_;
-    closedForm_.edgeExponent = kernel.edgeExponent();
-    closedForm_.edgeValue = kernel.edgeValue();
 }
 
 double PathWeight::integralAlongPath(double lambdaM, double d0Squared) const
-{
-    bool needsExact = false;
-    const double integral = closedForm_(lambdaM, d0Squared, needsExact);
-    return needsExact ? exactIntegral(lambdaM, d0Squared) : integral;
-}
-
-namespace
-{
-
-// Pads a list of positions to whole lanes by repeating its last entry (evaluating an entry
-// twice writes the same values twice).
-std::size_t padToLanes(std::uint32_t* list, std::size_t count)
-{
-    for (; count % laneCount != 0; ++count)
-    {
-        list[count] = list[count - 1];
-    }
-    return count;
-}
-
-Lanes gatherLanes(const double* values, const std::uint32_t* positions)
-{
-    Lanes a;
-    for (int lane = 0; lane < laneCount; ++lane)
-    {
-        a[lane] = values[positions[lane]];
-    }
-    return a;
-}
-
-void scatterLanes(double* values, const std::uint32_t* positions, Lanes a)
-{
-    for (int lane = 0; lane < laneCount; ++lane)
-    {
-        values[positions[lane]] = a[lane];
-    }
-}
-
-// Evaluates one interval of erfcScaledParts for the listed ends.
-template <class Interval>
-void erfcScaledPartsAt(const std::uint32_t* list, std::size_t count, const double* x, double* numerators,
-                       double* denominators, Interval interval)
-{
-    for (std::size_t e = 0; e < count; e += laneCount)
-    {
-        const FractionOf<Lanes> parts = interval(magnitude(gatherLanes(x, list + e)));
-        scatterLanes(numerators, list + e, parts.numerator);
-        scatterLanes(denominators, list + e, parts.denominator);
-    }
-}
-
-} // namespace
-
-void PathWeight::omegas(const double* lambdaM, const double* d0Squared, double* omega, std::size_t count,
-                        Scratch& scratch) const
-{
-    // The stages of PathIntegralClosedForm as separate short loops, so that the processor
-    // overlaps many nodes (the whole formula is a dependency chain of ~700 instructions
-    // per two nodes, longer than the reorder window), and so that the exponentials and
-    // rational functions are evaluated only where needed:
-    //  1. interval and regime of every node (lanes);
-    //  2. the nodes in the closed-form regime are packed to the front (no branch);
-    //  3. their three Gaussians (lanes);
-    //  4. their two ends sorted by the interval of the scaled erfc, each list evaluated
-    //     with its own rational function (lanes; one rational per end instead of three);
-    //  5. the formula (lanes), written to the node's place;
-    //  6. the ~1 node per parcel in regime A or B with the scalar code.
-    const std::size_t ends = 2 * count;
-    if (scratch.values.size() < 11 * count)
-    {
-        scratch.values.resize(11 * count);
-        scratch.indices.resize(4 * ends + laneCount);
-    }
-    double* x = scratch.values.data();           // x1 of every node, then x2
-    double* exponents = x + ends;                 // exponent0, 1, 2; then exp of them in place
-    double* numerators = exponents + 3 * count;   // erfcScaledParts of |x1|, then |x2|
-    double* denominators = numerators + ends;
-    double* width = denominators + ends;
-    double* status = width + count;
-    std::uint32_t* node = scratch.indices.data(); // packed position -> node
-    std::uint32_t* lists = node + count + laneCount;
-
-    for (std::size_t n = 0; n < count; n += laneCount) // 1.
-    {
-        const PathIntegralClosedForm::Interval<Lanes> interval
-            = closedForm_.interval(loadLanes(lambdaM + n), loadLanes(d0Squared + n));
-        storeLanes(x + n, interval.x1);
-        storeLanes(x + count + n, interval.x2);
-        storeLanes(exponents + n, interval.exponent0);
-        storeLanes(exponents + count + n, interval.exponent1);
-        storeLanes(exponents + 2 * count + n, interval.exponent2);
-        storeLanes(width + n, interval.width);
-        storeLanes(status + n, interval.status);
-        storeLanes(omega + n, splat<Lanes>(0.0));
-    }
-    std::size_t packed = 0; // 2. (in place: packed <= n)
-    for (std::size_t n = 0; n < count; ++n)
-    {
-        x[packed] = x[n];
-        x[count + packed] = x[count + n];
-        exponents[packed] = exponents[n];
-        exponents[count + packed] = exponents[count + n];
-        exponents[2 * count + packed] = exponents[2 * count + n];
-        width[packed] = width[n];
-        node[packed] = static_cast<std::uint32_t>(n);
-        packed += status[n] > 0.0 ? 1 : 0;
-    }
-    if (packed > 0)
-    {
-        if (packed % laneCount != 0) // pad by repeating the last packed node
-        {
-            const std::size_t last = packed - 1;
-            x[packed] = x[last];
-            x[count + packed] = x[count + last];
-            for (int i = 0; i < 3; ++i)
-            {
-                exponents[i * count + packed] = exponents[i * count + last];
-            }
-            width[packed] = width[last];
-            node[packed] = node[last];
-            ++packed;
-        }
-        for (int i = 0; i < 3; ++i) // 3.
-        {
-            double* block = exponents + i * count;
-            for (std::size_t p = 0; p < packed; p += laneCount)
-            {
-                storeLanes(block + p, branchFreeExp(loadLanes(block + p)));
-            }
-        }
-        std::size_t listLength[3] = {0, 0, 0}; // 4. (the list is chosen by index, not by a branch)
-        for (const std::size_t first : {std::size_t(0), count})
-        {
-            for (std::size_t end = first; end < first + packed; ++end)
-            {
-                const int interval = erfcScaledInterval(std::abs(x[end]));
-                lists[static_cast<std::size_t>(interval) * ends + listLength[interval]] = static_cast<std::uint32_t>(end);
-                ++listLength[interval];
-            }
-        }
-        for (int interval = 0; interval < 3; ++interval)
-        {
-            std::uint32_t* list = lists + interval * ends;
-            if (listLength[interval] == 0)
-            {
-                continue;
-            }
-            const std::size_t length = padToLanes(list, listLength[interval]);
-            if (interval == 0)
-            {
-                erfcScaledPartsAt(list, length, x, numerators, denominators,
-                                  [](Lanes v) { return erfcScaledPartsSmall(v); });
-            }
-            else if (interval == 1)
-            {
-                erfcScaledPartsAt(list, length, x, numerators, denominators,
-                                  [](Lanes v) { return erfcScaledPartsMiddle(v); });
-            }
-            else
-            {
-                erfcScaledPartsAt(list, length, x, numerators, denominators,
-                                  [](Lanes v) { return erfcScaledPartsLarge(v); });
-            }
-        }
-        for (std::size_t p = 0; p < packed; p += laneCount) // 5.
-        {
-            PathIntegralClosedForm::Interval<Lanes> interval;
-            interval.x1 = loadLanes(x + p);
-            interval.x2 = loadLanes(x + count + p);
-            interval.width = loadLanes(width + p);
-            interval.status = splat<Lanes>(1.0);
-            const FractionOf<Lanes> parts1{loadLanes(numerators + p), loadLanes(denominators + p)};
-            const FractionOf<Lanes> parts2{loadLanes(numerators + count + p), loadLanes(denominators + count + p)};
-            const Lanes integral = closedForm_.integral(interval, loadLanes(exponents + p), loadLanes(exponents + count + p),
-                                                        loadLanes(exponents + 2 * count + p), parts1, parts2);
-            scatterLanes(omega, node + p, integral * inverseLength_);
-        }
-    }
-    for (std::size_t n = 0; n < count; ++n) // 6.
-    {
-        if (status[n] < 0.0)
-        {
-            omega[n] = exactIntegral(lambdaM[n], d0Squared[n]) * inverseLength_;
-        }
-    }
-}
-
-// The scalar regime choice of integralAlongPath with regimes A and B; the same interval
-// and tests as PathIntegralClosedForm, written with branches (only ~1 node per parcel).
-double PathWeight::exactIntegral(double lambdaM, double d0Squared) const
 {
     const double gamma = kernel_.gamma();
     const double edgeValue = kernel_.edgeValue();
@@ -340,10 +145,39 @@ double PathWeight::exactIntegral(double lambdaM, double d0Squared) const
         return gaussian - edgeValue * width;
     }
 
-    // Regime C (not reached: PathIntegralClosedForm makes the same regime choice with the
-    // same operations, and sends only A and B here).
-    bool needsExact = false;
-    return closedForm_(lambdaM, d0Squared, needsExact);
+    // Regime C: the closed form of MODEL.md, int_{x1}^{x2} exp(-x^2) dx times exp(-gamma d0^2),
+    // written with the kernel's Gaussians at the interval's ends, g_i = exp(-gamma (d0^2 + u_i^2))
+    // (exp(-a) where the end is on the reach circle), and erfcScaled(x) = exp(x^2) erfc(x):
+    //   0 <= x1 < x2:  sqrt(pi)/2 [g1 erfcScaled(x1) - g2 erfcScaled(x2)]
+    //   x1 < x2 <= 0:  sqrt(pi)/2 [g2 erfcScaled(-x2) - g1 erfcScaled(-x1)]
+    //   x1 < 0 < x2:   sqrt(pi) exp(-gamma d0^2) - sqrt(pi)/2 [g1 erfcScaled(-x1) + g2 erfcScaled(x2)]
+    // Outside regime B the two terms differ by a factor >~ 1.5 (no cancellation).
+    const double x1 = sqrtGamma_ * u1;
+    const double x2 = sqrtGamma_ * u2;
+    const double g1 = clipped1 ? edgeValue : std::exp(-gamma * (d0Squared + u1 * u1));
+    const double g2 = clipped2 ? edgeValue : std::exp(-gamma * (d0Squared + u2 * u2));
+    double gaussian;
+    if (x1 >= 0.0 || x2 <= 0.0)
+    {
+        // Both ends on one side of the closest point: the nearer end minus the farther one.
+        const bool after = x1 >= 0.0;
+        const Fraction nearEnd = erfcScaledFraction(after ? x1 : -x2);
+        const Fraction farEnd = erfcScaledFraction(after ? x2 : -x1);
+        const double gNear = after ? g1 : g2;
+        const double gFar = after ? g2 : g1;
+        gaussian = halfSqrtPi
+            * (gNear * nearEnd.numerator * farEnd.denominator - gFar * farEnd.numerator * nearEnd.denominator)
+            / (nearEnd.denominator * farEnd.denominator);
+    }
+    else
+    {
+        const Fraction start = erfcScaledFraction(-x1);
+        const Fraction end = erfcScaledFraction(x2);
+        gaussian = 2.0 * halfSqrtPi * std::exp(-gamma * d0Squared)
+            - halfSqrtPi * (g1 * start.numerator * end.denominator + g2 * end.numerator * start.denominator)
+                / (start.denominator * end.denominator);
+    }
+    return gaussian * inverseSqrtGamma_ - edgeValue * width;
 }
 
 } // namespace dropletFiber
