@@ -124,7 +124,9 @@ DensityGrid::DensityGrid(const GridSpec& spec, const KernelSettings& kernel, int
         }
         inverseSpacing_[d] = spec.flat(d) ? 0.0 : 1.0 / spec.spacing(d);
         largestSpacing_ = spec.flat(d) ? largestSpacing_ : std::max(largestSpacing_, spec.spacing(d));
+        halfCellDiagonal_ += spec.flat(d) ? 0.0 : 0.25 * spec.spacing(d) * spec.spacing(d);
     }
+    halfCellDiagonal_ = std::sqrt(halfCellDiagonal_);
     step_.assign(spec.nodeCount() * nQuantities, 0.0);
 }
 
@@ -194,8 +196,9 @@ void DensityGrid::deposit(const Parcel& parcel, double dt)
         depositFallback(clipStart, clipDisplacement, totals);
         return;
     }
-    const PathWeight pathWeight(kernel, clipStart, clipDisplacement);
-    const double reach = kernel.reach();
+    PathWeight pathWeight(kernel, clipStart, clipDisplacement);
+    const double reach = negligibleDistance(kernel, clipDisplacement.norm());
+    pathWeight.limitTo(reach);
 
     // 4. Nodes in the bounding box of the swept capsule.
     std::array<int, 3> lo{}, hi{};
@@ -259,6 +262,30 @@ void DensityGrid::deposit(const Parcel& parcel, double dt)
     box.lo = lo;
     box.hi = hi;
     stepBox_ = stepBox_.united(box);
+}
+
+double DensityGrid::negligibleDistance(const ParcelKernel& kernel, double pathLength) const
+{
+    // A node farther than d from the path has omega < exp(-gamma d^2) (phi is below that at
+    // every point of the path). Some node lies within c = half the cell diagonal of the
+    // path's midpoint (the clipped path is inside the box), so within c + L/2 of every point
+    // of the path: its omega, the mean of phi along the path, is at least phi(c + L/2), and
+    // so is the parcel's largest. Nodes with exp(-gamma d^2) <= negligibleWeight phi(c + L/2)
+    // therefore hold less than negligibleWeight times the largest weight.
+    const double epsilon = kernelSettings_.negligibleWeight;
+    const double reach = kernel.reach();
+    // The cut binds only if exp(-gamma reach^2) < epsilon (phi <= 1).
+    if (!(epsilon > 0.0) || !(kernel.edgeExponent() > -std::log(epsilon)))
+    {
+        return reach;
+    }
+    const double best = kernel.phi(halfCellDiagonal_ + 0.5 * pathLength);
+    if (!(best > 0.0))
+    {
+        return reach;
+    }
+    const double cutoffSquared = (-std::log(epsilon) - std::log(best)) / kernel.gamma();
+    return cutoffSquared < reach * reach ? std::sqrt(cutoffSquared) : reach;
 }
 
 void DensityGrid::accumulate(std::size_t node, double weight, const std::array<double, nQuantities>& parcelTotals)

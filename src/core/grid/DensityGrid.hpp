@@ -18,7 +18,9 @@
 //     the grid: the parcel goes to the cell corners as in 6 (parcelsCloudInCell).
 //  4. Every node in the bounding box of the capsule swept by the clipped path (within
 //     reach of the path) gets omega_g (PathWeight, eq. 23); nodes farther than reach from
-//     the path are rejected before any exp/erf. Cost per parcel ~ nodes in that box,
+//     the path are rejected before any exp/erf. Nodes whose weight would be below
+//     KernelSettings::negligibleWeight (1e-17) times the parcel's largest are left out too
+//     (the capsule shrinks to that distance; kernels of large alpha). Cost per parcel ~ nodes in that box,
 //     independent of the grid size (StepStatistics::nodesVisited counts them).
 //  5. Weights w_g = omega_g / sum omega (eq. 24): the mass given to the grid is f times the
 //     parcel's mass to round-off, also near edges (nodes outside the grid do not exist,
@@ -138,6 +140,9 @@ public:
 private:
     // Window sums S_q (any weights) -> field values.
     DropletFieldValue fieldFromSums(const std::array<double, nQuantities>& sums) const;
+    // Distance from the path beyond which a node's weight is below
+    // KernelSettings::negligibleWeight times the parcel's largest (<= reach).
+    double negligibleDistance(const ParcelKernel& kernel, double pathLength) const;
     void accumulate(std::size_t node, double weight, const std::array<double, nQuantities>& parcelTotals);
     void depositFallback(const Eigen::Vector3d& start, const Eigen::Vector3d& displacement,
                          const std::array<double, nQuantities>& parcelTotals);
@@ -149,6 +154,7 @@ private:
     std::array<std::vector<double>, 3> coordinates_; // node coordinates per direction
     std::array<double, 3> inverseSpacing_{};
     double largestSpacing_ = 0.0; // over the active directions (KernelSettings::cloudInCellBelow)
+    double halfCellDiagonal_ = 0.0; // over the active directions (negligible weights)
     double nodeVolume_;
     AveragingWindow window_;
     std::vector<double> step_;

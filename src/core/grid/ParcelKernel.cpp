@@ -27,6 +27,12 @@ void KernelSettings::validate() const
         throw std::invalid_argument("kernel: cloudInCellBelow must be finite and >= 0 (0: always the kernel), got "
                                     + std::to_string(cloudInCellBelow));
     }
+    // Up to 1e-6: the cut is meant to drop round-off, not to truncate the kernel visibly.
+    if (!(negligibleWeight >= 0.0 && negligibleWeight <= 1e-6))
+    {
+        throw std::invalid_argument("kernel: negligibleWeight must lie in [0, 1e-6] (0: exact tails), got "
+                                    + std::to_string(negligibleWeight));
+    }
 }
 
 double influenceRadiusMax(double dropletRadius, double nParticle)

@@ -32,6 +32,8 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
+
 namespace dropletFiber
 {
 
@@ -49,16 +51,22 @@ public:
     {
         if (stationary_)
         {
-            return kernel_.phiSquared((offset - halfDisplacement_).squaredNorm());
+            const double dSquared = (offset - halfDisplacement_).squaredNorm();
+            return dSquared < cutoffSquared_ ? kernel_.phiSquared(dSquared) : 0.0;
         }
         const double lambdaM = direction_.dot(offset);
         const double d0Squared = (offset - lambdaM * direction_).squaredNorm();
-        if (!(d0Squared < reachSquared_))
+        if (!(d0Squared < cutoffSquared_))
         {
             return 0.0;
         }
         return integralAlongPath(lambdaM, d0Squared) * inverseLength_;
     }
+
+    // Nodes farther than `distance` from the path (line) get 0: their phi is below
+    // exp(-gamma distance^2) everywhere on the path (DensityGrid::deposit, negligible weights).
+    // distance >= reach: no effect.
+    void limitTo(double distance) { cutoffSquared_ = std::min(reachSquared_, distance * distance); }
 
     double length() const { return length_; }
     bool stationary() const { return stationary_; }
@@ -76,6 +84,7 @@ private:
     double length_ = 0.0;
     double inverseLength_ = 0.0;
     double reachSquared_ = 0.0;
+    double cutoffSquared_ = 0.0; // reach^2, or less after limitTo
     double sqrtGamma_ = 0.0;
     double inverseSqrtGamma_ = 0.0;
     bool stationary_ = true;

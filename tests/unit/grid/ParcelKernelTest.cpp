@@ -129,4 +129,15 @@ TEST(ParcelKernel, RejectsInvalidSettings)
     EXPECT_THROW(s.validate(), std::invalid_argument);
     EXPECT_THROW(ParcelKernel(-1e-5, 10.0, KernelSettings{}, 2), std::invalid_argument);
     EXPECT_THROW(ParcelKernel(1e-5, 0.0, KernelSettings{}, 2), std::invalid_argument);
+    KernelSettings cut;
+    EXPECT_EQ(cut.negligibleWeight, 1e-17);
+    cut.negligibleWeight = 0.0; // exact tails
+    EXPECT_NO_THROW(cut.validate());
+    cut.negligibleWeight = 1e-6;
+    EXPECT_NO_THROW(cut.validate());
+    for (double bad : {-1e-17, 2e-6, 0.5, std::nan(""), HUGE_VAL})
+    {
+        cut.negligibleWeight = bad;
+        EXPECT_THROW(cut.validate(), std::invalid_argument) << bad;
+    }
 }
