@@ -122,6 +122,16 @@ void Foam::functionObjects::dropletFiberCollision::readGrid
     // Better than the paper (docs/validation.md): parcels whose kernel the grid
     // cannot resolve are deposited with cloud-in-cell weights; 0 = the paper
     kernel_.cloudInCellBelow = getNonNegative(gridDict, "cloudInCellBelow", 0.5);
+    // Nodes whose weight would be below this fraction of the parcel's largest
+    // are not evaluated (round-off level by default; 0 = exact tails)
+    const scalar defaultNegligible = 1e-17;
+    kernel_.negligibleWeight =
+        getCheckedScalar
+        (
+            gridDict, "negligibleWeight", &defaultNegligible,
+            [](scalar e) { return e >= 0 && e <= 1e-6; },
+            "in [0, 1e-6] (0: every node within reach is evaluated)"
+        );
     const word dim =
         getChoice(gridDict, "dimension", "automatic", {"automatic", "2", "3"});
     kernel_.dimension =
@@ -177,6 +187,7 @@ void Foam::functionObjects::dropletFiberCollision::reportSettings() const
         << ", beta " << kernel_.beta
         << ", rMaxCap " << kernel_.rMaxCap
         << ", cloudInCellBelow " << kernel_.cloudInCellBelow
+        << ", negligibleWeight " << kernel_.negligibleWeight
         << ", radiusAverage "
         << (collision_.radiusAverage == ::dropletFiber::RadiusAverage::Number
             ? "number" : "mass") << nl
