@@ -5,9 +5,16 @@ namespace dropletFiber {
 std::vector<BendingJoint> bendingJoints(const Fiber& fiber)
 {
     std::vector<BendingJoint> joints;
+    bendingJoints(fiber, joints);
+    return joints;
+}
+
+void bendingJoints(const Fiber& fiber, std::vector<BendingJoint>& joints)
+{
+    joints.clear();
     const double stiffness = fiber.material().bendingStiffness();
     if (stiffness <= 0.0 || fiber.immobile()) {
-        return joints;
+        return;
     }
     const Eigen::VectorXd& l = fiber.restLengths();
     const Eigen::Index n = fiber.pointCount();
@@ -40,7 +47,6 @@ std::vector<BendingJoint> bendingJoints(const Fiber& fiber)
         joint.stiffness = stiffness / (0.5 * l(s));
         joints.push_back(joint);
     }
-    return joints;
 }
 
 Eigen::Vector3d jointVector(const BendingJoint& joint, const Eigen::Matrix3Xd& x)

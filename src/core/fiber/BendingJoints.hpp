@@ -28,6 +28,8 @@ struct BendingJoint {
 
 // Empty when S_b = 0 (limp fiber).
 std::vector<BendingJoint> bendingJoints(const Fiber& fiber);
+// The same into an existing list (replaced; its capacity is reused by the solver).
+void bendingJoints(const Fiber& fiber, std::vector<BendingJoint>& joints);
 
 Eigen::Vector3d jointVector(const BendingJoint& joint, const Eigen::Matrix3Xd& x);
 
