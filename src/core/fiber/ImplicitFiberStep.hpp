@@ -17,11 +17,21 @@
 // 10 whatever the point count; it is solved with BandedLU (partial pivoting), O(n).
 // Rows are scaled by theta h / m_i and the multipliers by m / (theta h^2) so all
 // entries are lengths of order one (makes the pivoting meaningful).
+//
+// Cost: each Newton iteration evaluates the residual, and only when another update is
+// needed the Jacobian (so the converged iterate costs no Jacobian). The Jacobian's
+// constant part (mass and the linear bending force, plus the rows of held points) is
+// built once per sub-step and copied; each iteration adds drag and tension to it in
+// the order the full assembly would, so the matrix is the same bits. All work storage
+// is kept in the object: no allocation once sized for the largest fiber.
 #pragma once
 
 #include "fiber/BandedLU.hpp"
+#include "fiber/BendingJoints.hpp"
 #include "fiber/Fiber.hpp"
 #include "fiber/FiberSolverSettings.hpp"
+
+#include <vector>
 
 namespace dropletFiber {
 
@@ -46,7 +56,35 @@ public:
                           const FiberSolverSettings& settings);
 
 private:
-    BandedLU lu_;  // work storage, reused between fibers and steps
+    // Per sub-step: geometry, scales, constant terms, first iterate, constant Jacobian.
+    void prepare(const Fiber& fiber, double h, const PointDrag& drag,
+                 const FiberSolverSettings& settings);
+    // Residual rows at (y_, lambda_) into rhs_ (scaled as the Jacobian's rows);
+    // returns whether every point's residual is below its tolerance.
+    bool evaluateResidual(const PointDrag& drag, double residualTolerance,
+                          double& constraintError);
+    // Jacobian at the iterate evaluateResidual saw, into lu_.
+    void assembleJacobian(const PointDrag& drag);
+    bool held(Eigen::Index i) const { return held_[static_cast<std::size_t>(i)] != 0; }
+
+    // The sub-step being solved.
+    Eigen::Index n_ = 0;
+    double h_ = 0.0, theta_ = 0.5;
+    const Eigen::Matrix3Xd* vn_ = nullptr;  // v_n (the fiber's velocities)
+    const Eigen::VectorXd* l_ = nullptr;    // rest lengths
+
+    // Work storage, reused between sub-steps, fibers and steps (sized per fiber).
+    BandedLU lu_;
+    BandedLU constantJacobian_;
+    std::vector<BendingJoint> joints_;
+    std::vector<double> jointOffsetNorm_;
+    std::vector<char> held_;
+    Eigen::Matrix3Xd xn_, y_, xTheta_, vTheta_, residual_, load_;
+    Eigen::Matrix3Xd tangent_, relativeAir_, segment_, dy_;  // residual terms the Jacobian reuses
+    Eigen::VectorXd m_, nodal_, rowScale_, lambdaScale_, lambda_, rhs_;
+    Eigen::VectorXd magnitude_, noise_;  // size of each residual row's terms, their round-off
+    Eigen::VectorXd loadNorm_, xnNorm_, vnNorm_, airNorm_, xThetaNorm_;
+    Eigen::VectorXd cn_, ct_, chordLength_, wt_;
 };
 
 }  // namespace dropletFiber
