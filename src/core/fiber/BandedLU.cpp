@@ -37,17 +37,36 @@ double BandedLU::coeff(Eigen::Index i, Eigen::Index j) const
     return rowPointer(i)[j];
 }
 
+namespace {
+
+// row[j] -= factor * pivotRow[j] for j in [first, last]: the elimination's inner loop.
+// The two rows are different rows of the band (never alias): saying so lets the
+// compiler vectorise without run-time overlap checks. Element by element, so the
+// vector width does not change a single bit.
+inline void subtractScaledRow(double* __restrict row, const double* __restrict pivotRow,
+                              double factor, Eigen::Index first, Eigen::Index last)
+{
+    for (Eigen::Index j = first; j <= last; ++j) row[j] -= factor * pivotRow[j];
+}
+
+}  // namespace
+
 bool BandedLU::factorize()
 {
     // ju: last column any row of U so far reaches (dgbtf2's JU). Rows below k hold
     // nothing right of max(ju, their own i + ku), so columns past ju need no update.
     Eigen::Index ju = 0;
+    const Eigen::Index columnStride = width_ - 1;  // A(i+1, j) is this far after A(i, j)
     for (Eigen::Index k = 0; k < n_; ++k) {
         const Eigen::Index lastRow = std::min(n_ - 1, k + kl_);
+        double* pivotRow = rowPointer(k);
+        // Pivot: largest |A(i, k)|, i = k..lastRow (first one on ties).
         Eigen::Index p = k;
-        double biggest = std::abs(rowPointer(k)[k]);
+        double biggest = std::abs(pivotRow[k]);
+        const double* entry = pivotRow + k;
         for (Eigen::Index i = k + 1; i <= lastRow; ++i) {
-            const double candidate = std::abs(rowPointer(i)[k]);
+            entry += columnStride;
+            const double candidate = std::abs(*entry);
             if (candidate > biggest) {
                 biggest = candidate;
                 p = i;
@@ -57,7 +76,6 @@ bool BandedLU::factorize()
         if (biggest == 0.0) return false;
         ju = std::max(ju, std::min(n_ - 1, p + ku_));
         lastColumn_[static_cast<std::size_t>(k)] = ju;
-        double* pivotRow = rowPointer(k);
         if (p != k) {
             double* other = rowPointer(p);
             for (Eigen::Index j = k; j <= ju; ++j) std::swap(pivotRow[j], other[j]);
@@ -70,7 +88,7 @@ bool BandedLU::factorize()
             multipliers[i - k - 1] = factor;
             row[k] = 0.0;
             if (factor == 0.0) continue;
-            for (Eigen::Index j = k + 1; j <= ju; ++j) row[j] -= factor * pivotRow[j];
+            subtractScaledRow(row, pivotRow, factor, k + 1, ju);
         }
     }
     return true;
@@ -87,12 +105,17 @@ void BandedLU::solveInPlace(Eigen::VectorXd& b) const
         const double xk = x[k];
         for (Eigen::Index i = k + 1; i <= lastRow; ++i) x[i] -= multipliers[i - k - 1] * xk;
     }
-    for (Eigen::Index k = n_ - 1; k >= 0; --k) {
-        const double* row = rowPointer(k);
-        const Eigen::Index lastCol = lastColumn_[static_cast<std::size_t>(k)];
-        double sum = x[k];
-        for (Eigen::Index j = k + 1; j <= lastCol; ++j) sum -= row[j] * x[j];
-        x[k] = sum / row[k];
+    // Back substitution by columns (as LAPACK's dtbsv): once x_j is final it is taken
+    // out of every row above that reaches column j. The rows' updates are independent,
+    // unlike the row-by-row sum whose chain of dependent subtractions is the cost.
+    // U's row i reaches column lastColumn_[i], which never decreases with i: the rows
+    // reaching column j are a contiguous run first..j-1.
+    Eigen::Index first = n_;
+    for (Eigen::Index j = n_ - 1; j >= 0; --j) {
+        x[j] /= rowPointer(j)[j];
+        while (first > 0 && lastColumn_[static_cast<std::size_t>(first - 1)] >= j) --first;
+        const double xj = x[j];
+        for (Eigen::Index i = first; i < j; ++i) x[i] -= rowPointer(i)[j] * xj;
     }
 }
 
