@@ -16,6 +16,7 @@ void BandedLU::reset(Eigen::Index n, Eigen::Index kl, Eigen::Index ku)
     lower_.assign(static_cast<std::size_t>(n * kl), 0.0);
     pivot_.assign(static_cast<std::size_t>(n), 0);
     lastColumn_.assign(static_cast<std::size_t>(n), 0);
+    inverseDiagonal_.assign(static_cast<std::size_t>(n), 0.0);
 }
 
 void BandedLU::assignMatrix(const BandedLU& other)
@@ -28,6 +29,7 @@ void BandedLU::assignMatrix(const BandedLU& other)
     lower_.resize(static_cast<std::size_t>(n_ * kl_));
     pivot_.resize(static_cast<std::size_t>(n_));
     lastColumn_.resize(static_cast<std::size_t>(n_));
+    inverseDiagonal_.resize(static_cast<std::size_t>(n_));
 }
 
 double BandedLU::coeff(Eigen::Index i, Eigen::Index j) const
@@ -81,6 +83,7 @@ bool BandedLU::factorize()
             for (Eigen::Index j = k; j <= ju; ++j) std::swap(pivotRow[j], other[j]);
         }
         const double inversePivot = 1.0 / pivotRow[k];
+        inverseDiagonal_[static_cast<std::size_t>(k)] = inversePivot;
         double* multipliers = lower_.data() + k * kl_;  // row i's at i - k - 1
         for (Eigen::Index i = k + 1; i <= lastRow; ++i) {
             double* row = rowPointer(i);
@@ -112,7 +115,8 @@ void BandedLU::solveInPlace(Eigen::VectorXd& b) const
     // reaching column j are a contiguous run first..j-1.
     Eigen::Index first = n_;
     for (Eigen::Index j = n_ - 1; j >= 0; --j) {
-        x[j] /= rowPointer(j)[j];
+        x[j] *= inverseDiagonal_[static_cast<std::size_t>(j)];  // a division here would be
+                                                                // on the critical path
         while (first > 0 && lastColumn_[static_cast<std::size_t>(first - 1)] >= j) --first;
         const double xj = x[j];
         for (Eigen::Index i = first; i < j; ++i) x[i] -= rowPointer(i)[j] * xj;

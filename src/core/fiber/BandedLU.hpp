@@ -51,6 +51,7 @@ private:
     std::vector<double> lower_;           // multipliers, kl per column
     std::vector<Eigen::Index> pivot_;     // row swapped with k at step k
     std::vector<Eigen::Index> lastColumn_;  // last nonzero column of U's row k
+    std::vector<double> inverseDiagonal_;   // 1 / U(k, k)
 };
 
 }  // namespace dropletFiber

@@ -128,8 +128,8 @@ void ImplicitFiberStep::prepare(const Fiber& fiber, double h, const PointDrag& d
     }
 }
 
-bool ImplicitFiberStep::evaluateResidual(const PointDrag& drag, double residualTolerance,
-                                         double& constraintError)
+template <bool withSizes>
+void ImplicitFiberStep::evaluateResidual(const PointDrag& drag, double& constraintError)
 {
     const Eigen::Index n = n_;
     const Eigen::Index s = n - 1;
@@ -139,25 +139,32 @@ bool ImplicitFiberStep::evaluateResidual(const PointDrag& drag, double residualT
 
     xTheta_ = xn_ + theta * (y_ - xn_);
     vTheta_ = (y_ - xn_) / h;
-    for (Eigen::Index i = 0; i < n; ++i) xThetaNorm_(i) = xTheta_.col(i).norm();
     residual_.setZero();
-    magnitude_.setZero();
-    noise_.setZero();
+    if (withSizes) {
+        for (Eigen::Index i = 0; i < n; ++i) xThetaNorm_(i) = xTheta_.col(i).norm();
+        magnitude_.setZero();
+        noise_.setZero();
+    }
 
     for (Eigen::Index i = 0; i < n; ++i) {
         if (held(i)) continue;
         const Eigen::Vector3d inertia = m_(i) * (vTheta_.col(i) - vn.col(i)) / theta;
         residual_.col(i) += inertia - load_.col(i);
-        magnitude_(i) += inertia.norm() + loadNorm_(i);
-        noise_(i) += m_(i) * (y_.col(i).norm() + xnNorm_(i) + h * vnNorm_(i)) / (theta * h);
+        if (withSizes) {
+            magnitude_(i) += inertia.norm() + loadNorm_(i);
+            noise_(i) += m_(i) * (y_.col(i).norm() + xnNorm_(i) + h * vnNorm_(i)) / (theta * h);
+        }
     }
     for (std::size_t k = 0; k < joints_.size(); ++k) {
         const BendingJoint& joint = joints_[k];
         const Eigen::Vector3d b = jointVector(joint, xTheta_);
-        double bScale = jointOffsetNorm_[k];
-        for (int a = 0; a < joint.pointCount; ++a) {
-            bScale += std::abs(joint.coefficient[static_cast<std::size_t>(a)]) *
-                      xThetaNorm_(joint.point[static_cast<std::size_t>(a)]);
+        double bScale = 0.0;
+        if (withSizes) {
+            bScale = jointOffsetNorm_[k];
+            for (int a = 0; a < joint.pointCount; ++a) {
+                bScale += std::abs(joint.coefficient[static_cast<std::size_t>(a)]) *
+                          xThetaNorm_(joint.point[static_cast<std::size_t>(a)]);
+            }
         }
         for (int a = 0; a < joint.pointCount; ++a) {
             const Eigen::Index p = joint.point[static_cast<std::size_t>(a)];
@@ -165,8 +172,10 @@ bool ImplicitFiberStep::evaluateResidual(const PointDrag& drag, double residualT
             const double ca = joint.coefficient[static_cast<std::size_t>(a)];
             const Eigen::Vector3d term = h * joint.stiffness * ca * b;  // -h * force
             residual_.col(p) += term;
-            magnitude_(p) += term.norm();
-            noise_(p) += h * joint.stiffness * std::abs(ca) * bScale;
+            if (withSizes) {
+                magnitude_(p) += term.norm();
+                noise_(p) += h * joint.stiffness * std::abs(ca) * bScale;
+            }
         }
     }
     if (drag.airVelocity != nullptr) {
@@ -183,8 +192,10 @@ bool ImplicitFiberStep::evaluateResidual(const PointDrag& drag, double residualT
             const double wt = t.dot(w);
             const Eigen::Vector3d force = cn * w + (ct - cn) * wt * t;
             residual_.col(i) -= h * force;
-            magnitude_(i) += h * force.norm();
-            noise_(i) += h * std::max(cn, ct) * (airNorm_(i) + vTheta_.col(i).norm());
+            if (withSizes) {
+                magnitude_(i) += h * force.norm();
+                noise_(i) += h * std::max(cn, ct) * (airNorm_(i) + vTheta_.col(i).norm());
+            }
             tangent_.col(i) = t;
             relativeAir_.col(i) = w;
             chordLength_(i) = chordLength;
@@ -196,17 +207,24 @@ bool ImplicitFiberStep::evaluateResidual(const PointDrag& drag, double residualT
         const Eigen::Vector3d d = xTheta_.col(j + 1) - xTheta_.col(j);
         segment_.col(j) = d;
         const Eigen::Vector3d pull = lambda_(j) / l(j) * d;  // tension force on point j
-        const double pullNoise = h * std::abs(lambda_(j)) / l(j) * (xThetaNorm_(j + 1) + xThetaNorm_(j));
-        const double pullSize = h * pull.norm();
+        double pullNoise = 0.0, pullSize = 0.0;
+        if (withSizes) {
+            pullNoise = h * std::abs(lambda_(j)) / l(j) * (xThetaNorm_(j + 1) + xThetaNorm_(j));
+            pullSize = h * pull.norm();
+        }
         if (!held(j)) {
             residual_.col(j) -= h * pull;
-            magnitude_(j) += pullSize;
-            noise_(j) += pullNoise;
+            if (withSizes) {
+                magnitude_(j) += pullSize;
+                noise_(j) += pullNoise;
+            }
         }
         if (!held(j + 1)) {
             residual_.col(j + 1) += h * pull;
-            magnitude_(j + 1) += pullSize;
-            noise_(j + 1) += pullNoise;
+            if (withSizes) {
+                magnitude_(j + 1) += pullSize;
+                noise_(j + 1) += pullNoise;
+            }
         }
         if (held(j) && held(j + 1)) {
             rhs_(tensionRow(j)) = 0.0;
@@ -219,18 +237,24 @@ bool ImplicitFiberStep::evaluateResidual(const PointDrag& drag, double residualT
         rhs_(tensionRow(j)) = c;
         constraintError = std::max(constraintError, std::abs(c) / l(j));
     }
-    bool residualSmall = true;
     for (Eigen::Index i = 0; i < n; ++i) {
         if (held(i)) {
             rhs_.segment<3>(pointRow(i)).setZero();
-            continue;
+        } else {
+            rhs_.segment<3>(pointRow(i)) = rowScale_(i) * residual_.col(i);
         }
+    }
+}
+
+bool ImplicitFiberStep::residualSmall(double residualTolerance) const
+{
+    for (Eigen::Index i = 0; i < n_; ++i) {
+        if (held(i)) continue;
         const double allowed = residualTolerance * magnitude_(i) +
                                64.0 * std::numeric_limits<double>::epsilon() * noise_(i);
-        if (residual_.col(i).norm() > allowed) residualSmall = false;
-        rhs_.segment<3>(pointRow(i)) = rowScale_(i) * residual_.col(i);
+        if (residual_.col(i).norm() > allowed) return false;
     }
-    return residualSmall;
+    return true;
 }
 
 void ImplicitFiberStep::assembleJacobian(const PointDrag& drag)
@@ -241,7 +265,6 @@ void ImplicitFiberStep::assembleJacobian(const PointDrag& drag)
     const Eigen::VectorXd& l = *l_;
     BandedLU& J = lu_;
     J.assignMatrix(constantJacobian_);
-    const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
 
     if (drag.airVelocity != nullptr) {
         for (Eigen::Index i = 0; i < n; ++i) {
@@ -259,21 +282,28 @@ void ImplicitFiberStep::assembleJacobian(const PointDrag& drag)
                 }
             }
             if (ct == cn) continue;
-            // ... and through the tangent t = chord / |chord| at x_theta.
+            // ... and through the tangent t = chord / |chord| at x_theta:
+            //   df/dchord = (c_t - c_n) / |chord| (wt I + t w^T)(I - t t^T)
+            //             = (c_t - c_n) / |chord| (wt (I - t t^T) + t w_n^T),
+            // w_n = w - wt t (w^T t = wt), written out instead of a matrix product.
             Eigen::Index hi, lo;
             tangentStencil(i, n, hi, lo);
-            const Eigen::Vector3d w = relativeAir_.col(i);
-            const Eigen::Matrix3d dForceDChord = (ct - cn) / chordLength_(i) *
-                (wt_(i) * identity + t * w.transpose()) * (identity - t * t.transpose());
+            const double wt = wt_(i);
+            const Eigen::Vector3d wn = relativeAir_.col(i) - wt * t;
+            const double dForce = scale * h * theta * (ct - cn) / chordLength_(i);
+            double block[3][3];  // scale * h theta df/dchord
+            for (int a = 0; a < 3; ++a) {
+                for (int b = 0; b < 3; ++b) {
+                    block[a][b] = dForce * (wt * ((a == b ? 1.0 : 0.0) - t(a) * t(b)) + t(a) * wn(b));
+                }
+            }
             if (!held(hi)) {
-                const Eigen::Matrix3d block = -h * theta * dForceDChord;
                 for (int a = 0; a < 3; ++a)
-                    for (int b = 0; b < 3; ++b) J.add(pointRow(i) + a, pointRow(hi) + b, scale * block(a, b));
+                    for (int b = 0; b < 3; ++b) J.add(pointRow(i) + a, pointRow(hi) + b, -block[a][b]);
             }
             if (!held(lo)) {
-                const Eigen::Matrix3d block = h * theta * dForceDChord;
                 for (int a = 0; a < 3; ++a)
-                    for (int b = 0; b < 3; ++b) J.add(pointRow(i) + a, pointRow(lo) + b, scale * block(a, b));
+                    for (int b = 0; b < 3; ++b) J.add(pointRow(i) + a, pointRow(lo) + b, block[a][b]);
             }
         }
     }
@@ -328,16 +358,28 @@ SubStepResult ImplicitFiberStep::advance(Fiber& fiber, double h, const PointDrag
     double constraintError = 0.0;
     double previousConstraintError = std::numeric_limits<double>::infinity();
     for (int iteration = 0;; ++iteration) {
-        const bool residualSmall = evaluateResidual(drag, settings.residualTolerance, constraintError);
+        evaluateResidual<false>(drag, constraintError);
 
         // ---- convergence -----------------------------------------------------------
         // Segment lengths cannot be computed closer than round-off in the coordinates
         // (relative to point 0): never ask for better than that.
+        // (sqrt of the largest squared norm: the same bits as the largest norm)
         const double roundOff = 16.0 * std::numeric_limits<double>::epsilon() *
-                                y_.colwise().norm().maxCoeff() / shortest;
+                                std::sqrt(y_.colwise().squaredNorm().maxCoeff()) / shortest;
         const double constraintTarget = std::max(settings.constraintTolerance, roundOff);
         const bool updateSmall = lastUpdate <= std::max(settings.updateTolerance, roundOff);
-        if (constraintError <= constraintTarget && (residualSmall || updateSmall)) {
+        // The residual test needs the size of every term (a dozen square roots per
+        // point): evaluated again with them only when it decides.
+        bool converged = false;
+        if (constraintError <= constraintTarget) {
+            if (updateSmall) {
+                converged = true;
+            } else {
+                evaluateResidual<true>(drag, constraintError);
+                converged = residualSmall(settings.residualTolerance);
+            }
+        }
+        if (converged) {
             result.converged = true;
             break;
         }

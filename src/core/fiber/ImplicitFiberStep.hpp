@@ -59,10 +59,13 @@ private:
     // Per sub-step: geometry, scales, constant terms, first iterate, constant Jacobian.
     void prepare(const Fiber& fiber, double h, const PointDrag& drag,
                  const FiberSolverSettings& settings);
-    // Residual rows at (y_, lambda_) into rhs_ (scaled as the Jacobian's rows);
-    // returns whether every point's residual is below its tolerance.
-    bool evaluateResidual(const PointDrag& drag, double residualTolerance,
-                          double& constraintError);
+    // Residual rows at (y_, lambda_) into rhs_ (scaled as the Jacobian's rows) and
+    // the largest relative constraint error; withSizes: also the size of each point
+    // row's terms and their round-off (magnitude_, noise_) for residualSmall().
+    template <bool withSizes>
+    void evaluateResidual(const PointDrag& drag, double& constraintError);
+    // Is every point's residual below its tolerance? (after evaluateResidual<true>)
+    bool residualSmall(double residualTolerance) const;
     // Jacobian at the iterate evaluateResidual saw, into lu_.
     void assembleJacobian(const PointDrag& drag);
     bool held(Eigen::Index i) const { return held_[static_cast<std::size_t>(i)] != 0; }
