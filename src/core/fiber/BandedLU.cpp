@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <utility>
 
 namespace dropletFiber {
@@ -17,6 +18,14 @@ void BandedLU::reset(Eigen::Index n, Eigen::Index kl, Eigen::Index ku)
     pivot_.assign(static_cast<std::size_t>(n), 0);
     lastColumn_.assign(static_cast<std::size_t>(n), 0);
     inverseDiagonal_.assign(static_cast<std::size_t>(n), 0.0);
+}
+
+void BandedLU::setPivotThreshold(double threshold)
+{
+    if (!(threshold > 0.0 && threshold <= 1.0)) {
+        throw std::invalid_argument("BandedLU: pivot threshold must be in (0, 1]");
+    }
+    pivotThreshold_ = threshold;
 }
 
 void BandedLU::assignMatrix(const BandedLU& other)
@@ -58,11 +67,13 @@ bool BandedLU::factorize()
     // ju: last column any row of U so far reaches (dgbtf2's JU). Rows below k hold
     // nothing right of max(ju, their own i + ku), so columns past ju need no update.
     Eigen::Index ju = 0;
+    rowExchanges_ = 0;
     const Eigen::Index columnStride = width_ - 1;  // A(i+1, j) is this far after A(i, j)
     for (Eigen::Index k = 0; k < n_; ++k) {
         const Eigen::Index lastRow = std::min(n_ - 1, k + kl_);
         double* pivotRow = rowPointer(k);
-        // Pivot: largest |A(i, k)|, i = k..lastRow (first one on ties).
+        // Pivot: the diagonal if it passes the threshold, else the largest |A(i, k)|,
+        // i = k..lastRow (first one on ties).
         Eigen::Index p = k;
         double biggest = std::abs(pivotRow[k]);
         const double* entry = pivotRow + k;
@@ -74,8 +85,10 @@ bool BandedLU::factorize()
                 p = i;
             }
         }
-        pivot_[static_cast<std::size_t>(k)] = p;
         if (biggest == 0.0) return false;
+        if (std::abs(pivotRow[k]) >= pivotThreshold_ * biggest) p = k;
+        pivot_[static_cast<std::size_t>(k)] = p;
+        if (p != k) ++rowExchanges_;
         ju = std::max(ju, std::min(n_ - 1, p + ku_));
         lastColumn_[static_cast<std::size_t>(k)] = ju;
         if (p != k) {

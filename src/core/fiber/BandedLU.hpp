@@ -6,7 +6,12 @@
 // arithmetic. This costs O(n kl (kl+ku)) per factorisation - linear in the number
 // of fiber points - allocates nothing once sized, and is deterministic.
 // Pivoting is needed: the fiber systems are saddle-point (KKT) systems with zero
-// diagonal entries in the constraint rows. Like dgbtf2, the elimination only runs
+// diagonal entries in the constraint rows. Threshold partial pivoting (as in sparse
+// LU codes, e.g. UMFPACK's default 0.1): the diagonal entry is kept as pivot when it
+// is at least pivotThreshold times the largest entry of its column below, so every
+// multiplier is at most 1 / pivotThreshold; 1 is classic partial pivoting (LAPACK).
+// A row exchange widens U by up to kl columns, so on nearly diagonally dominant
+// matrices a threshold below 1 saves work. Like dgbtf2, the elimination only runs
 // over the columns that row exchanges have actually filled (ju), not over the whole
 // room kept for fill: with few exchanges that halves the work, and the skipped
 // entries are exact zeros, so the factors are the same bits either way.
@@ -26,6 +31,10 @@ public:
     // Cheaper than reset() + adding a matrix's constant part again every time.
     void assignMatrix(const BandedLU& other);
 
+    // In (0, 1]; default 1 (partial pivoting). Kept by reset().
+    void setPivotThreshold(double threshold);
+    double pivotThreshold() const { return pivotThreshold_; }
+
     Eigen::Index size() const { return n_; }
     // A(i, j) += value; requires -kl <= j - i <= ku.
     void add(Eigen::Index i, Eigen::Index j, double value)
@@ -38,6 +47,8 @@ public:
     bool factorize();
     // Solve A x = b with the factors (b is overwritten by x).
     void solveInPlace(Eigen::VectorXd& b) const;
+    // Row exchanges made by the last factorize() (diagnostics, tests).
+    Eigen::Index rowExchanges() const { return rowExchanges_; }
 
 private:
     // Row i's storage, indexed by column: rowPointer(i)[j] = A(i, j) for
@@ -47,6 +58,8 @@ private:
 
     Eigen::Index n_ = 0, kl_ = 0, ku_ = 0;
     Eigen::Index width_ = 0;              // kl + (kl + ku) + 1: room for pivoting fill
+    double pivotThreshold_ = 1.0;
+    Eigen::Index rowExchanges_ = 0;
     std::vector<double> band_;            // row i: columns i-kl .. i+kl+ku
     std::vector<double> lower_;           // multipliers, kl per column
     std::vector<Eigen::Index> pivot_;     // row swapped with k at step k

@@ -10,6 +10,13 @@ namespace {
 
 constexpr Eigen::Index bandwidth = 10;  // bending couples points i and i+2: 4*2 + 2
 
+// Threshold partial pivoting (see BandedLU): with the constraint rows scaled to their
+// points' rows, the diagonal passes this in (almost) every column, so U keeps the
+// band's own width instead of the up to kl extra columns each row exchange adds.
+// The pentadiagonal bending part alone needs a threshold below 1/2: the LU of its
+// stencil (1, -4, 6, -4, 1) has multipliers of 2.
+constexpr double pivotThreshold = 0.1;
+
 Eigen::Index pointRow(Eigen::Index i) { return 4 * i; }
 Eigen::Index tensionRow(Eigen::Index j) { return 4 * j + 3; }
 
@@ -21,6 +28,11 @@ void tangentStencil(Eigen::Index i, Eigen::Index n, Eigen::Index& hi, Eigen::Ind
 }
 
 }  // namespace
+
+ImplicitFiberStep::ImplicitFiberStep()
+{
+    lu_.setPivotThreshold(pivotThreshold);
+}
 
 void ImplicitFiberStep::prepare(const Fiber& fiber, double h, const PointDrag& drag,
                                 const FiberSolverSettings& settings)
@@ -121,6 +133,16 @@ void ImplicitFiberStep::prepare(const Fiber& fiber, double h, const PointDrag& d
     }
     for (Eigen::Index j = 0; j < s; ++j) {
         if (held(j) && held(j + 1)) J.add(tensionRow(j), tensionRow(j), 1.0);
+    }
+    // Constraint rows in units of their points' rows: the mean of the two points'
+    // diagonal (1 + the bending stiffness over h^2 theta^2 / m, up to ~1e3 for thin
+    // glass fibers at the CFD step). Unscaled, the constraint rows are that much
+    // smaller than the point rows and their pivots fail any threshold.
+    constraintScale_.resize(s);
+    for (Eigen::Index j = 0; j < s; ++j) {
+        const double here = held(j) ? 1.0 : J.coeff(pointRow(j), pointRow(j));
+        const double next = held(j + 1) ? 1.0 : J.coeff(pointRow(j + 1), pointRow(j + 1));
+        constraintScale_(j) = 0.5 * (here + next);
     }
     for (Eigen::Index i = 0; i < n; ++i) {
         if (!held(i)) continue;
@@ -234,7 +256,7 @@ void ImplicitFiberStep::evaluateResidual(const PointDrag& drag, double& constrai
         dy_.col(j) = dy;
         const double dyLength = dy.norm();
         const double c = (dyLength - l(j)) * (dyLength + l(j)) / (2.0 * l(j));
-        rhs_(tensionRow(j)) = c;
+        rhs_(tensionRow(j)) = constraintScale_(j) * c;
         constraintError = std::max(constraintError, std::abs(c) / l(j));
     }
     for (Eigen::Index i = 0; i < n; ++i) {
@@ -333,11 +355,12 @@ void ImplicitFiberStep::assembleJacobian(const PointDrag& drag)
         }
         if (heldJ && heldNext) continue;  // constant row (in constantJacobian_)
         const Eigen::Vector3d dy = dy_.col(j);
+        const double rowScale = constraintScale_(j) / l(j);
         if (!heldNext) {
-            for (int b = 0; b < 3; ++b) J.add(tensionRow(j), pointRow(j + 1) + b, dy(b) / l(j));
+            for (int b = 0; b < 3; ++b) J.add(tensionRow(j), pointRow(j + 1) + b, rowScale * dy(b));
         }
         if (!heldJ) {
-            for (int b = 0; b < 3; ++b) J.add(tensionRow(j), pointRow(j) + b, -dy(b) / l(j));
+            for (int b = 0; b < 3; ++b) J.add(tensionRow(j), pointRow(j) + b, -rowScale * dy(b));
         }
     }
 }

@@ -16,7 +16,11 @@
 // saddle-point system ordered per point [y_i (3), lambda_i] so that its bandwidth is
 // 10 whatever the point count; it is solved with BandedLU (partial pivoting), O(n).
 // Rows are scaled by theta h / m_i and the multipliers by m / (theta h^2) so all
-// entries are lengths of order one (makes the pivoting meaningful).
+// entries are lengths of order one (makes the pivoting meaningful); a stiff fiber's
+// bending makes its point rows larger than that, so each constraint row is scaled by
+// the mean diagonal of its two points' rows, and the LU pivots with a threshold (0.1:
+// the diagonal is kept unless ten times smaller than the column's largest entry),
+// which on these systems leaves U as narrow as the band.
 //
 // Cost: each Newton iteration evaluates the residual, and only when another update is
 // needed the Jacobian (so the converged iterate costs no Jacobian). The Jacobian's
@@ -51,6 +55,8 @@ struct SubStepResult {
 
 class ImplicitFiberStep {
 public:
+    ImplicitFiberStep();
+
     // Advances fiber by h when it converges; leaves it untouched otherwise.
     SubStepResult advance(Fiber& fiber, double h, const PointDrag& drag,
                           const FiberSolverSettings& settings);
@@ -88,6 +94,7 @@ private:
     Eigen::VectorXd magnitude_, noise_;  // size of each residual row's terms, their round-off
     Eigen::VectorXd loadNorm_, xnNorm_, vnNorm_, airNorm_, xThetaNorm_;
     Eigen::VectorXd cn_, ct_, chordLength_, wt_;
+    Eigen::VectorXd constraintScale_;  // of each constraint row (tension row)
 };
 
 }  // namespace dropletFiber
