@@ -51,7 +51,8 @@ private:
     FiberSolverSettings settings_;
     ImplicitFiberStep implicitStep_;
 
-    // Work storage reused between sub-steps and fibers (no allocation once sized).
+    // Work storage reused between sub-steps and fibers (resized only when the point
+    // count changes).
     Eigen::Matrix3Xd airVelocity_;
     PointDrag drag_;
     // State at the start of the sub-step being tried (what advance and the velocity

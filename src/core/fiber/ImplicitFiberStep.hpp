@@ -27,7 +27,8 @@
 // constant part (mass and the linear bending force, plus the rows of held points) is
 // built once per sub-step and copied; each iteration adds drag and tension to it in
 // the order the full assembly would, so the matrix is the same bits. All work storage
-// is kept in the object: no allocation once sized for the largest fiber.
+// is kept in the object (Eigen work arrays are resized only when the point count
+// changes from one fiber to the next; the band storage only grows).
 #pragma once
 
 #include "fiber/BandedLU.hpp"
