@@ -25,8 +25,8 @@
 // Cost: each Newton iteration evaluates the residual, and only when another update is
 // needed the Jacobian (so the converged iterate costs no Jacobian). The Jacobian's
 // constant part (mass and the linear bending force, plus the rows of held points) is
-// built once per sub-step and copied; each iteration adds drag and tension to it in
-// the order the full assembly would, so the matrix is the same bits. All work storage
+// built once per sub-step and copied; each iteration adds drag and tension to it,
+// written straight into the band. All work storage
 // is kept in the object (Eigen work arrays are resized only when the point count
 // changes from one fiber to the next; the band storage only grows).
 #pragma once
