@@ -33,7 +33,7 @@ out="${out:-$build/bench-results/$(date +%Y%m%d-%H%M%S)}"
 mkdir -p "$out"
 echo "bench/run.sh: outputs in $out"
 
-targets="depositionBench collisionBench fiberStepBench fiberScalingBench paperSettingBench gridTrafficBench"
+targets="depositionBench collisionBench fiberStepBench fiberScalingBench fiberTutorialBench paperSettingBench gridTrafficBench"
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release > "$out/cmake.log"
 # shellcheck disable=SC2086
 cmake --build "$build" -j2 --target $targets >> "$out/cmake.log" 2>&1
@@ -67,12 +67,14 @@ if $quick; then
     run deposition "$bin/depositionBench" --quick
     run collision "$bin/collisionBench" --repeats 3
     run fiberScaling "$bin/fiberScalingBench" --max-fibers 1000
+    run fiberTutorial "$bin/fiberTutorialBench" --repeats 3
     run paperSetting "$bin/paperSettingBench" --quick
 else
     run deposition "$bin/depositionBench" --budget 60 --repeats 3
     run collision "$bin/collisionBench" --repeats 5
     run fiberStep "$bin/fiberStepBench"
     run fiberScaling "$bin/fiberScalingBench" --max-fibers 10000
+    run fiberTutorial "$bin/fiberTutorialBench"
     run paperSetting "$bin/paperSettingBench" --steps 200
 fi
 run gridTraffic3D "$bin/gridTrafficBench" --synthetic3d

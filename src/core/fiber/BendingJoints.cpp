@@ -5,9 +5,16 @@ namespace dropletFiber {
 std::vector<BendingJoint> bendingJoints(const Fiber& fiber)
 {
     std::vector<BendingJoint> joints;
+    bendingJoints(fiber, joints);
+    return joints;
+}
+
+void bendingJoints(const Fiber& fiber, std::vector<BendingJoint>& joints)
+{
+    joints.clear();
     const double stiffness = fiber.material().bendingStiffness();
     if (stiffness <= 0.0 || fiber.immobile()) {
-        return joints;
+        return;
     }
     const Eigen::VectorXd& l = fiber.restLengths();
     const Eigen::Index n = fiber.pointCount();
@@ -40,16 +47,6 @@ std::vector<BendingJoint> bendingJoints(const Fiber& fiber)
         joint.stiffness = stiffness / (0.5 * l(s));
         joints.push_back(joint);
     }
-    return joints;
-}
-
-Eigen::Vector3d jointVector(const BendingJoint& joint, const Eigen::Matrix3Xd& x)
-{
-    Eigen::Vector3d b = joint.offset;
-    for (int a = 0; a < joint.pointCount; ++a) {
-        b += joint.coefficient[static_cast<std::size_t>(a)] * x.col(joint.point[static_cast<std::size_t>(a)]);
-    }
-    return b;
 }
 
 double bendingEnergy(const std::vector<BendingJoint>& joints, const Eigen::Matrix3Xd& x)

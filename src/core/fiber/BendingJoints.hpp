@@ -28,8 +28,18 @@ struct BendingJoint {
 
 // Empty when S_b = 0 (limp fiber).
 std::vector<BendingJoint> bendingJoints(const Fiber& fiber);
+// The same into an existing list (replaced; its capacity is reused by the solver).
+void bendingJoints(const Fiber& fiber, std::vector<BendingJoint>& joints);
 
-Eigen::Vector3d jointVector(const BendingJoint& joint, const Eigen::Matrix3Xd& x);
+// Inline: evaluated for every joint in every Newton iteration.
+inline Eigen::Vector3d jointVector(const BendingJoint& joint, const Eigen::Matrix3Xd& x)
+{
+    Eigen::Vector3d b = joint.offset;
+    for (int a = 0; a < joint.pointCount; ++a) {
+        b += joint.coefficient[static_cast<std::size_t>(a)] * x.col(joint.point[static_cast<std::size_t>(a)]);
+    }
+    return b;
+}
 
 double bendingEnergy(const std::vector<BendingJoint>& joints, const Eigen::Matrix3Xd& x);
 

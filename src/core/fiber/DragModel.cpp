@@ -11,12 +11,12 @@ constexpr double eulerGamma = 0.57721566490153286;
 // ln(L/r) below 1 means a fiber shorter than ~3 radii: slender-body theory does not
 // apply at all; hold the logarithm there rather than let the coefficient blow up.
 constexpr double minimumLogarithm = 1.0;
-}  // namespace
 
-double slenderBodyLogarithm(DragModelType model, double airDensity, double airViscosity,
-                            double fiberRadius, double fiberLength, double normalRelativeSpeed)
+double slenderBodyLogarithmOfFiber(DragModelType model, double airDensity, double airViscosity,
+                                   double fiberRadius, double fiberLogarithm,
+                                   double normalRelativeSpeed)
 {
-    double lambda = std::max(std::log(fiberLength / fiberRadius), minimumLogarithm);
+    double lambda = fiberLogarithm;
     if (model == DragModelType::slenderBodyOseen) {
         const double reynolds = airDensity * 2.0 * fiberRadius * normalRelativeSpeed / airViscosity;
         if (reynolds > 0.0) {
@@ -28,9 +28,23 @@ double slenderBodyLogarithm(DragModelType model, double airDensity, double airVi
     return lambda;
 }
 
-DragCoefficients dragCoefficients(const DragSettings& settings, double airDensity,
-                                  double airViscosity, double fiberRadius, double fiberLength,
-                                  double normalRelativeSpeed)
+}  // namespace
+
+double fiberLogarithm(double fiberRadius, double fiberLength)
+{
+    return std::max(std::log(fiberLength / fiberRadius), minimumLogarithm);
+}
+
+double slenderBodyLogarithm(DragModelType model, double airDensity, double airViscosity,
+                            double fiberRadius, double fiberLength, double normalRelativeSpeed)
+{
+    return slenderBodyLogarithmOfFiber(model, airDensity, airViscosity, fiberRadius,
+                                       fiberLogarithm(fiberRadius, fiberLength), normalRelativeSpeed);
+}
+
+DragCoefficients dragCoefficientsOfFiber(const DragSettings& settings, double airDensity,
+                                         double airViscosity, double fiberRadius,
+                                         double fiberLogarithm, double normalRelativeSpeed)
 {
     switch (settings.model) {
     case DragModelType::none:
@@ -39,13 +53,24 @@ DragCoefficients dragCoefficients(const DragSettings& settings, double airDensit
         return {settings.normalCoefficient, settings.tangentialCoefficient};
     case DragModelType::slenderBodyStokes:
     case DragModelType::slenderBodyOseen: {
-        const double lambda = slenderBodyLogarithm(settings.model, airDensity, airViscosity,
-                                                   fiberRadius, fiberLength, normalRelativeSpeed);
+        const double lambda = slenderBodyLogarithmOfFiber(settings.model, airDensity, airViscosity,
+                                                          fiberRadius, fiberLogarithm, normalRelativeSpeed);
         const double normal = 4.0 * M_PI * airViscosity / lambda;
         return {normal, 0.5 * normal};
     }
     }
     return {0.0, 0.0};
+}
+
+DragCoefficients dragCoefficients(const DragSettings& settings, double airDensity,
+                                  double airViscosity, double fiberRadius, double fiberLength,
+                                  double normalRelativeSpeed)
+{
+    const bool slender = settings.model == DragModelType::slenderBodyStokes ||
+                         settings.model == DragModelType::slenderBodyOseen;
+    return dragCoefficientsOfFiber(settings, airDensity, airViscosity, fiberRadius,
+                                   slender ? fiberLogarithm(fiberRadius, fiberLength) : 0.0,
+                                   normalRelativeSpeed);
 }
 
 DragModelType dragModelFromName(const std::string& name)

@@ -49,6 +49,14 @@ DragCoefficients dragCoefficients(const DragSettings& settings, double airDensit
 double slenderBodyLogarithm(DragModelType model, double airDensity, double airViscosity,
                             double fiberRadius, double fiberLength, double normalRelativeSpeed);
 
+// The same two in two parts, for a caller that evaluates every point of one fiber:
+// the fiber's own part max(ln(L/r_F), 1), taken once per fiber, then the per-point
+// coefficients from it (the same bits as the functions above).
+double fiberLogarithm(double fiberRadius, double fiberLength);
+DragCoefficients dragCoefficientsOfFiber(const DragSettings& settings, double airDensity,
+                                         double airViscosity, double fiberRadius,
+                                         double fiberLogarithm, double normalRelativeSpeed);
+
 DragModelType dragModelFromName(const std::string& name);  // throws on unknown names
 std::string dragModelName(DragModelType model);
 

@@ -124,25 +124,37 @@ double Fiber::segmentMass(Eigen::Index j) const
 
 Eigen::VectorXd Fiber::pointMasses() const
 {
+    Eigen::VectorXd m;
+    pointMasses(m);
+    return m;
+}
+
+void Fiber::pointMasses(Eigen::VectorXd& m) const
+{
     const Eigen::Index n = pointCount();
-    Eigen::VectorXd m = Eigen::VectorXd::Zero(n);
+    m.setZero(n);
     for (Eigen::Index j = 0; j + 1 < n; ++j) {
         const double half = 0.5 * segmentMass(j);
         m(j) += half;
         m(j + 1) += half;
     }
-    return m;
 }
 
 Eigen::VectorXd Fiber::nodalLengths() const
 {
+    Eigen::VectorXd w;
+    nodalLengths(w);
+    return w;
+}
+
+void Fiber::nodalLengths(Eigen::VectorXd& w) const
+{
     const Eigen::Index n = pointCount();
-    Eigen::VectorXd w = Eigen::VectorXd::Zero(n);
+    w.setZero(n);
     for (Eigen::Index j = 0; j + 1 < n; ++j) {
         w(j) += 0.5 * state_.restLengths(j);
         w(j + 1) += 0.5 * state_.restLengths(j);
     }
-    return w;
 }
 
 Eigen::VectorXd Fiber::lineDensityAtPoints() const

@@ -53,6 +53,9 @@ public:
     double segmentMass(Eigen::Index j) const;     // base + captured [kg]
     Eigen::VectorXd pointMasses() const;          // lumped [kg]
     Eigen::VectorXd nodalLengths() const;         // length each point stands for [m]
+    // The same into existing storage (the solver's work vectors: no allocation).
+    void pointMasses(Eigen::VectorXd& m) const;
+    void nodalLengths(Eigen::VectorXd& w) const;
     Eigen::VectorXd lineDensityAtPoints() const;  // sigma [kg/m] per point
     double totalMass() const;
     double capturedMass() const;

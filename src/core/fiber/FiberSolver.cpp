@@ -53,39 +53,43 @@ void applyCapture(Fiber& fiber, const std::vector<SegmentSource>& sources)
     projectVelocities(fiber);
 }
 
-PointDrag FiberSolver::pointDrag(const Fiber& fiber, const AirSample* air, Eigen::Index firstPoint,
-                                 Eigen::Matrix3Xd& airVelocity) const
+void FiberSolver::updateDrag(const Fiber& fiber, const AirSample* air, Eigen::Index firstPoint)
 {
-    PointDrag drag;
-    if (air == nullptr) return drag;
+    drag_.airVelocity = nullptr;
+    if (air == nullptr) return;
     const Eigen::Index n = fiber.pointCount();
-    airVelocity = air->velocity.middleCols(firstPoint, n);
-    drag.airVelocity = &airVelocity;
-    drag.normal.resize(n);
-    drag.tangential.resize(n);
+    airVelocity_ = air->velocity.middleCols(firstPoint, n);
+    drag_.airVelocity = &airVelocity_;
+    drag_.normal.resize(n);
+    drag_.tangential.resize(n);
     const Eigen::Matrix3Xd& x = fiber.positions();
+    const double radius = fiber.material().radius;
+    const double logarithm = fiberLogarithm(radius, fiber.length());
     for (Eigen::Index i = 0; i < n; ++i) {
         const Eigen::Index hi = std::min(i + 1, n - 1), lo = std::max(i - 1, Eigen::Index(0));
         const Eigen::Vector3d t = (x.col(hi) - x.col(lo)).normalized();
-        const Eigen::Vector3d w = airVelocity.col(i) - fiber.velocities().col(i);
+        const Eigen::Vector3d w = airVelocity_.col(i) - fiber.velocities().col(i);
         const double normalSpeed = (w - t.dot(w) * t).norm();
-        const DragCoefficients c = dragCoefficients(
-            settings_.drag, air->density(firstPoint + i), air->viscosity(firstPoint + i),
-            fiber.material().radius, fiber.length(), normalSpeed);
-        drag.normal(i) = c.normal;
-        drag.tangential(i) = c.tangential;
+        const DragCoefficients c = dragCoefficientsOfFiber(
+            settings_.drag, air->density(firstPoint + i), air->viscosity(firstPoint + i), radius,
+            logarithm, normalSpeed);
+        drag_.normal(i) = c.normal;
+        drag_.tangential(i) = c.tangential;
     }
-    return drag;
 }
 
 void FiberSolver::advanceSpan(Fiber& fiber, std::size_t fiberIndex, double h, double hMin,
                               const AirSample* air, Eigen::Index firstPoint, StepReport& report,
-                              int& acceptedSubSteps)
+                              int& acceptedSubSteps, bool dragIsCurrent)
 {
-    const FiberState backup = fiber.state();
-    Eigen::Matrix3Xd airVelocity;
-    const PointDrag drag = pointDrag(fiber, air, firstPoint, airVelocity);
-    const SubStepResult result = implicitStep_.advance(fiber, h, drag, settings_);
+    // One backup suffices for the recursion: a frame needs its own only until it
+    // restores it, before it recurses.
+    FiberState& state = fiber.mutableState();
+    backupPositions_ = state.positions;
+    backupVelocities_ = state.velocities;
+    backupTension_ = state.tension;
+    if (!dragIsCurrent) updateDrag(fiber, air, firstPoint);
+    const SubStepResult result = implicitStep_.advance(fiber, h, drag_, settings_);
     report.newtonIterations += result.iterations;
     report.maxNewtonIterations = std::max(report.maxNewtonIterations, result.iterations);
 
@@ -97,7 +101,9 @@ void FiberSolver::advanceSpan(Fiber& fiber, std::size_t fiberIndex, double h, do
         ++acceptedSubSteps;
         return;
     }
-    fiber.mutableState() = backup;
+    state.positions = backupPositions_;
+    state.velocities = backupVelocities_;
+    state.tension = backupTension_;
     if (!canSplit) {
         throw std::runtime_error("FiberSolver: fiber " + std::to_string(fiberIndex) +
                                  " did not converge at the smallest sub-step " +
@@ -105,22 +111,21 @@ void FiberSolver::advanceSpan(Fiber& fiber, std::size_t fiberIndex, double h, do
                                  std::to_string(settings_.maxSubSteps) + ")");
     }
     ++report.rejectedSubSteps;
-    advanceSpan(fiber, fiberIndex, 0.5 * h, hMin, air, firstPoint, report, acceptedSubSteps);
-    advanceSpan(fiber, fiberIndex, 0.5 * h, hMin, air, firstPoint, report, acceptedSubSteps);
+    advanceSpan(fiber, fiberIndex, 0.5 * h, hMin, air, firstPoint, report, acceptedSubSteps, true);
+    advanceSpan(fiber, fiberIndex, 0.5 * h, hMin, air, firstPoint, report, acceptedSubSteps, false);
 }
 
 void FiberSolver::advanceFiber(Fiber& fiber, std::size_t fiberIndex, double dt, const AirSample* air,
                                Eigen::Index firstPoint, StepReport& report)
 {
     // Split up front so each sub-step spans at most maxDragStepRatio relaxation times.
+    updateDrag(fiber, air, firstPoint);
     int initialSplit = 1;
     if (air != nullptr) {
-        Eigen::Matrix3Xd airVelocity;
-        const PointDrag drag = pointDrag(fiber, air, firstPoint, airVelocity);
         const Eigen::VectorXd sigma = fiber.lineDensityAtPoints();
         double fastest = 0.0;  // largest c_n / sigma = 1 / relaxation time
         for (Eigen::Index i = 0; i < fiber.pointCount(); ++i) {
-            fastest = std::max(fastest, std::max(drag.normal(i), drag.tangential(i)) / sigma(i));
+            fastest = std::max(fastest, std::max(drag_.normal(i), drag_.tangential(i)) / sigma(i));
         }
         const double wanted = std::ceil(dt * fastest / settings_.maxDragStepRatio);
         initialSplit = static_cast<int>(std::min(std::max(wanted, 1.0),
@@ -129,7 +134,7 @@ void FiberSolver::advanceFiber(Fiber& fiber, std::size_t fiberIndex, double dt, 
     const double hMin = dt / settings_.maxSubSteps;
     int accepted = 0;
     for (int k = 0; k < initialSplit; ++k) {
-        advanceSpan(fiber, fiberIndex, dt / initialSplit, hMin, air, firstPoint, report, accepted);
+        advanceSpan(fiber, fiberIndex, dt / initialSplit, hMin, air, firstPoint, report, accepted, k == 0);
     }
     report.subSteps += accepted;
     report.maxSubStepsOfAFiber = std::max(report.maxSubStepsOfAFiber, accepted);

@@ -40,14 +40,25 @@ public:
 private:
     void advanceFiber(Fiber& fiber, std::size_t fiberIndex, double dt,
                       const AirSample* air, Eigen::Index firstPoint, StepReport& report);
+    // dragIsCurrent: drag_ was evaluated for the fiber's present state (saves doing
+    // it again for the first sub-step and after a rejected one).
     void advanceSpan(Fiber& fiber, std::size_t fiberIndex, double h, double hMin,
                      const AirSample* air, Eigen::Index firstPoint, StepReport& report,
-                     int& acceptedSubSteps);
-    PointDrag pointDrag(const Fiber& fiber, const AirSample* air, Eigen::Index firstPoint,
-                        Eigen::Matrix3Xd& airVelocity) const;
+                     int& acceptedSubSteps, bool dragIsCurrent);
+    // Drag coefficients at the fiber's present state into drag_ (no drag: air null).
+    void updateDrag(const Fiber& fiber, const AirSample* air, Eigen::Index firstPoint);
 
     FiberSolverSettings settings_;
     ImplicitFiberStep implicitStep_;
+
+    // Work storage reused between sub-steps and fibers (resized only when the point
+    // count changes).
+    Eigen::Matrix3Xd airVelocity_;
+    PointDrag drag_;
+    // State at the start of the sub-step being tried (what advance and the velocity
+    // projection change), for a rejected sub-step.
+    Eigen::Matrix3Xd backupPositions_, backupVelocities_;
+    Eigen::VectorXd backupTension_;
 };
 
 // Inelastic capture on one fiber (step 1 above); exposed for tests and tools.

@@ -1,17 +1,21 @@
 #include "fiber/ImplicitFiberStep.hpp"
 
-#include "fiber/BendingJoints.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <vector>
 
 namespace dropletFiber {
 
 namespace {
 
 constexpr Eigen::Index bandwidth = 10;  // bending couples points i and i+2: 4*2 + 2
+
+// Threshold partial pivoting (see BandedLU): with the constraint rows scaled to their
+// points' rows, the diagonal passes this in (almost) every column, so U keeps the
+// band's own width instead of the up to kl extra columns each row exchange adds.
+// The pentadiagonal bending part alone needs a threshold below 1/2: the LU of its
+// stencil (1, -4, 6, -4, 1) has multipliers of 2.
+constexpr double pivotThreshold = 0.1;
 
 Eigen::Index pointRow(Eigen::Index i) { return 4 * i; }
 Eigen::Index tensionRow(Eigen::Index j) { return 4 * j + 3; }
@@ -25,194 +29,380 @@ void tangentStencil(Eigen::Index i, Eigen::Index n, Eigen::Index& hi, Eigen::Ind
 
 }  // namespace
 
+ImplicitFiberStep::ImplicitFiberStep()
+{
+    lu_.setPivotThreshold(pivotThreshold);
+}
+
+void ImplicitFiberStep::prepare(const Fiber& fiber, double h, const PointDrag& drag,
+                                const FiberSolverSettings& settings)
+{
+    const FiberState& state = fiber.state();
+    const Eigen::Index n = fiber.pointCount();
+    const Eigen::Index s = n - 1;
+    const double theta = settings.theta;
+    n_ = n;
+    h_ = h;
+    theta_ = theta;
+    vn_ = &state.velocities;
+    l_ = &state.restLengths;
+    const Eigen::Matrix3Xd& vn = state.velocities;
+
+    // Work relative to the first point: keeps round-off at the scale of the fiber.
+    const Eigen::Vector3d origin = state.positions.col(0);
+    xn_ = state.positions.colwise() - origin;
+    fiber.pointMasses(m_);
+    fiber.nodalLengths(nodal_);
+    bendingJoints(fiber, joints_);
+    jointOffsetNorm_.resize(joints_.size());
+    for (std::size_t k = 0; k < joints_.size(); ++k) jointOffsetNorm_[k] = joints_[k].offset.norm();
+    held_.resize(static_cast<std::size_t>(n));
+    for (Eigen::Index i = 0; i < n; ++i) held_[static_cast<std::size_t>(i)] = fiber.pointHeld(i);
+
+    y_.resize(3, n);
+    for (Eigen::Index i = 0; i < n; ++i) {
+        y_.col(i) = xn_.col(i) + h * (held(i) ? fiber.heldPointVelocity(i) : Eigen::Vector3d(vn.col(i)));
+    }
+    lambda_ = state.tension;
+
+    rowScale_.resize(n);
+    lambdaScale_.resize(s);
+    for (Eigen::Index i = 0; i < n; ++i) rowScale_(i) = theta * h / m_(i);
+    for (Eigen::Index j = 0; j < s; ++j) lambdaScale_(j) = 0.5 * (m_(j) + m_(j + 1)) / (theta * h * h);
+
+    // Terms of the residual that do not change during the Newton iteration.
+    const Eigen::Vector3d g = settings.gravity;
+    load_.resize(3, n);
+    loadNorm_.resize(n);
+    xnNorm_.resize(n);
+    vnNorm_.resize(n);
+    for (Eigen::Index i = 0; i < n; ++i) {
+        load_.col(i) = h * (m_(i) * g + state.externalForce.col(i));
+        loadNorm_(i) = load_.col(i).norm();
+        xnNorm_(i) = xn_.col(i).norm();
+        vnNorm_(i) = vn.col(i).norm();
+    }
+    cn_.setZero(n);
+    ct_.setZero(n);
+    airNorm_.setZero(n);
+    if (drag.airVelocity != nullptr) {
+        for (Eigen::Index i = 0; i < n; ++i) {
+            cn_(i) = nodal_(i) * drag.normal(i);
+            ct_(i) = nodal_(i) * drag.tangential(i);
+            airNorm_(i) = drag.airVelocity->col(i).norm();
+        }
+    }
+
+    const Eigen::Index size = 4 * n - 1;
+    rhs_.resize(size);
+    residual_.resize(3, n);
+    magnitude_.resize(n);
+    noise_.resize(n);
+    xTheta_.resize(3, n);
+    vTheta_.resize(3, n);
+    xThetaNorm_.resize(n);
+    tangent_.resize(3, n);
+    relativeAir_.resize(3, n);
+    chordLength_.resize(n);
+    wt_.resize(n);
+    segment_.resize(3, s);
+    dy_.resize(3, s);
+
+    // The Jacobian's constant part, in the order the full assembly adds it: mass,
+    // then bending (linear force: constant coefficients), then the rows of held
+    // points and of segments between two held points (identity, nothing else).
+    BandedLU& J = constantJacobian_;
+    J.reset(size, bandwidth, bandwidth);
+    for (Eigen::Index i = 0; i < n; ++i) {
+        if (held(i)) continue;
+        const double diagonal = rowScale_(i) * (m_(i) / (theta * h));
+        for (int a = 0; a < 3; ++a) J.add(pointRow(i) + a, pointRow(i) + a, diagonal);
+    }
+    for (const BendingJoint& joint : joints_) {
+        for (int a = 0; a < joint.pointCount; ++a) {
+            const Eigen::Index p = joint.point[static_cast<std::size_t>(a)];
+            const double ca = joint.coefficient[static_cast<std::size_t>(a)];
+            for (int c = 0; c < joint.pointCount; ++c) {
+                const Eigen::Index q = joint.point[static_cast<std::size_t>(c)];
+                if (held(p) || held(q)) continue;
+                const double cc = joint.coefficient[static_cast<std::size_t>(c)];
+                const double value = rowScale_(p) * (h * theta * joint.stiffness * ca * cc);
+                for (int b = 0; b < 3; ++b) J.add(pointRow(p) + b, pointRow(q) + b, value);
+            }
+        }
+    }
+    for (Eigen::Index j = 0; j < s; ++j) {
+        if (held(j) && held(j + 1)) J.add(tensionRow(j), tensionRow(j), 1.0);
+    }
+    // Constraint rows in units of their points' rows: the mean of the two points'
+    // diagonal (1 + the bending stiffness over h^2 theta^2 / m, up to ~1e3 for thin
+    // glass fibers at the CFD step). Unscaled, the constraint rows are that much
+    // smaller than the point rows and their pivots fail any threshold.
+    constraintScale_.resize(s);
+    for (Eigen::Index j = 0; j < s; ++j) {
+        const double here = held(j) ? 1.0 : J.coeff(pointRow(j), pointRow(j));
+        const double next = held(j + 1) ? 1.0 : J.coeff(pointRow(j + 1), pointRow(j + 1));
+        constraintScale_(j) = 0.5 * (here + next);
+    }
+    for (Eigen::Index i = 0; i < n; ++i) {
+        if (!held(i)) continue;
+        for (int a = 0; a < 3; ++a) J.add(pointRow(i) + a, pointRow(i) + a, 1.0);
+    }
+}
+
+template <bool withSizes>
+void ImplicitFiberStep::evaluateResidual(const PointDrag& drag, double& constraintError)
+{
+    const Eigen::Index n = n_;
+    const Eigen::Index s = n - 1;
+    const double h = h_, theta = theta_;
+    const Eigen::Matrix3Xd& vn = *vn_;
+    const Eigen::VectorXd& l = *l_;
+
+    xTheta_ = xn_ + theta * (y_ - xn_);
+    vTheta_ = (y_ - xn_) / h;
+    residual_.setZero();
+    if (withSizes) {
+        for (Eigen::Index i = 0; i < n; ++i) xThetaNorm_(i) = xTheta_.col(i).norm();
+        magnitude_.setZero();
+        noise_.setZero();
+    }
+
+    for (Eigen::Index i = 0; i < n; ++i) {
+        if (held(i)) continue;
+        const Eigen::Vector3d inertia = m_(i) * (vTheta_.col(i) - vn.col(i)) / theta;
+        residual_.col(i) += inertia - load_.col(i);
+        if (withSizes) {
+            magnitude_(i) += inertia.norm() + loadNorm_(i);
+            noise_(i) += m_(i) * (y_.col(i).norm() + xnNorm_(i) + h * vnNorm_(i)) / (theta * h);
+        }
+    }
+    for (std::size_t k = 0; k < joints_.size(); ++k) {
+        const BendingJoint& joint = joints_[k];
+        const Eigen::Vector3d b = jointVector(joint, xTheta_);
+        double bScale = 0.0;
+        if (withSizes) {
+            bScale = jointOffsetNorm_[k];
+            for (int a = 0; a < joint.pointCount; ++a) {
+                bScale += std::abs(joint.coefficient[static_cast<std::size_t>(a)]) *
+                          xThetaNorm_(joint.point[static_cast<std::size_t>(a)]);
+            }
+        }
+        for (int a = 0; a < joint.pointCount; ++a) {
+            const Eigen::Index p = joint.point[static_cast<std::size_t>(a)];
+            if (held(p)) continue;
+            const double ca = joint.coefficient[static_cast<std::size_t>(a)];
+            const Eigen::Vector3d term = h * joint.stiffness * ca * b;  // -h * force
+            residual_.col(p) += term;
+            if (withSizes) {
+                magnitude_(p) += term.norm();
+                noise_(p) += h * joint.stiffness * std::abs(ca) * bScale;
+            }
+        }
+    }
+    if (drag.airVelocity != nullptr) {
+        for (Eigen::Index i = 0; i < n; ++i) {
+            if (held(i)) continue;
+            const double cn = cn_(i), ct = ct_(i);
+            if (cn == 0.0 && ct == 0.0) continue;
+            Eigen::Index hi, lo;
+            tangentStencil(i, n, hi, lo);
+            const Eigen::Vector3d chord = xTheta_.col(hi) - xTheta_.col(lo);
+            const double chordLength = chord.norm();
+            const Eigen::Vector3d t = chord / chordLength;
+            const Eigen::Vector3d w = drag.airVelocity->col(i) - vTheta_.col(i);
+            const double wt = t.dot(w);
+            const Eigen::Vector3d force = cn * w + (ct - cn) * wt * t;
+            residual_.col(i) -= h * force;
+            if (withSizes) {
+                magnitude_(i) += h * force.norm();
+                noise_(i) += h * std::max(cn, ct) * (airNorm_(i) + vTheta_.col(i).norm());
+            }
+            tangent_.col(i) = t;
+            relativeAir_.col(i) = w;
+            chordLength_(i) = chordLength;
+            wt_(i) = wt;
+        }
+    }
+    constraintError = 0.0;
+    for (Eigen::Index j = 0; j < s; ++j) {
+        const Eigen::Vector3d d = xTheta_.col(j + 1) - xTheta_.col(j);
+        segment_.col(j) = d;
+        const Eigen::Vector3d pull = lambda_(j) / l(j) * d;  // tension force on point j
+        double pullNoise = 0.0, pullSize = 0.0;
+        if (withSizes) {
+            pullNoise = h * std::abs(lambda_(j)) / l(j) * (xThetaNorm_(j + 1) + xThetaNorm_(j));
+            pullSize = h * pull.norm();
+        }
+        if (!held(j)) {
+            residual_.col(j) -= h * pull;
+            if (withSizes) {
+                magnitude_(j) += pullSize;
+                noise_(j) += pullNoise;
+            }
+        }
+        if (!held(j + 1)) {
+            residual_.col(j + 1) += h * pull;
+            if (withSizes) {
+                magnitude_(j + 1) += pullSize;
+                noise_(j + 1) += pullNoise;
+            }
+        }
+        if (held(j) && held(j + 1)) {
+            rhs_(tensionRow(j)) = 0.0;
+            continue;
+        }
+        const Eigen::Vector3d dy = y_.col(j + 1) - y_.col(j);
+        dy_.col(j) = dy;
+        const double dyLength = dy.norm();
+        const double c = (dyLength - l(j)) * (dyLength + l(j)) / (2.0 * l(j));
+        rhs_(tensionRow(j)) = constraintScale_(j) * c;
+        constraintError = std::max(constraintError, std::abs(c) / l(j));
+    }
+    for (Eigen::Index i = 0; i < n; ++i) {
+        if (held(i)) {
+            rhs_.segment<3>(pointRow(i)).setZero();
+        } else {
+            rhs_.segment<3>(pointRow(i)) = rowScale_(i) * residual_.col(i);
+        }
+    }
+}
+
+bool ImplicitFiberStep::residualSmall(double residualTolerance) const
+{
+    for (Eigen::Index i = 0; i < n_; ++i) {
+        if (held(i)) continue;
+        const double allowed = residualTolerance * magnitude_(i) +
+                               64.0 * std::numeric_limits<double>::epsilon() * noise_(i);
+        if (residual_.col(i).norm() > allowed) return false;
+    }
+    return true;
+}
+
+void ImplicitFiberStep::assembleJacobian(const PointDrag& drag)
+{
+    const Eigen::Index n = n_;
+    const Eigen::Index s = n - 1;
+    const double h = h_, theta = theta_;
+    const Eigen::VectorXd& l = *l_;
+    BandedLU& J = lu_;
+    J.assignMatrix(constantJacobian_);
+
+    if (drag.airVelocity != nullptr) {
+        for (Eigen::Index i = 0; i < n; ++i) {
+            if (held(i)) continue;
+            const double cn = cn_(i), ct = ct_(i);
+            if (cn == 0.0 && ct == 0.0) continue;
+            const Eigen::Vector3d t = tangent_.col(i);
+            const double scale = rowScale_(i);
+            // d(-h f)/dy through v_theta = (y - x_n) / h: (c_n I + (c_t - c_n) t t^T)
+            for (int a = 0; a < 3; ++a) {
+                const double outer = (ct - cn) * t(a);
+                for (int b = 0; b < 3; ++b) {
+                    const double value = (a == b ? cn : 0.0) + outer * t(b);
+                    J.add(pointRow(i) + a, pointRow(i) + b, scale * value);
+                }
+            }
+            if (ct == cn) continue;
+            // ... and through the tangent t = chord / |chord| at x_theta:
+            //   df/dchord = (c_t - c_n) / |chord| (wt I + t w^T)(I - t t^T)
+            //             = (c_t - c_n) / |chord| (wt (I - t t^T) + t w_n^T),
+            // w_n = w - wt t (w^T t = wt), written out instead of a matrix product.
+            Eigen::Index hi, lo;
+            tangentStencil(i, n, hi, lo);
+            const double wt = wt_(i);
+            const Eigen::Vector3d wn = relativeAir_.col(i) - wt * t;
+            const double dForce = scale * h * theta * (ct - cn) / chordLength_(i);
+            double block[3][3];  // scale * h theta df/dchord
+            for (int a = 0; a < 3; ++a) {
+                for (int b = 0; b < 3; ++b) {
+                    block[a][b] = dForce * (wt * ((a == b ? 1.0 : 0.0) - t(a) * t(b)) + t(a) * wn(b));
+                }
+            }
+            if (!held(hi)) {
+                for (int a = 0; a < 3; ++a)
+                    for (int b = 0; b < 3; ++b) J.add(pointRow(i) + a, pointRow(hi) + b, -block[a][b]);
+            }
+            if (!held(lo)) {
+                for (int a = 0; a < 3; ++a)
+                    for (int b = 0; b < 3; ++b) J.add(pointRow(i) + a, pointRow(lo) + b, block[a][b]);
+            }
+        }
+    }
+    for (Eigen::Index j = 0; j < s; ++j) {
+        const bool heldJ = held(j), heldNext = held(j + 1);
+        const double k = h * theta * lambda_(j) / l(j);
+        if (!heldJ) {
+            for (int a = 0; a < 3; ++a) J.add(pointRow(j) + a, pointRow(j) + a, rowScale_(j) * k);
+        }
+        if (!heldJ && !heldNext) {
+            for (int a = 0; a < 3; ++a) J.add(pointRow(j) + a, pointRow(j + 1) + a, rowScale_(j) * -k);
+        }
+        if (!heldNext) {
+            for (int a = 0; a < 3; ++a) J.add(pointRow(j + 1) + a, pointRow(j + 1) + a, rowScale_(j + 1) * k);
+        }
+        if (!heldJ && !heldNext) {
+            for (int a = 0; a < 3; ++a) J.add(pointRow(j + 1) + a, pointRow(j) + a, rowScale_(j + 1) * -k);
+        }
+        const Eigen::Vector3d d = segment_.col(j);
+        if (!heldJ) {
+            const double scale = rowScale_(j) * lambdaScale_(j);
+            for (int a = 0; a < 3; ++a) J.add(pointRow(j) + a, tensionRow(j), scale * (-h / l(j) * d(a)));
+        }
+        if (!heldNext) {
+            const double scale = rowScale_(j + 1) * lambdaScale_(j);
+            for (int a = 0; a < 3; ++a) J.add(pointRow(j + 1) + a, tensionRow(j), scale * (h / l(j) * d(a)));
+        }
+        if (heldJ && heldNext) continue;  // constant row (in constantJacobian_)
+        const Eigen::Vector3d dy = dy_.col(j);
+        const double rowScale = constraintScale_(j) / l(j);
+        if (!heldNext) {
+            for (int b = 0; b < 3; ++b) J.add(tensionRow(j), pointRow(j + 1) + b, rowScale * dy(b));
+        }
+        if (!heldJ) {
+            for (int b = 0; b < 3; ++b) J.add(tensionRow(j), pointRow(j) + b, -rowScale * dy(b));
+        }
+    }
+}
+
 SubStepResult ImplicitFiberStep::advance(Fiber& fiber, double h, const PointDrag& drag,
                                          const FiberSolverSettings& settings)
 {
     SubStepResult result;
+    prepare(fiber, h, drag, settings);
     FiberState& state = fiber.mutableState();
-    const Eigen::Index n = fiber.pointCount();
+    const Eigen::Index n = n_;
     const Eigen::Index s = n - 1;
-    const double theta = settings.theta;
-    const Eigen::Vector3d g = settings.gravity;
-
-    // Work relative to the first point: keeps round-off at the scale of the fiber.
-    const Eigen::Vector3d origin = state.positions.col(0);
-    const Eigen::Matrix3Xd xn = state.positions.colwise() - origin;
-    const Eigen::Matrix3Xd& vn = state.velocities;
+    const double theta = theta_;
     const Eigen::VectorXd& l = state.restLengths;
-    const Eigen::VectorXd m = fiber.pointMasses();
-    const Eigen::VectorXd nodal = fiber.nodalLengths();
-    const std::vector<BendingJoint> joints = bendingJoints(fiber);
     const double shortest = l.minCoeff();
-
-    std::vector<char> held(static_cast<std::size_t>(n));
-    for (Eigen::Index i = 0; i < n; ++i) held[static_cast<std::size_t>(i)] = fiber.pointHeld(i);
-    auto isHeld = [&held](Eigen::Index i) { return held[static_cast<std::size_t>(i)] != 0; };
-
-    Eigen::Matrix3Xd y(3, n);
-    for (Eigen::Index i = 0; i < n; ++i) {
-        y.col(i) = xn.col(i) + h * (isHeld(i) ? fiber.heldPointVelocity(i) : Eigen::Vector3d(vn.col(i)));
-    }
-    Eigen::VectorXd lambda = state.tension;
-
-    Eigen::VectorXd rowScale(n), lambdaScale(s);
-    for (Eigen::Index i = 0; i < n; ++i) rowScale(i) = theta * h / m(i);
-    for (Eigen::Index j = 0; j < s; ++j) lambdaScale(j) = 0.5 * (m(j) + m(j + 1)) / (theta * h * h);
-
-    const Eigen::Index size = 4 * n - 1;
-    Eigen::VectorXd rhs(size);
-    Eigen::Matrix3Xd residual(3, n);
-    Eigen::VectorXd magnitude(n);  // size of the terms of each residual row
-    Eigen::VectorXd noise(n);      // their round-off scale (before cancellation)
-    Eigen::Matrix3Xd xTheta(3, n), vTheta(3, n);
-    const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
-
-    auto addPointPoint = [&](Eigen::Index i, Eigen::Index q, const Eigen::Matrix3d& block) {
-        if (isHeld(i) || isHeld(q)) return;
-        for (int a = 0; a < 3; ++a)
-            for (int b = 0; b < 3; ++b)
-                lu_.add(pointRow(i) + a, pointRow(q) + b, rowScale(i) * block(a, b));
-    };
-    auto addPointTension = [&](Eigen::Index i, Eigen::Index j, const Eigen::Vector3d& column) {
-        if (isHeld(i)) return;
-        for (int a = 0; a < 3; ++a)
-            lu_.add(pointRow(i) + a, tensionRow(j), rowScale(i) * lambdaScale(j) * column(a));
-    };
-    auto addTensionPoint = [&](Eigen::Index j, Eigen::Index q, const Eigen::Vector3d& row) {
-        if (isHeld(q)) return;
-        for (int b = 0; b < 3; ++b) lu_.add(tensionRow(j), pointRow(q) + b, row(b));
-    };
 
     double lastUpdate = std::numeric_limits<double>::infinity();
     double constraintError = 0.0;
     double previousConstraintError = std::numeric_limits<double>::infinity();
     for (int iteration = 0;; ++iteration) {
-        // ---- residual and Jacobian at the current iterate --------------------------
-        lu_.reset(size, bandwidth, bandwidth);
-        xTheta = xn + theta * (y - xn);
-        vTheta = (y - xn) / h;
-        residual.setZero();
-        magnitude.setZero();
-        noise.setZero();
-
-        for (Eigen::Index i = 0; i < n; ++i) {
-            if (isHeld(i)) continue;
-            const Eigen::Vector3d inertia = m(i) * (vTheta.col(i) - vn.col(i)) / theta;
-            const Eigen::Vector3d load = h * (m(i) * g + state.externalForce.col(i));
-            residual.col(i) += inertia - load;
-            magnitude(i) += inertia.norm() + load.norm();
-            noise(i) += m(i) * (y.col(i).norm() + xn.col(i).norm() + h * vn.col(i).norm()) / (theta * h);
-            addPointPoint(i, i, m(i) / (theta * h) * identity);
-        }
-        for (const BendingJoint& joint : joints) {
-            const Eigen::Vector3d b = jointVector(joint, xTheta);
-            double bScale = joint.offset.norm();
-            for (int a = 0; a < joint.pointCount; ++a) {
-                bScale += std::abs(joint.coefficient[static_cast<std::size_t>(a)]) *
-                          xTheta.col(joint.point[static_cast<std::size_t>(a)]).norm();
-            }
-            for (int a = 0; a < joint.pointCount; ++a) {
-                const Eigen::Index p = joint.point[static_cast<std::size_t>(a)];
-                const double ca = joint.coefficient[static_cast<std::size_t>(a)];
-                const Eigen::Vector3d term = h * joint.stiffness * ca * b;  // -h * force
-                if (!isHeld(p)) {
-                    residual.col(p) += term;
-                    magnitude(p) += term.norm();
-                    noise(p) += h * joint.stiffness * std::abs(ca) * bScale;
-                }
-                for (int c = 0; c < joint.pointCount; ++c) {
-                    const double cc = joint.coefficient[static_cast<std::size_t>(c)];
-                    addPointPoint(p, joint.point[static_cast<std::size_t>(c)],
-                                  h * theta * joint.stiffness * ca * cc * identity);
-                }
-            }
-        }
-        if (drag.airVelocity != nullptr) {
-            for (Eigen::Index i = 0; i < n; ++i) {
-                if (isHeld(i)) continue;
-                const double cn = nodal(i) * drag.normal(i);
-                const double ct = nodal(i) * drag.tangential(i);
-                if (cn == 0.0 && ct == 0.0) continue;
-                Eigen::Index hi, lo;
-                tangentStencil(i, n, hi, lo);
-                const Eigen::Vector3d chord = xTheta.col(hi) - xTheta.col(lo);
-                const double chordLength = chord.norm();
-                const Eigen::Vector3d t = chord / chordLength;
-                const Eigen::Vector3d w = drag.airVelocity->col(i) - vTheta.col(i);
-                const double wt = t.dot(w);
-                const Eigen::Vector3d force = cn * w + (ct - cn) * wt * t;
-                residual.col(i) -= h * force;
-                magnitude(i) += h * force.norm();
-                noise(i) += h * std::max(cn, ct) * (drag.airVelocity->col(i).norm() + vTheta.col(i).norm());
-                addPointPoint(i, i, cn * identity + (ct - cn) * t * t.transpose());
-                if (ct != cn) {
-                    const Eigen::Matrix3d dForceDChord = (ct - cn) / chordLength *
-                        (wt * identity + t * w.transpose()) * (identity - t * t.transpose());
-                    addPointPoint(i, hi, -h * theta * dForceDChord);
-                    addPointPoint(i, lo, h * theta * dForceDChord);
-                }
-            }
-        }
-        constraintError = 0.0;
-        for (Eigen::Index j = 0; j < s; ++j) {
-            const Eigen::Vector3d d = xTheta.col(j + 1) - xTheta.col(j);
-            const Eigen::Vector3d pull = lambda(j) / l(j) * d;  // tension force on point j
-            const double pullNoise =
-                h * std::abs(lambda(j)) / l(j) * (xTheta.col(j + 1).norm() + xTheta.col(j).norm());
-            if (!isHeld(j)) {
-                residual.col(j) -= h * pull;
-                magnitude(j) += h * pull.norm();
-                noise(j) += pullNoise;
-            }
-            if (!isHeld(j + 1)) {
-                residual.col(j + 1) += h * pull;
-                magnitude(j + 1) += h * pull.norm();
-                noise(j + 1) += pullNoise;
-            }
-            const double k = h * theta * lambda(j) / l(j);
-            addPointPoint(j, j, k * identity);
-            addPointPoint(j, j + 1, -k * identity);
-            addPointPoint(j + 1, j + 1, k * identity);
-            addPointPoint(j + 1, j, -k * identity);
-            addPointTension(j, j, -h / l(j) * d);
-            addPointTension(j + 1, j, h / l(j) * d);
-
-            const Eigen::Vector3d dy = y.col(j + 1) - y.col(j);
-            if (isHeld(j) && isHeld(j + 1)) {
-                lu_.add(tensionRow(j), tensionRow(j), 1.0);
-                rhs(tensionRow(j)) = 0.0;
-                continue;
-            }
-            const double dyLength = dy.norm();
-            const double c = (dyLength - l(j)) * (dyLength + l(j)) / (2.0 * l(j));
-            rhs(tensionRow(j)) = c;
-            constraintError = std::max(constraintError, std::abs(c) / l(j));
-            addTensionPoint(j, j + 1, dy / l(j));
-            addTensionPoint(j, j, -dy / l(j));
-        }
-        bool residualSmall = true;
-        for (Eigen::Index i = 0; i < n; ++i) {
-            if (isHeld(i)) {
-                for (int a = 0; a < 3; ++a) {
-                    lu_.add(pointRow(i) + a, pointRow(i) + a, 1.0);
-                    rhs(pointRow(i) + a) = 0.0;
-                }
-                continue;
-            }
-            const double allowed = settings.residualTolerance * magnitude(i) +
-                                   64.0 * std::numeric_limits<double>::epsilon() * noise(i);
-            if (residual.col(i).norm() > allowed) residualSmall = false;
-            rhs.segment<3>(pointRow(i)) = rowScale(i) * residual.col(i);
-        }
+        evaluateResidual<false>(drag, constraintError);
 
         // ---- convergence -----------------------------------------------------------
         // Segment lengths cannot be computed closer than round-off in the coordinates
         // (relative to point 0): never ask for better than that.
+        // (sqrt of the largest squared norm: the same bits as the largest norm)
         const double roundOff = 16.0 * std::numeric_limits<double>::epsilon() *
-                                y.colwise().norm().maxCoeff() / shortest;
+                                std::sqrt(y_.colwise().squaredNorm().maxCoeff()) / shortest;
         const double constraintTarget = std::max(settings.constraintTolerance, roundOff);
         const bool updateSmall = lastUpdate <= std::max(settings.updateTolerance, roundOff);
-        if (constraintError <= constraintTarget && (residualSmall || updateSmall)) {
+        // The residual test needs the size of every term (a dozen square roots per
+        // point): evaluated again with them only when it decides.
+        bool converged = false;
+        if (constraintError <= constraintTarget) {
+            if (updateSmall) {
+                converged = true;
+            } else {
+                evaluateResidual<true>(drag, constraintError);
+                converged = residualSmall(settings.residualTolerance);
+            }
+        }
+        if (converged) {
             result.converged = true;
             break;
         }
@@ -230,38 +420,40 @@ SubStepResult ImplicitFiberStep::advance(Fiber& fiber, double h, const PointDrag
         previousConstraintError = constraintError;
 
         // ---- Newton update ---------------------------------------------------------
+        assembleJacobian(drag);
         if (!lu_.factorize()) break;
-        rhs = -rhs;
-        lu_.solveInPlace(rhs);
+        rhs_ = -rhs_;
+        lu_.solveInPlace(rhs_);
         ++result.iterations;
         double biggest = 0.0;
         for (Eigen::Index i = 0; i < n; ++i) {
-            if (isHeld(i)) continue;
-            const Eigen::Vector3d step = rhs.segment<3>(pointRow(i));
-            y.col(i) += step;
+            if (held(i)) continue;
+            const Eigen::Vector3d step = rhs_.segment<3>(pointRow(i));
+            y_.col(i) += step;
             biggest = std::max(biggest, step.norm());
         }
-        for (Eigen::Index j = 0; j < s; ++j) lambda(j) += lambdaScale(j) * rhs(tensionRow(j));
+        for (Eigen::Index j = 0; j < s; ++j) lambda_(j) += lambdaScale_(j) * rhs_(tensionRow(j));
         lastUpdate = biggest / shortest;
-        if (!std::isfinite(lastUpdate) || !lambda.allFinite()) break;
+        if (!std::isfinite(lastUpdate) || !lambda_.allFinite()) break;
     }
     if (!result.converged) return result;
 
     // ---- accept ---------------------------------------------------------------------
     for (Eigen::Index j = 0; j < s; ++j) {
-        const Eigen::Vector3d before = (xn.col(j + 1) - xn.col(j)) / l(j);
-        const Eigen::Vector3d after = (y.col(j + 1) - y.col(j)) / l(j);
+        const Eigen::Vector3d before = (xn_.col(j + 1) - xn_.col(j)) / l(j);
+        const Eigen::Vector3d after = (y_.col(j + 1) - y_.col(j)) / l(j);
         result.maxRotation = std::max(result.maxRotation, (after - before).norm());
     }
+    const Eigen::Vector3d origin = state.positions.col(0);
     for (Eigen::Index i = 0; i < n; ++i) {
-        if (isHeld(i)) {
+        if (held(i)) {
             state.velocities.col(i) = fiber.heldPointVelocity(i);
         } else {
-            state.velocities.col(i) = ((y.col(i) - xn.col(i)) / h - (1.0 - theta) * vn.col(i)) / theta;
+            state.velocities.col(i) = ((y_.col(i) - xn_.col(i)) / h - (1.0 - theta) * state.velocities.col(i)) / theta;
         }
     }
-    state.positions = y.colwise() + origin;
-    state.tension = lambda;
+    state.positions = y_.colwise() + origin;
+    state.tension = lambda_;
     return result;
 }
 

@@ -16,12 +16,27 @@
 // saddle-point system ordered per point [y_i (3), lambda_i] so that its bandwidth is
 // 10 whatever the point count; it is solved with BandedLU (partial pivoting), O(n).
 // Rows are scaled by theta h / m_i and the multipliers by m / (theta h^2) so all
-// entries are lengths of order one (makes the pivoting meaningful).
+// entries are lengths of order one (makes the pivoting meaningful); a stiff fiber's
+// bending makes its point rows larger than that, so each constraint row is scaled by
+// the mean diagonal of its two points' rows, and the LU pivots with a threshold (0.1:
+// the diagonal is kept unless ten times smaller than the column's largest entry),
+// which on these systems leaves U as narrow as the band.
+//
+// Cost: each Newton iteration evaluates the residual, and only when another update is
+// needed the Jacobian (so the converged iterate costs no Jacobian). The Jacobian's
+// constant part (mass and the linear bending force, plus the rows of held points) is
+// built once per sub-step and copied; each iteration adds drag and tension to it,
+// written straight into the band. All work storage
+// is kept in the object (Eigen work arrays are resized only when the point count
+// changes from one fiber to the next; the band storage only grows).
 #pragma once
 
 #include "fiber/BandedLU.hpp"
+#include "fiber/BendingJoints.hpp"
 #include "fiber/Fiber.hpp"
 #include "fiber/FiberSolverSettings.hpp"
+
+#include <vector>
 
 namespace dropletFiber {
 
@@ -41,12 +56,46 @@ struct SubStepResult {
 
 class ImplicitFiberStep {
 public:
+    ImplicitFiberStep();
+
     // Advances fiber by h when it converges; leaves it untouched otherwise.
     SubStepResult advance(Fiber& fiber, double h, const PointDrag& drag,
                           const FiberSolverSettings& settings);
 
 private:
-    BandedLU lu_;  // work storage, reused between fibers and steps
+    // Per sub-step: geometry, scales, constant terms, first iterate, constant Jacobian.
+    void prepare(const Fiber& fiber, double h, const PointDrag& drag,
+                 const FiberSolverSettings& settings);
+    // Residual rows at (y_, lambda_) into rhs_ (scaled as the Jacobian's rows) and
+    // the largest relative constraint error; withSizes: also the size of each point
+    // row's terms and their round-off (magnitude_, noise_) for residualSmall().
+    template <bool withSizes>
+    void evaluateResidual(const PointDrag& drag, double& constraintError);
+    // Is every point's residual below its tolerance? (after evaluateResidual<true>)
+    bool residualSmall(double residualTolerance) const;
+    // Jacobian at the iterate evaluateResidual saw, into lu_.
+    void assembleJacobian(const PointDrag& drag);
+    bool held(Eigen::Index i) const { return held_[static_cast<std::size_t>(i)] != 0; }
+
+    // The sub-step being solved.
+    Eigen::Index n_ = 0;
+    double h_ = 0.0, theta_ = 0.5;
+    const Eigen::Matrix3Xd* vn_ = nullptr;  // v_n (the fiber's velocities)
+    const Eigen::VectorXd* l_ = nullptr;    // rest lengths
+
+    // Work storage, reused between sub-steps, fibers and steps (sized per fiber).
+    BandedLU lu_;
+    BandedLU constantJacobian_;
+    std::vector<BendingJoint> joints_;
+    std::vector<double> jointOffsetNorm_;
+    std::vector<char> held_;
+    Eigen::Matrix3Xd xn_, y_, xTheta_, vTheta_, residual_, load_;
+    Eigen::Matrix3Xd tangent_, relativeAir_, segment_, dy_;  // residual terms the Jacobian reuses
+    Eigen::VectorXd m_, nodal_, rowScale_, lambdaScale_, lambda_, rhs_;
+    Eigen::VectorXd magnitude_, noise_;  // size of each residual row's terms, their round-off
+    Eigen::VectorXd loadNorm_, xnNorm_, vnNorm_, airNorm_, xThetaNorm_;
+    Eigen::VectorXd cn_, ct_, chordLength_, wt_;
+    Eigen::VectorXd constraintScale_;  // of each constraint row (tension row)
 };
 
 }  // namespace dropletFiber

@@ -36,6 +36,37 @@ TEST(DragModel, SlenderBodyCoefficients)
     EXPECT_THROW(dragModelFromName("stokes"), std::invalid_argument);
 }
 
+TEST(DragModel, FiberLogarithmOncePerFiberGivesTheSameCoefficients)
+{
+    EXPECT_DOUBLE_EQ(fiberLogarithm(5e-6, 0.01), std::log(2000.0));
+    EXPECT_EQ(fiberLogarithm(1e-3, 2e-3), 1.0);  // ln 2 < 1: held at 1 (not slender)
+    for (DragModelType model : {DragModelType::slenderBodyStokes, DragModelType::slenderBodyOseen}) {
+        DragSettings settings;
+        settings.model = model;
+        for (double speed : {0.0, 1e-4, 0.3, 50.0}) {  // Re_n = 0, < 1, > 1
+            const DragCoefficients direct = dragCoefficients(settings, airDensity, airViscosity, 3e-6, 0.01, speed);
+            const DragCoefficients split = dragCoefficientsOfFiber(settings, airDensity, airViscosity, 3e-6,
+                                                                   fiberLogarithm(3e-6, 0.01), speed);
+            EXPECT_EQ(direct.normal, split.normal);
+            EXPECT_EQ(direct.tangential, split.tangential);
+        }
+    }
+    // Fast air (Re_n = 1.2 * 6e-6 * 50 / 1.8e-5 = 20 > 1): Lamb's logarithm held at
+    // its Re_n = 1 value, ln 8 + 1/2 - gamma.
+    DragSettings oseen;
+    oseen.model = DragModelType::slenderBodyOseen;
+    const DragCoefficients fast = dragCoefficientsOfFiber(oseen, airDensity, airViscosity, 3e-6,
+                                                          fiberLogarithm(3e-6, 0.01), 50.0);
+    EXPECT_NEAR(fast.normal, 4.0 * M_PI * airViscosity / (std::log(8.0) + 0.5 - 0.5772156649015329), 1e-15);
+    DragSettings linear;
+    linear.model = DragModelType::linear;
+    linear.normalCoefficient = 2.0;
+    linear.tangentialCoefficient = 1.0;
+    const DragCoefficients c = dragCoefficientsOfFiber(linear, airDensity, airViscosity, 3e-6, 7.0, 0.3);
+    EXPECT_EQ(c.normal, 2.0);
+    EXPECT_EQ(c.tangential, 1.0);
+}
+
 namespace {
 
 // Vertical velocity of the centre of mass of a horizontal fiber falling in still air.
