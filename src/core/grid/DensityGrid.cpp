@@ -297,14 +297,6 @@ void DensityGrid::accumulate(std::size_t node, double weight, const std::array<d
     }
 }
 
-void DensityGrid::markTouched(const std::array<int, 3>& index)
-{
-    IndexBox box;
-    box.lo = index;
-    box.hi = index;
-    stepBox_ = stepBox_.united(box);
-}
-
 void DensityGrid::depositFallback(const Eigen::Vector3d& start, const Eigen::Vector3d& displacement,
                                   const std::array<double, nQuantities>& parcelTotals)
 {
@@ -320,6 +312,9 @@ void DensityGrid::depositFallback(const Eigen::Vector3d& start, const Eigen::Vec
     const double length = displacement.norm();
     const int points = static_cast<int>(std::min(4096.0, std::max(1.0, std::ceil(2.0 * length / spacing))));
     const double share = 1.0 / points;
+    // The touched box: the corners of all points, united once at the end (integer
+    // min/max per point instead of a box union per corner).
+    std::array<int, 3> lo{}, hi{};
     for (int p = 0; p < points; ++p)
     {
         const Eigen::Vector3d point = start + ((p + 0.5) * share) * displacement;
@@ -331,14 +326,18 @@ void DensityGrid::depositFallback(const Eigen::Vector3d& start, const Eigen::Vec
         }
         stepStatistics_.nodesVisited += corners.count;
         stepStatistics_.nodesWeighted += corners.count;
-        std::array<int, 3> upper = corners.lowerCorner;
         for (int d = 0; d < 3; ++d)
         {
-            upper[d] += spec_.flat(d) ? 0 : 1;
+            const int first = corners.lowerCorner[static_cast<std::size_t>(d)];
+            const int last = first + (spec_.flat(d) ? 0 : 1);
+            lo[static_cast<std::size_t>(d)] = p == 0 ? first : std::min(lo[static_cast<std::size_t>(d)], first);
+            hi[static_cast<std::size_t>(d)] = p == 0 ? last : std::max(hi[static_cast<std::size_t>(d)], last);
         }
-        markTouched(corners.lowerCorner);
-        markTouched(upper);
     }
+    IndexBox box;
+    box.lo = lo;
+    box.hi = hi;
+    stepBox_ = stepBox_.united(box);
 }
 
 void DensityGrid::commitStep()

@@ -146,7 +146,6 @@ private:
     void accumulate(std::size_t node, double weight, const std::array<double, nQuantities>& parcelTotals);
     void depositFallback(const Eigen::Vector3d& start, const Eigen::Vector3d& displacement,
                          const std::array<double, nQuantities>& parcelTotals);
-    void markTouched(const std::array<int, 3>& index);
 
     GridSpec spec_;
     KernelSettings kernelSettings_;

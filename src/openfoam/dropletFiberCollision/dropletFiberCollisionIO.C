@@ -110,7 +110,12 @@ void Foam::functionObjects::dropletFiberCollision::writeState() const
     mkDir(path.path());
     {
         OFstream ws(path + ".gridWindow", IOstream::BINARY);
-        ws << dropletFiber::toScalarList(window.values);
+        // Written straight from the window's buffer (a view, no copy)
+        ws << UList<scalar>
+        (
+            const_cast<scalar*>(window.values.data()),
+            label(window.values.size())
+        );
         if (!ws.good())
         {
             FatalErrorInFunction

@@ -94,3 +94,43 @@ TEST(CloudInCell, negativeRatioIsRejected)
     bad.cloudInCellBelow = -1.0;
     EXPECT_THROW(DensityGrid(grid2D(), bad), std::invalid_argument);
 }
+
+TEST(CloudInCell, stepBoxIsTheSmallestBoxHoldingTheTouchedNodes)
+{
+    // A fast parcel crossing several cells diagonally (path 0.5 mm + 4.2 mm in x, -2.7 mm
+    // in y). The step box must hold every node that received mass (the cross-rank sum
+    // moves only the box) and be no larger than the nodes' own bounding box.
+    KernelSettings settings;
+    settings.cloudInCellBelow = 0.5;
+    DensityGrid grid(grid2D(), settings, 1);
+    Parcel p = stationary(0.0053, 0.0121, 10.0);
+    const double dt = 1e-3;
+    p.velocity = Eigen::Vector3d(4.2, -2.7, 0.0); // m/s: the path starts at position - v dt
+    grid.deposit(p, dt);
+    ASSERT_EQ(grid.stepStatistics().parcelsCloudInCell, 1);
+
+    const GridSpec& s = grid.spec();
+    IndexBox touched;
+    for (int j = 0; j < s.nodes[1]; ++j)
+    {
+        for (int i = 0; i < s.nodes[0]; ++i)
+        {
+            if (grid.stepValues()[s.flatIndex(i, j, 0) * nQuantities + quantityMass] != 0.0)
+            {
+                IndexBox node;
+                node.lo = {{i, j, 0}};
+                node.hi = {{i, j, 0}};
+                touched = touched.united(node);
+            }
+        }
+    }
+    ASSERT_FALSE(touched.empty());
+    // Multilinear weights of interior points are all non-zero, so the box of the nodes
+    // with mass and the box of the corners coincide here.
+    EXPECT_EQ(grid.stepBox(), touched);
+    // And it spans the path: x from 0.0011 to 0.0053 m, y from 0.0148 to 0.0121 m.
+    EXPECT_EQ(touched.lo[0], 1);
+    EXPECT_EQ(touched.hi[0], 6);
+    EXPECT_EQ(touched.lo[1], 12);
+    EXPECT_EQ(touched.hi[1], 15);
+}
