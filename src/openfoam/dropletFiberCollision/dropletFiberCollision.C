@@ -273,26 +273,31 @@ Foam::functionObjects::dropletFiberCollision::depositParcels(const scalar dt)
     // boxes of nodes the processors touched only
     if (Pstream::parRun())
     {
+        // The union of the processors' boxes in one reduction: max of
+        // (-lo, hi) (an empty box contributes nothing)
         ::dropletFiber::IndexBox box = grid.stepBox();
-        List<label> lo(3), hi(3);
-        for (label d = 0; d < 3; ++d)
+        List<label> bounds(6, labelMin);
+        if (!box.empty())
         {
-            lo[d] = box.lo[d];
-            hi[d] = box.hi[d];
+            for (label d = 0; d < 3; ++d)
+            {
+                bounds[d] = -box.lo[d];
+                bounds[3 + d] = box.hi[d];
+            }
         }
-        if (box.empty())
+        Pstream::listCombineGather(bounds, maxEqOp<label>());
+        Pstream::listCombineScatter(bounds);
+        if (bounds[0] == labelMin)
         {
-            lo = labelMax;
-            hi = labelMin;
+            box = ::dropletFiber::IndexBox{};
         }
-        Pstream::listCombineGather(lo, minEqOp<label>());
-        Pstream::listCombineScatter(lo);
-        Pstream::listCombineGather(hi, maxEqOp<label>());
-        Pstream::listCombineScatter(hi);
-        for (label d = 0; d < 3; ++d)
+        else
         {
-            box.lo[d] = lo[d];
-            box.hi[d] = hi[d];
+            for (label d = 0; d < 3; ++d)
+            {
+                box.lo[d] = -bounds[d];
+                box.hi[d] = bounds[3 + d];
+            }
         }
         if (!box.empty())
         {
@@ -309,11 +314,18 @@ Foam::functionObjects::dropletFiberCollision::depositParcels(const scalar dt)
     // This step's statistics, summed over processors (every member is a sum)
     ::dropletFiber::StepStatistics stats = grid.stepStatistics();
     grid.commitStep();
-    reduce(stats.massIn, sumOp<scalar>());
-    reduce(stats.massDeposited, sumOp<scalar>());
-    reduce(stats.massOutside, sumOp<scalar>());
-    label capped = label(stats.parcelsCapped);
-    reduce(capped, sumOp<label>());
+    // One reduction for the four sums (the count is exact in a double)
+    List<scalar> sums(4);
+    sums[0] = stats.massIn;
+    sums[1] = stats.massDeposited;
+    sums[2] = stats.massOutside;
+    sums[3] = scalar(stats.parcelsCapped);
+    Pstream::listCombineGather(sums, plusEqOp<scalar>());
+    Pstream::listCombineScatter(sums);
+    stats.massIn = sums[0];
+    stats.massDeposited = sums[1];
+    stats.massOutside = sums[2];
+    const label capped = label(sums[3]);
     stats.parcelsCapped = capped;
 
     if (capped > 0 && totals_.parcelsCapped == 0)
