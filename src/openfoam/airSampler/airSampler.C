@@ -4,6 +4,7 @@
 
 #include "airSampler.H"
 #include "interpolationCellPoint.H"
+#include "polyMeshTetDecomposition.H"
 #include "IOdictionary.H"
 #include "dictionaryChecks.H"
 
@@ -90,6 +91,51 @@ Foam::scalar Foam::dropletFiber::airSampler::cellValue
         return s.value;
     }
     return mesh_.lookupObject<volScalarField>(s.fieldName)[celli];
+}
+
+
+bool Foam::dropletFiber::airSampler::tetHolds
+(
+    const tetIndices& tet,
+    const point& p,
+    barycentric& w
+) const
+{
+    // The test of cellPointWeight::findTetrahedron, with its tolerance SMALL
+    const scalar det = tet.tet(mesh_).pointToBarycentric(p, w);
+    return
+        mag(det/mesh_.cellVolumes()[tet.cell()]) > SMALL
+     && w[0] + SMALL > 0 && w[1] + SMALL > 0 && w[2] + SMALL > 0
+     && w[0] + w[1] + w[2] < 1 + SMALL;
+}
+
+
+Foam::vector Foam::dropletFiber::airSampler::interpolateU
+(
+    const interpolationCellPoint<vector>& interpU,
+    const point& p,
+    const label celli,
+    tetIndices& hint
+) const
+{
+    barycentric w;
+    if (hint.cell() == celli && tetHolds(hint, p, w))
+    {
+        return interpU.interpolate(w, hint);
+    }
+    // The cell's tets in OpenFOAM's order, so the first that holds p is the
+    // one interpolationCellPoint::interpolate(p, celli) would use
+    for (const tetIndices& tet : polyMeshTetDecomposition::cellTetIndices(mesh_, celli))
+    {
+        if (tetHolds(tet, p, w))
+        {
+            hint = tet;
+            return interpU.interpolate(w, tet);
+        }
+    }
+    // None holds it (a point on a warped face): OpenFOAM's nearest-tet rule
+    hint = tetIndices();
+    return interpU.interpolate(p, celli);
 }
 
 
@@ -202,6 +248,7 @@ Foam::scalar Foam::dropletFiber::airSampler::referenceViscosity() const
     constexpr label width = 6;
     List<scalar> values(width*n, Zero);
     cellHint_.setSize(n, -1);
+    tetHint_.setSize(n);
     label previousPointCell = -1;
     for (label i = 0; i < n; ++i)
     {
@@ -213,7 +260,7 @@ Foam::scalar Foam::dropletFiber::airSampler::referenceViscosity() const
         {
             continue;
         }
-        const vector u = interpU.interpolate(p, celli);
+        const vector u = interpolateU(interpU, p, celli, tetHint_[i]);
         scalar* v = &values[width*i];
         v[0] = u.x();
         v[1] = u.y();
