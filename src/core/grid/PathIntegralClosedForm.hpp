@@ -1,9 +1,10 @@
 // PathIntegralClosedForm: int phi dlambda along the path for one node (or four, V = Lanes)
 // in the common case, the closed form of eq. 23 with scaled erfc ("regime C" of
-// PathWeight.cpp), without data-dependent branches. Nodes that need one of the two rare
-// regimes (A: the path only grazes the edge of the support; B: a short interval, Taylor
-// series) are flagged in needsExact and left to PathWeight::integralAlongPath (the per-node code); nodes out of
-// reach, and nodes whose reach circle misses the path, give 0.
+// PathWeight.cpp), without data-dependent branches; AVX2 + FMA build only (KernelBuild.hpp).
+// Nodes that need one of the two rare regimes (A: the path only grazes the edge of the
+// support; B: a short interval, Taylor series) are flagged in needsExact and left to
+// PathWeight::integralAlongPath (the per-node code); nodes out of reach, and nodes whose
+// reach circle misses the path, give 0.
 //
 // Why branch-free: in the deposit the regime choices (one- or two-sided interval, clipped
 // ends, erfc range) depend on the node and were mispredicted ~2.7 times per node, a third
@@ -61,7 +62,7 @@ struct PathIntegralClosedForm
 
     // The whole closed form for one node (V = double) or four (V = Lanes): the stages in
     // sequence. The deposit runs the same stages as loops over many nodes
-    // (PathWeightBatch::omegas); both give the same bits. needsExact: regime A or B (result 0).
+    // (PathWeightBatch::omegas); both the same formulas. needsExact: regime A or B (result 0).
     template <class V>
     V operator()(V lambdaM, V d0Squared, MaskOf<V>& needsExact) const
     {
