@@ -12,9 +12,9 @@
 // The kernels that use lanes are templates on V = double or V = Lanes, written with the
 // helpers below: the scalar instantiation (tests) and the lane instantiation evaluate the
 // same formulas (GCC may contract a * b + c into FMA differently in the two, so they agree
-// to an ulp, not always to the bit). Candidates computed in a lane and then discarded must not raise
-// divide-by-zero, invalid or overflow (OpenFOAM may trap them, FOAM_SIGFPE): callers clamp
-// their arguments so that every candidate is finite.
+// to an ulp, not always to the bit). Candidates computed in a lane and then discarded must
+// not raise divide-by-zero, invalid or overflow (OpenFOAM may trap them, FOAM_SIGFPE):
+// callers clamp their arguments so that every candidate is finite.
 #pragma once
 
 #include "grid/KernelBuild.hpp"
