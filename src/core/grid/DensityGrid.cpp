@@ -1,7 +1,12 @@
 #include "grid/DensityGrid.hpp"
 
+#include "grid/KernelBuild.hpp"
 #include "grid/MultilinearWeights.hpp"
 #include "grid/PathWeight.hpp"
+
+#if DROPLETFIBER_BATCHED_KERNEL
+#include "grid/Lanes.hpp"
+#endif
 
 #include <algorithm>
 #include <cfloat>
@@ -222,24 +227,87 @@ void DensityGrid::deposit(const Parcel& parcel, double dt)
     std::int64_t visited = 0;
     const std::size_t nx = static_cast<std::size_t>(spec_.nodes[0]);
     const std::size_t ny = static_cast<std::size_t>(spec_.nodes[1]);
-    for (int k = lo[2]; k <= hi[2]; ++k)
+#if DROPLETFIBER_BATCHED_KERNEL
+    if (!pathWeight.stationary())
     {
-        const double oz = coordinates_[2][static_cast<std::size_t>(k)] - clipStart.z();
-        for (int j = lo[1]; j <= hi[1]; ++j)
+        // AVX2 + FMA build (KernelBuild.hpp): project every node of the box, then omega of
+        // all of them four at a time without branches (PathWeightBatch); the same sums and
+        // the same list of weighted nodes, in node order, as the per-node loop below.
+        const std::size_t boxNodes = static_cast<std::size_t>(std::max(hi[0] - lo[0] + 1, 0))
+            * static_cast<std::size_t>(std::max(hi[1] - lo[1] + 1, 0))
+            * static_cast<std::size_t>(std::max(hi[2] - lo[2] + 1, 0));
+        const std::size_t padded = (boxNodes + laneCount - 1) / laneCount * laneCount;
+        if (boxOmega_.size() < padded)
         {
-            const double oy = coordinates_[1][static_cast<std::size_t>(j)] - clipStart.y();
-            const std::size_t row = nx * (static_cast<std::size_t>(j) + ny * static_cast<std::size_t>(k));
-            for (int i = lo[0]; i <= hi[0]; ++i)
+            boxLambda_.resize(padded);
+            boxDistanceSquared_.resize(padded);
+            boxOmega_.resize(padded);
+        }
+        std::size_t n = 0;
+        for (int k = lo[2]; k <= hi[2]; ++k)
+        {
+            const double oz = coordinates_[2][static_cast<std::size_t>(k)] - clipStart.z();
+            for (int j = lo[1]; j <= hi[1]; ++j)
             {
-                const Eigen::Vector3d offset(coordinates_[0][static_cast<std::size_t>(i)] - clipStart.x(), oy, oz);
-                const double omega = pathWeight.omegaFromOffset(offset);
-                if (omega > 0.0)
+                const double oy = coordinates_[1][static_cast<std::size_t>(j)] - clipStart.y();
+                for (int i = lo[0]; i <= hi[0]; ++i, ++n)
                 {
-                    scratch_.emplace_back(row + static_cast<std::size_t>(i), omega);
+                    const Eigen::Vector3d offset(coordinates_[0][static_cast<std::size_t>(i)] - clipStart.x(), oy, oz);
+                    pathWeight.project(offset, boxLambda_[n], boxDistanceSquared_[n]);
+                }
+            }
+        }
+        for (; n < padded; ++n) // out of reach: omega 0
+        {
+            boxLambda_[n] = 0.0;
+            boxDistanceSquared_[n] = 2.0 * kernel.reach() * kernel.reach();
+        }
+        batch_.omegas(pathWeight, boxLambda_.data(), boxDistanceSquared_.data(), boxOmega_.data(), padded);
+        // List the nodes with omega > 0 without a branch: each node is written at the end of
+        // the list and kept by advancing the count (omega <= 0 adds 0 to the sum).
+        scratch_.resize(boxNodes);
+        std::size_t weighted = 0;
+        n = 0;
+        for (int k = lo[2]; k <= hi[2]; ++k)
+        {
+            for (int j = lo[1]; j <= hi[1]; ++j)
+            {
+                const std::size_t row = nx * (static_cast<std::size_t>(j) + ny * static_cast<std::size_t>(k));
+                for (int i = lo[0]; i <= hi[0]; ++i, ++n)
+                {
+                    const double omega = std::max(boxOmega_[n], 0.0);
+                    scratch_[weighted] = {row + static_cast<std::size_t>(i), omega};
+                    weighted += omega > 0.0 ? 1 : 0;
                     omegaSum += omega;
                 }
             }
-            visited += hi[0] >= lo[0] ? hi[0] - lo[0] + 1 : 0;
+        }
+        scratch_.resize(weighted);
+        visited = static_cast<std::int64_t>(boxNodes);
+    }
+    else
+#endif
+    {
+        // Per-node loop (the default build; stationary parcels in every build).
+        for (int k = lo[2]; k <= hi[2]; ++k)
+        {
+            const double oz = coordinates_[2][static_cast<std::size_t>(k)] - clipStart.z();
+            for (int j = lo[1]; j <= hi[1]; ++j)
+            {
+                const double oy = coordinates_[1][static_cast<std::size_t>(j)] - clipStart.y();
+                const std::size_t row = nx * (static_cast<std::size_t>(j) + ny * static_cast<std::size_t>(k));
+                for (int i = lo[0]; i <= hi[0]; ++i)
+                {
+                    const Eigen::Vector3d offset(coordinates_[0][static_cast<std::size_t>(i)] - clipStart.x(), oy, oz);
+                    const double omega = pathWeight.omegaFromOffset(offset);
+                    if (omega > 0.0)
+                    {
+                        scratch_.emplace_back(row + static_cast<std::size_t>(i), omega);
+                        omegaSum += omega;
+                    }
+                }
+                visited += hi[0] >= lo[0] ? hi[0] - lo[0] + 1 : 0;
+            }
         }
     }
     stats.nodesVisited += visited;

@@ -70,6 +70,7 @@
 #include "grid/GridSpec.hpp"
 #include "grid/Parcel.hpp"
 #include "grid/ParcelKernel.hpp"
+#include "grid/PathWeightBatch.hpp"
 #include "grid/StepStatistics.hpp"
 
 #include <Eigen/Core>
@@ -161,6 +162,13 @@ private:
     StepStatistics stepStatistics_;
     StepStatistics lastStepStatistics_;
     std::vector<std::pair<std::size_t, double>> scratch_; // (node, omega) of the current parcel
+    // The batched deposit of the AVX2 + FMA build (KernelBuild.hpp; unused, empty, in the
+    // default build): the current parcel's box node by node (i fastest, padded to whole
+    // lanes), projection on the path line, squared distance from it, omega.
+    std::vector<double> boxLambda_;
+    std::vector<double> boxDistanceSquared_;
+    std::vector<double> boxOmega_;
+    PathWeightBatch batch_;
 };
 
 } // namespace dropletFiber

@@ -68,7 +68,17 @@ public:
     // distance >= reach: no effect.
     void limitTo(double distance) { cutoffSquared_ = std::min(reachSquared_, distance * distance); }
 
+    // A moving path (not stationary()): the node at `offset` from the start projects to
+    // lambdaM on the path line, at squared distance d0Squared from it (the operations of
+    // omegaFromOffset; used by the batched deposit, PathWeightBatch).
+    void project(const Eigen::Vector3d& offset, double& lambdaM, double& d0Squared) const
+    {
+        lambdaM = direction_.dot(offset);
+        d0Squared = (offset - lambdaM * direction_).squaredNorm();
+    }
+
     double length() const { return length_; }
+    double cutoffSquared() const { return cutoffSquared_; }
     bool stationary() const { return stationary_; }
     const ParcelKernel& kernel() const { return kernel_; }
 

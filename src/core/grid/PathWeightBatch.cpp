@@ -1,0 +1,221 @@
+// PathWeightBatch::omegas: the stage loops of the batched deposit (see PathWeightBatch.hpp).
+// Compiled only in the AVX2 + FMA build (KernelBuild.hpp); elsewhere this file is empty.
+#include "grid/PathWeightBatch.hpp"
+
+#include "grid/KernelBuild.hpp"
+
+#if DROPLETFIBER_BATCHED_KERNEL
+
+#include "grid/BranchFreeErfc.hpp"
+#include "grid/BranchFreeExp.hpp"
+#include "grid/Lanes.hpp"
+#include "grid/PathIntegralClosedForm.hpp"
+
+#include <cmath>
+
+namespace dropletFiber
+{
+
+namespace
+{
+
+// Pads a list of positions to whole lanes by repeating its last entry (evaluating an entry
+// twice writes the same values twice).
+std::size_t padToLanes(std::uint32_t* list, std::size_t count)
+{
+    for (; count % laneCount != 0; ++count)
+    {
+        list[count] = list[count - 1];
+    }
+    return count;
+}
+
+Lanes gatherLanes(const double* values, const std::uint32_t* positions)
+{
+    Lanes a;
+    for (int lane = 0; lane < laneCount; ++lane)
+    {
+        a[lane] = values[positions[lane]];
+    }
+    return a;
+}
+
+void scatterLanes(double* values, const std::uint32_t* positions, Lanes a)
+{
+    for (int lane = 0; lane < laneCount; ++lane)
+    {
+        values[positions[lane]] = a[lane];
+    }
+}
+
+// Evaluates one interval of the scaled erfc for the listed ends.
+template <class Interval>
+void erfcScaledPartsAt(const std::uint32_t* list, std::size_t count, const double* x, double* numerators,
+                       double* denominators, Interval interval)
+{
+    for (std::size_t e = 0; e < count; e += laneCount)
+    {
+        const FractionOf<Lanes> parts = interval(magnitude(gatherLanes(x, list + e)));
+        scatterLanes(numerators, list + e, parts.numerator);
+        scatterLanes(denominators, list + e, parts.denominator);
+    }
+}
+
+} // namespace
+
+void PathWeightBatch::omegas(const PathWeight& path, const double* lambdaM, const double* d0Squared, double* omega,
+                             std::size_t count)
+{
+    const ParcelKernel& kernel = path.kernel();
+    PathIntegralClosedForm closedForm;
+    closedForm.length = path.length();
+    closedForm.reachSquared = kernel.reach() * kernel.reach();
+    closedForm.gamma = kernel.gamma();
+    closedForm.sqrtGamma = std::sqrt(kernel.gamma());
+    closedForm.inverseSqrtGamma = 1.0 / closedForm.sqrtGamma;
+    closedForm.edgeExponent = kernel.edgeExponent();
+    closedForm.edgeValue = kernel.edgeValue();
+    const double inverseLength = 1.0 / path.length();
+    // The negligible-weight cut (PathWeight::limitTo): nodes at or beyond it get 0, as in
+    // omegaFromOffset; applied by moving them out of reach in stage 1 (a select, no branch).
+    const Lanes cutoffSquared = splat<Lanes>(path.cutoffSquared());
+    const Lanes outOfReach = splat<Lanes>(2.0 * closedForm.reachSquared);
+
+    // The stages of PathIntegralClosedForm as separate short loops, so that the processor
+    // overlaps many nodes (the whole formula is a dependency chain of ~700 instructions,
+    // longer than the reorder window), and so that the exponentials and rational functions
+    // are evaluated only where needed:
+    //  1. interval and regime of every node (lanes);
+    //  2. the nodes in the closed-form regime are packed to the front (no branch);
+    //  3. their three Gaussians (lanes);
+    //  4. their two ends sorted by the interval of the scaled erfc, each list evaluated
+    //     with its own rational function (lanes; one rational per end instead of three);
+    //  5. the formula (lanes), written to the node's place;
+    //  6. the ~1 node per parcel in regime A or B with the per-node code.
+    const std::size_t ends = 2 * count;
+    if (values_.size() < 11 * count)
+    {
+        values_.resize(11 * count);
+        indices_.resize(4 * ends + laneCount);
+    }
+    double* x = values_.data();                // x1 of every node, then x2
+    double* exponents = x + ends;              // exponent0, 1, 2; then exp of them in place
+    double* numerators = exponents + 3 * count; // erfc parts of |x1|, then |x2|
+    double* denominators = numerators + ends;
+    double* width = denominators + ends;
+    double* status = width + count;
+    std::uint32_t* node = indices_.data(); // packed position -> node
+    std::uint32_t* lists = node + count + laneCount;
+
+    for (std::size_t n = 0; n < count; n += laneCount) // 1.
+    {
+        const Lanes d0 = loadLanes(d0Squared + n);
+        const PathIntegralClosedForm::Interval<Lanes> interval
+            = closedForm.interval(loadLanes(lambdaM + n), select(d0 < cutoffSquared, d0, outOfReach));
+        storeLanes(x + n, interval.x1);
+        storeLanes(x + count + n, interval.x2);
+        storeLanes(exponents + n, interval.exponent0);
+        storeLanes(exponents + count + n, interval.exponent1);
+        storeLanes(exponents + 2 * count + n, interval.exponent2);
+        storeLanes(width + n, interval.width);
+        storeLanes(status + n, interval.status);
+        storeLanes(omega + n, splat<Lanes>(0.0));
+    }
+    std::size_t packed = 0; // 2. (in place: packed <= n)
+    for (std::size_t n = 0; n < count; ++n)
+    {
+        x[packed] = x[n];
+        x[count + packed] = x[count + n];
+        exponents[packed] = exponents[n];
+        exponents[count + packed] = exponents[count + n];
+        exponents[2 * count + packed] = exponents[2 * count + n];
+        width[packed] = width[n];
+        node[packed] = static_cast<std::uint32_t>(n);
+        packed += status[n] > 0.0 ? 1 : 0;
+    }
+    if (packed > 0)
+    {
+        // Pad to whole lanes by repeating the last packed node (count is a multiple of
+        // laneCount, so the padding stays within the arrays).
+        const std::size_t last = packed - 1;
+        while (packed % laneCount != 0)
+        {
+            x[packed] = x[last];
+            x[count + packed] = x[count + last];
+            for (int i = 0; i < 3; ++i)
+            {
+                exponents[i * count + packed] = exponents[i * count + last];
+            }
+            width[packed] = width[last];
+            node[packed] = node[last];
+            ++packed;
+        }
+        for (int i = 0; i < 3; ++i) // 3.
+        {
+            double* block = exponents + i * count;
+            for (std::size_t p = 0; p < packed; p += laneCount)
+            {
+                storeLanes(block + p, branchFreeExp(loadLanes(block + p)));
+            }
+        }
+        std::size_t listLength[3] = {0, 0, 0}; // 4. (the list is chosen by index, not by a branch)
+        for (const std::size_t first : {std::size_t(0), count})
+        {
+            for (std::size_t end = first; end < first + packed; ++end)
+            {
+                const int interval = erfcScaledInterval(std::abs(x[end]));
+                lists[static_cast<std::size_t>(interval) * ends + listLength[interval]] = static_cast<std::uint32_t>(end);
+                ++listLength[interval];
+            }
+        }
+        for (int interval = 0; interval < 3; ++interval)
+        {
+            std::uint32_t* list = lists + interval * ends;
+            if (listLength[interval] == 0)
+            {
+                continue;
+            }
+            // ends is a multiple of laneCount: padding stays within this list's part.
+            const std::size_t length = padToLanes(list, listLength[interval]);
+            if (interval == 0)
+            {
+                erfcScaledPartsAt(list, length, x, numerators, denominators,
+                                  [](Lanes v) { return erfcScaledPartsSmall(v); });
+            }
+            else if (interval == 1)
+            {
+                erfcScaledPartsAt(list, length, x, numerators, denominators,
+                                  [](Lanes v) { return erfcScaledPartsMiddle(v); });
+            }
+            else
+            {
+                erfcScaledPartsAt(list, length, x, numerators, denominators,
+                                  [](Lanes v) { return erfcScaledPartsLarge(v); });
+            }
+        }
+        for (std::size_t p = 0; p < packed; p += laneCount) // 5.
+        {
+            PathIntegralClosedForm::Interval<Lanes> interval;
+            interval.x1 = loadLanes(x + p);
+            interval.x2 = loadLanes(x + count + p);
+            interval.width = loadLanes(width + p);
+            interval.status = splat<Lanes>(1.0);
+            const FractionOf<Lanes> parts1{loadLanes(numerators + p), loadLanes(denominators + p)};
+            const FractionOf<Lanes> parts2{loadLanes(numerators + count + p), loadLanes(denominators + count + p)};
+            const Lanes integral = closedForm.integral(interval, loadLanes(exponents + p), loadLanes(exponents + count + p),
+                                                       loadLanes(exponents + 2 * count + p), parts1, parts2);
+            scatterLanes(omega, node + p, integral * inverseLength);
+        }
+    }
+    for (std::size_t n = 0; n < count; ++n) // 6. (status < 0 only within the cut)
+    {
+        if (status[n] < 0.0)
+        {
+            omega[n] = path.integralAlongPath(lambdaM[n], d0Squared[n]) * inverseLength;
+        }
+    }
+}
+
+} // namespace dropletFiber
+
+#endif // DROPLETFIBER_BATCHED_KERNEL

@@ -1,0 +1,43 @@
+// PathWeightBatch: PathWeight::omegaFromOffset for all nodes of a parcel's bounding box at
+// once, for the deposit of the AVX2 + FMA build (KernelBuild.hpp). The common regime of
+// eq. 23 (regime C, closed form with scaled erfc) is evaluated four nodes at a time without
+// data-dependent branches (PathIntegralClosedForm.hpp); the ~1 node per parcel in the rare
+// regimes A and B goes to PathWeight::integralAlongPath, the per-node code.
+//
+// Why: in the per-node code the regime choices are mispredicted ~2.7 times per weighted
+// node, a third of the deposit's time (docs/performance.md). With four lanes the
+// branch-free form pays for its extra work (3 exponentials per node instead of ~2, selects
+// and gathers); with SSE2's two lanes it does not, hence the default build does not compile
+// omegas() (the declaration is always here so that DensityGrid's members do not depend on
+// the build).
+//
+// Result: omega of each node as PathWeight::omega gives it, to ~1e-15 relative of the
+// parcel's largest weight (inline exp and erfc within ~1 ulp of libm; PathWeightBatchTest),
+// including the negligible-weight cut of PathWeight::limitTo.
+#pragma once
+
+#include "grid/PathWeight.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace dropletFiber
+{
+
+class PathWeightBatch
+{
+public:
+    // omega[n] for the nodes that project to lambdaM[n] on the moving path's line at squared
+    // distance d0Squared[n] (PathWeight::project). count must be a multiple of laneCount
+    // (Lanes.hpp): pad with d0Squared >= reach^2 (those give 0). Only in the AVX2 + FMA build.
+    void omegas(const PathWeight& path, const double* lambdaM, const double* d0Squared, double* omega,
+                std::size_t count);
+
+private:
+    // Working memory, reused from parcel to parcel.
+    std::vector<double> values_;
+    std::vector<std::uint32_t> indices_;
+};
+
+} // namespace dropletFiber
