@@ -110,30 +110,18 @@ inline Lanes squareRoot(Lanes a)
 }
 
 // The IEEE bit pattern of each lane and back (for exponent arithmetic).
-inline std::uint64_t bitsOf(double a)
+template<class To, class From>
+inline To bitCast(const From& a)
 {
-    std::uint64_t bits;
-    std::memcpy(&bits, &a, sizeof bits);
-    return bits;
+    static_assert(sizeof(To) == sizeof(From), "bitCast: sizes differ");
+    To b;
+    std::memcpy(&b, &a, sizeof b);
+    return b;
 }
-inline LaneBits bitsOf(Lanes a)
-{
-    LaneBits bits;
-    std::memcpy(&bits, &a, sizeof bits);
-    return bits;
-}
-inline double fromBits(std::uint64_t bits)
-{
-    double a;
-    std::memcpy(&a, &bits, sizeof a);
-    return a;
-}
-inline Lanes fromBits(LaneBits bits)
-{
-    Lanes a;
-    std::memcpy(&a, &bits, sizeof a);
-    return a;
-}
+inline std::uint64_t bitsOf(double a) { return bitCast<std::uint64_t>(a); }
+inline LaneBits bitsOf(Lanes a) { return bitCast<LaneBits>(a); }
+inline double fromBits(std::uint64_t bits) { return bitCast<double>(bits); }
+inline Lanes fromBits(LaneBits bits) { return bitCast<Lanes>(bits); }
 
 inline Lanes loadLanes(const double* values)
 {
