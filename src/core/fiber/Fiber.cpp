@@ -117,6 +117,22 @@ Eigen::Vector3d Fiber::heldPointVelocity(Eigen::Index i) const
     return Eigen::Vector3d::Zero();
 }
 
+namespace {
+
+// Lumps a per-segment quantity onto the points: half of segment j to each of its ends.
+template <class SegmentValue>
+void spreadHalvesToPoints(Eigen::Index pointCount, SegmentValue segmentValue, Eigen::VectorXd& out)
+{
+    out.setZero(pointCount);
+    for (Eigen::Index j = 0; j + 1 < pointCount; ++j) {
+        const double half = 0.5 * segmentValue(j);
+        out(j) += half;
+        out(j + 1) += half;
+    }
+}
+
+}  // namespace
+
 double Fiber::segmentMass(Eigen::Index j) const
 {
     return state_.material.baseLineDensity() * state_.restLengths(j) + state_.capturedMass(j);
@@ -131,13 +147,7 @@ Eigen::VectorXd Fiber::pointMasses() const
 
 void Fiber::pointMasses(Eigen::VectorXd& m) const
 {
-    const Eigen::Index n = pointCount();
-    m.setZero(n);
-    for (Eigen::Index j = 0; j + 1 < n; ++j) {
-        const double half = 0.5 * segmentMass(j);
-        m(j) += half;
-        m(j + 1) += half;
-    }
+    spreadHalvesToPoints(pointCount(), [this](Eigen::Index j) { return segmentMass(j); }, m);
 }
 
 Eigen::VectorXd Fiber::nodalLengths() const
@@ -149,12 +159,7 @@ Eigen::VectorXd Fiber::nodalLengths() const
 
 void Fiber::nodalLengths(Eigen::VectorXd& w) const
 {
-    const Eigen::Index n = pointCount();
-    w.setZero(n);
-    for (Eigen::Index j = 0; j + 1 < n; ++j) {
-        w(j) += 0.5 * state_.restLengths(j);
-        w(j + 1) += 0.5 * state_.restLengths(j);
-    }
+    spreadHalvesToPoints(pointCount(), [this](Eigen::Index j) { return state_.restLengths(j); }, w);
 }
 
 Eigen::VectorXd Fiber::lineDensityAtPoints() const
