@@ -218,6 +218,11 @@ const double* NodeWeightBatch::evaluate()
         denominator[a] = f.denominator;
     }
     // Stage 5: the end terms with their signs, and omega as for a one-sided node.
+    // integralAlongPath's three cases of regime C are
+    //   sqrt(pi)/2 [s1 g1 erfcScaled(|x1|) + s2 g2 erfcScaled(|x2|)] (+ sqrt(pi) exp(-gamma d0^2)
+    // when two-sided), s1 = +1 iff x1 >= 0, s2 = +1 iff x2 <= 0: one formula, no branch on
+    // the case. The signs are exact and a + (-b) = a - b, (-a) + b = b - a in IEEE
+    // arithmetic, so the bits are those of the three cases there.
     const double inverseSqrtGamma = p.inverseSqrtGamma_;
     for (std::size_t c = 0; c < closed; ++c)
     {

@@ -11,7 +11,7 @@
 // mostly in loops whose bodies are short.
 //
 // Exactness: the same formulas as PathWeight::integralAlongPath, same order of
-// operations, so the weights are bit-identical to omegaFromOffset (NodeWeightBatchTest
+// operations (regime C's three cases as one signed formula, exact), so the weights are bit-identical to omegaFromOffset (NodeWeightBatchTest
 // checks it node by node). The rare regimes (edge quadrature, Taylor series: ~1 node
 // per parcel) and stationary parcels call PathWeight itself.
 //

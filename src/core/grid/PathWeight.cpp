@@ -115,9 +115,7 @@ double PathWeight::integralAlongPath(double lambdaM, double d0Squared) const
     const double u2 = clipped2 ? halfChord : toEnd;
 
     // Largest q = gamma (h^2 - u^2) on the interval; phi = exp(-a) expm1(q).
-    // (Multiplied by 0 or 1, not a ternary: GCC compiles that to a mispredicted branch.)
-    const bool spansClosest = (u1 <= 0.0) & (u2 >= 0.0);
-    const double uNearest = std::min(std::abs(u1), std::abs(u2)) * static_cast<double>(!spansClosest);
+    const double uNearest = (u1 <= 0.0 && u2 >= 0.0) ? 0.0 : std::min(std::abs(u1), std::abs(u2));
     const double qMax = gamma * (halfChordSquared - uNearest * uNearest);
 
     if (qMax < 0.25)
@@ -161,28 +159,30 @@ double PathWeight::integralAlongPath(double lambdaM, double d0Squared) const
     //   x1 < x2 <= 0:  sqrt(pi)/2 [g2 erfcScaled(-x2) - g1 erfcScaled(-x1)]
     //   x1 < 0 < x2:   sqrt(pi) exp(-gamma d0^2) - sqrt(pi)/2 [g1 erfcScaled(-x1) + g2 erfcScaled(x2)]
     // Outside regime B the two terms differ by a factor >~ 1.5 (no cancellation).
-    // All three are sqrt(pi)/2 [s1 g1 erfcScaled(|x1|) + s2 g2 erfcScaled(|x2|)] (+ the
-    // sqrt(pi) term when two-sided), s1 = +1 iff x1 >= 0, s2 = +1 iff x2 <= 0: one code
-    // path and signs from the comparisons, because which case a node is in changes from
-    // node to node without a pattern (a mispredicted branch per node, docs/performance.md).
-    // The signs are exact, so the bits are those of the three formulas above.
     const double x1 = sqrtGamma_ * u1;
     const double x2 = sqrtGamma_ * u2;
     const double g1 = clipped1 ? edgeValue : std::exp(-gamma * (d0Squared + u1 * u1));
     const double g2 = clipped2 ? edgeValue : std::exp(-gamma * (d0Squared + u2 * u2));
-    const bool startNegative = x1 < 0.0;
-    const bool endPositive = x2 > 0.0;
-    const double s1 = 1.0 - 2.0 * static_cast<double>(startNegative);
-    const double s2 = 1.0 - 2.0 * static_cast<double>(endPositive);
-    const Fraction start = erfcScaledFraction(std::abs(x1));
-    const Fraction end = erfcScaledFraction(std::abs(x2));
-    const double ends = halfSqrtPi
-        * (s1 * g1 * start.numerator * end.denominator + s2 * g2 * end.numerator * start.denominator)
-        / (start.denominator * end.denominator);
-    double gaussian = ends;
-    if (startNegative & endPositive)
+    double gaussian;
+    if (x1 >= 0.0 || x2 <= 0.0)
     {
-        gaussian = 2.0 * halfSqrtPi * std::exp(-gamma * d0Squared) + ends;
+        // Both ends on one side of the closest point: the nearer end minus the farther one.
+        const bool after = x1 >= 0.0;
+        const Fraction nearEnd = erfcScaledFraction(after ? x1 : -x2);
+        const Fraction farEnd = erfcScaledFraction(after ? x2 : -x1);
+        const double gNear = after ? g1 : g2;
+        const double gFar = after ? g2 : g1;
+        gaussian = halfSqrtPi
+            * (gNear * nearEnd.numerator * farEnd.denominator - gFar * farEnd.numerator * nearEnd.denominator)
+            / (nearEnd.denominator * farEnd.denominator);
+    }
+    else
+    {
+        const Fraction start = erfcScaledFraction(-x1);
+        const Fraction end = erfcScaledFraction(x2);
+        gaussian = 2.0 * halfSqrtPi * std::exp(-gamma * d0Squared)
+            - halfSqrtPi * (g1 * start.numerator * end.denominator + g2 * end.numerator * start.denominator)
+                / (start.denominator * end.denominator);
     }
     return gaussian * inverseSqrtGamma_ - edgeValue * width;
 }

@@ -56,12 +56,7 @@ public:
         }
         const double lambdaM = direction_.dot(offset);
         const double d0Squared = (offset - lambdaM * direction_).squaredNorm();
-        // Out of reach of the path segment (not only of its line: the box corners, ~9 of
-        // 40 nodes in 2D): omega = 0 exactly, before any regime logic. beyond = how far the
-        // projection lies past an end; the comparison is the one integralAlongPath makes
-        // (same operands), so the result is the same, only earlier.
-        const double beyond = lambdaM <= 0.0 ? lambdaM : (lambdaM >= length_ ? length_ - lambdaM : 0.0);
-        if (!(d0Squared < cutoffSquared_) || !(beyond * beyond < reachSquared_ - d0Squared))
+        if (!(d0Squared < cutoffSquared_))
         {
             return 0.0;
         }
