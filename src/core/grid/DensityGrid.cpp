@@ -217,45 +217,29 @@ void DensityGrid::deposit(const Parcel& parcel, double dt)
         lo[d] = static_cast<int>(std::min(std::max(first, 0.0), last));
         hi[d] = static_cast<int>(std::min(std::max(lastReached, -1.0), last));
     }
-    // Weights of all nodes in the box, evaluated regime by regime (NodeWeightBatch: the
-    // same values as pathWeight.omegaFromOffset node by node, without its mispredicted
-    // branches), then collected in node order (the sum's order, hence its bits, as before).
+    scratch_.clear();
+    double omegaSum = 0.0;
+    std::int64_t visited = 0;
     const std::size_t nx = static_cast<std::size_t>(spec_.nodes[0]);
     const std::size_t ny = static_cast<std::size_t>(spec_.nodes[1]);
-    const std::size_t rowLength = hi[0] >= lo[0] ? static_cast<std::size_t>(hi[0] - lo[0] + 1) : 0;
-    const std::size_t rows = hi[1] >= lo[1] && hi[2] >= lo[2]
-        ? static_cast<std::size_t>(hi[1] - lo[1] + 1) * static_cast<std::size_t>(hi[2] - lo[2] + 1)
-        : 0;
-    nodeWeights_.start(pathWeight, rowLength * rows);
-    const double* xCoordinates = coordinates_[0].data() + lo[0];
     for (int k = lo[2]; k <= hi[2]; ++k)
     {
         const double oz = coordinates_[2][static_cast<std::size_t>(k)] - clipStart.z();
         for (int j = lo[1]; j <= hi[1]; ++j)
         {
             const double oy = coordinates_[1][static_cast<std::size_t>(j)] - clipStart.y();
-            nodeWeights_.addRow(xCoordinates, rowLength, clipStart.x(), oy, oz);
-        }
-    }
-    const double* omegas = nodeWeights_.evaluate();
-    scratch_.clear();
-    double omegaSum = 0.0;
-    const std::int64_t visited = static_cast<std::int64_t>(rowLength * rows);
-    std::size_t slot = 0;
-    for (int k = lo[2]; k <= hi[2]; ++k)
-    {
-        for (int j = lo[1]; j <= hi[1]; ++j)
-        {
             const std::size_t row = nx * (static_cast<std::size_t>(j) + ny * static_cast<std::size_t>(k));
             for (int i = lo[0]; i <= hi[0]; ++i)
             {
-                const double omega = omegas[slot++];
+                const Eigen::Vector3d offset(coordinates_[0][static_cast<std::size_t>(i)] - clipStart.x(), oy, oz);
+                const double omega = pathWeight.omegaFromOffset(offset);
                 if (omega > 0.0)
                 {
                     scratch_.emplace_back(row + static_cast<std::size_t>(i), omega);
                     omegaSum += omega;
                 }
             }
+            visited += hi[0] >= lo[0] ? hi[0] - lo[0] + 1 : 0;
         }
     }
     stats.nodesVisited += visited;

@@ -68,7 +68,6 @@
 #include "grid/AveragingWindow.hpp"
 #include "grid/GridQuantities.hpp"
 #include "grid/GridSpec.hpp"
-#include "grid/NodeWeightBatch.hpp"
 #include "grid/Parcel.hpp"
 #include "grid/ParcelKernel.hpp"
 #include "grid/StepStatistics.hpp"
@@ -163,7 +162,6 @@ private:
     StepStatistics stepStatistics_;
     StepStatistics lastStepStatistics_;
     std::vector<std::pair<std::size_t, double>> scratch_; // (node, omega) of the current parcel
-    NodeWeightBatch nodeWeights_;                          // omega of the current parcel's box
 };
 
 } // namespace dropletFiber

@@ -77,9 +77,6 @@ public:
     double integralAlongPath(double lambdaM, double d0Squared) const;
 
 private:
-    // Evaluates the same formulas for all nodes of a box, stage by stage.
-    friend class NodeWeightBatch;
-
     ParcelKernel kernel_;
     Eigen::Vector3d start_;
     Eigen::Vector3d halfDisplacement_;
