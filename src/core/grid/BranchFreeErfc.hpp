@@ -11,12 +11,12 @@
 // deposit). The factor exp(x^2) of the first interval is not computed here: the path
 // weight has it times its Gaussian already (gaussianErfcScaled).
 //
-// Method: W. J. Cody, "Rational Chebyshev approximations for the error function",
-// Math. Comp. 23 (1969) 631-637, coefficients of SPECFUN's CALERF: erf on [0, 0.46875],
-// erfc exp(x^2) on [0.46875, 4] and x > 4. Relative accuracy ~1e-16 (BranchFreeKernelTest,
+// Method: W. J. Cody's rational functions (CodyErfcRationals.hpp, shared with
+// ScaledErfc.hpp): erf on [0, 0.46875], erfc exp(x^2) on [0.46875, 4] and x > 4. Relative accuracy ~1e-16 (BranchFreeKernelTest,
 // against long double erfcl and expl).
 #pragma once
 
+#include "grid/CodyErfcRationals.hpp"
 #include "grid/Lanes.hpp"
 
 namespace dropletFiber
@@ -45,12 +45,8 @@ inline FractionOf<V> erfcScaledPartsSmall(V x)
 {
     // [0, 0.46875]: erf(x) = x P(x^2) / Q(x^2); erfc = 1 - erf >= 0.5 (no cancellation).
     const V xs = minimum(x, splat<V>(erfcScaledSmallEnd));
-    const V zs = xs * xs;
-    const V ps = (((0.185777706184603153 * zs + 3.16112374387056560) * zs + 113.864154151050156) * zs
-                  + 377.485237685302021) * zs + 3209.37758913846947;
-    const V qs = (((zs + 23.6012909523441209) * zs + 244.024637934444173) * zs + 1282.61652607737228) * zs
-        + 2844.23683343917062;
-    return {qs - xs * ps, qs};
+    const PolynomialPair<V> r = codyErfSmall(xs * xs);
+    return {r.q - xs * r.p, r.q};
 }
 
 template <class V>
@@ -58,13 +54,8 @@ inline FractionOf<V> erfcScaledPartsMiddle(V x)
 {
     // [0.46875, 4]: erfc(x) exp(x^2) = P(x) / Q(x).
     const V xm = minimum(maximum(x, splat<V>(erfcScaledSmallEnd)), splat<V>(erfcScaledLargeStart));
-    const V pm = (((((((2.15311535474403846e-8 * xm + 0.564188496988670089) * xm + 8.88314979438837594) * xm
-                       + 66.1191906371416295) * xm + 298.635138197400131) * xm + 881.952221241769090) * xm
-                    + 1712.04761263407058) * xm + 2051.07837782607147) * xm + 1230.33935479799725;
-    const V qm = (((((((xm + 15.7449261107098347) * xm + 117.693950891312499) * xm + 537.181101862009858) * xm
-                     + 1621.38957456669019) * xm + 3290.79923573345963) * xm + 4362.61909014324716) * xm
-                  + 3439.36767414372164) * xm + 1230.33935480374942;
-    return {pm, qm};
+    const PolynomialPair<V> r = codyErfcMiddle(xm);
+    return {r.p, r.q};
 }
 
 template <class V>
@@ -74,11 +65,8 @@ inline FractionOf<V> erfcScaledPartsLarge(V x)
     constexpr double inverseSqrtPi = 0.56418958354775628695;
     const V xl = maximum(x, splat<V>(erfcScaledLargeStart));
     const V zl = 1.0 / (xl * xl);
-    const V pl = ((((0.0163153871373020978 * zl + 0.305326634961232344) * zl + 0.360344899949804439) * zl
-                   + 0.125781726111229246) * zl + 0.0160837851487422766) * zl + 6.58749161529837803e-4;
-    const V ql = ((((zl + 2.56852019228982242) * zl + 1.87295284992346047) * zl + 0.527905102951428412) * zl
-                  + 0.0605183413124413191) * zl + 0.00233520497626869185;
-    return {inverseSqrtPi * ql - zl * pl, ql * xl};
+    const PolynomialPair<V> r = codyErfcLarge(zl);
+    return {inverseSqrtPi * r.q - zl * r.p, r.q * xl};
 }
 
 // Which of the three: 0 small, 1 middle, 2 large.
