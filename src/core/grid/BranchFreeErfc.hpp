@@ -1,25 +1,29 @@
 // Branch-free scaled erfc for the batched deposit (PathWeightBatch): erfcScaled(x) =
-// exp(x^2) erfc(x) for x >= 0, for V = double or Lanes. AVX2 + FMA build only
-// (KernelBuild.hpp); the default build uses ScaledErfc.hpp (same coefficients, with
-// branches).
+// exp(x^2) erfc(x) for x >= 0, for V = double or Lanes. Compiled for AVX2 + FMA
+// (namespace avx2, KernelBuild.hpp); the per-node code uses ScaledErfc.hpp (same
+// coefficients, with branches).
 //
-// Why separate from ScaledErfc.hpp: the per-node code of the default build stays exactly
-// as it is; this variant evaluates each of Cody's three rational functions on its argument
-// clamped into its own interval (so that no lane overflows) and selects the one for x, or
+// Why separate from ScaledErfc.hpp: the per-node code stays exactly as it is; this variant
+// evaluates each of Cody's three rational functions on its argument clamped into its own
+// interval (so that no lane overflows) and selects the one for x, or
 // evaluates one interval for a list of ends sorted by interval (the deposit); no
 // data-dependent branch (the range choice was the most mispredicted branch of the
 // deposit). The factor exp(x^2) of the first interval is not computed here: the path
 // weight has it times its Gaussian already (gaussianErfcScaled).
 //
 // Method: W. J. Cody's rational functions (CodyErfcRationals.hpp, shared with
-// ScaledErfc.hpp): erf on [0, 0.46875], erfc exp(x^2) on [0.46875, 4] and x > 4. Relative accuracy ~1e-16 (BranchFreeKernelTest,
-// against long double erfcl and expl).
+// ScaledErfc.hpp): erf on [0, 0.46875], erfc exp(x^2) on [0.46875, 4] and x > 4. Relative
+// accuracy ~1e-16 (BranchFreeKernelTest, against long double erfcl and expl).
 #pragma once
 
+// CodyErfcRationals.hpp before the AVX2 region: its templates keep the default target and
+// are always inlined (KernelBuild.hpp, point 3).
 #include "grid/CodyErfcRationals.hpp"
 #include "grid/Lanes.hpp"
 
-namespace dropletFiber
+DROPLETFIBER_AVX2_BEGIN
+
+namespace dropletFiber::avx2
 {
 
 // A value as numerator / denominator, so that a caller combining two of them needs one
@@ -95,4 +99,6 @@ inline FractionOf<V> gaussianErfcScaled(V x, const FractionOf<V>& parts, V g, V 
     return {select(x <= erfcScaledSmallEnd, gAtZero, g) * parts.numerator, parts.denominator};
 }
 
-} // namespace dropletFiber
+} // namespace dropletFiber::avx2
+
+DROPLETFIBER_AVX2_END

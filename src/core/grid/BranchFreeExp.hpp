@@ -11,7 +11,7 @@
 // correctly rounded subnormals (gradual underflow, like std::exp).
 //
 // Accuracy (BranchFreeKernelTest, against long double expl): within 1 ulp (1.006 seen with
-// GCC's FMA contraction at -march=x86-64-v3) for
+// GCC's FMA contraction; compiled for AVX2 + FMA, KernelBuild.hpp) for
 // -708.39 <= x <= 709 (ln DBL_MIN .. near overflow); subnormal results within one unit of
 // the smallest subnormal; 0 for x <= -746. Domain: x <= 709 (callers use x <= 0.25). The
 // arguments are clamped at -746 so that no lane overflows or produces NaN (Lanes.hpp).
@@ -19,9 +19,11 @@
 
 #include "grid/Lanes.hpp"
 
-#include <cstdint>
+#include <cstdint> // before the AVX2 region (KernelBuild.hpp)
 
-namespace dropletFiber
+DROPLETFIBER_AVX2_BEGIN
+
+namespace dropletFiber::avx2
 {
 
 template <class V>
@@ -63,4 +65,6 @@ inline V branchFreeExp(V x)
     return expR * scale1 * scale2;
 }
 
-} // namespace dropletFiber
+} // namespace dropletFiber::avx2
+
+DROPLETFIBER_AVX2_END

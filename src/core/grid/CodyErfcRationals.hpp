@@ -1,12 +1,23 @@
 // CodyErfcRationals: the three rational functions of Cody's erf/erfc approximation, each as
 // numerator and denominator polynomials, written once for both evaluations of the scaled
-// erfc: ScaledErfc.hpp (scalar, with branches: the default build) and BranchFreeErfc.hpp
-// (V = double or SIMD lanes, no branches: the opt-in AVX2 build). V is any type with
-// +, * and scalar double operands.
+// erfc: ScaledErfc.hpp (scalar, with branches: the per-node code) and BranchFreeErfc.hpp
+// (V = double or SIMD lanes, no branches: the batched code, compiled for AVX2 + FMA). V is
+// any type with +, * and scalar double operands.
+//
+// Default target, always inlined, V by reference (KernelBuild.hpp, point 3): the AVX2 code
+// gets these polynomials inlined and compiled for AVX2, and never calls a default-target
+// copy with a lane vector (whose calling convention differs between the two targets). For
+// the per-node code nothing changes: inlined or not, the same operations in the same order.
 //
 // Method: W. J. Cody, "Rational Chebyshev approximations for the error function",
 // Math. Comp. 23 (1969) 631-637, coefficients of his public-domain SPECFUN routine CALERF.
 #pragma once
+
+#if defined(__GNUC__) || defined(__clang__)
+#define DROPLETFIBER_ALWAYS_INLINE __attribute__((always_inline)) inline
+#else
+#define DROPLETFIBER_ALWAYS_INLINE inline
+#endif
 
 namespace dropletFiber
 {
@@ -20,7 +31,7 @@ struct PolynomialPair
 
 // [0, 0.46875]: erf(x) = x P(z) / Q(z), z = x^2.
 template <class V>
-inline PolynomialPair<V> codyErfSmall(V z)
+DROPLETFIBER_ALWAYS_INLINE PolynomialPair<V> codyErfSmall(const V& z)
 {
     return {(((0.185777706184603153 * z + 3.16112374387056560) * z + 113.864154151050156) * z
              + 377.485237685302021) * z + 3209.37758913846947,
@@ -30,7 +41,7 @@ inline PolynomialPair<V> codyErfSmall(V z)
 
 // [0.46875, 4]: erfc(x) exp(x^2) = P(x) / Q(x).
 template <class V>
-inline PolynomialPair<V> codyErfcMiddle(V x)
+DROPLETFIBER_ALWAYS_INLINE PolynomialPair<V> codyErfcMiddle(const V& x)
 {
     return {(((((((2.15311535474403846e-8 * x + 0.564188496988670089) * x + 8.88314979438837594) * x
                  + 66.1191906371416295) * x + 298.635138197400131) * x + 881.952221241769090) * x
@@ -42,7 +53,7 @@ inline PolynomialPair<V> codyErfcMiddle(V x)
 
 // x > 4: erfc(x) exp(x^2) = (1/sqrt(pi) - z P(z) / Q(z)) / x, z = 1/x^2.
 template <class V>
-inline PolynomialPair<V> codyErfcLarge(V z)
+DROPLETFIBER_ALWAYS_INLINE PolynomialPair<V> codyErfcLarge(const V& z)
 {
     return {((((0.0163153871373020978 * z + 0.305326634961232344) * z + 0.360344899949804439) * z
               + 0.125781726111229246) * z + 0.0160837851487422766) * z + 6.58749161529837803e-4,

@@ -1,12 +1,7 @@
 #include "grid/DensityGrid.hpp"
 
-#include "grid/KernelBuild.hpp"
 #include "grid/MultilinearWeights.hpp"
 #include "grid/PathWeight.hpp"
-
-#if DROPLETFIBER_BATCHED_KERNEL
-#include "grid/Lanes.hpp"
-#endif
 
 #include <algorithm>
 #include <cfloat>
@@ -116,6 +111,7 @@ DensityGrid::DensityGrid(const GridSpec& spec, const KernelSettings& kernel, int
     : spec_(validated(spec)),
       kernelSettings_(kernel),
       kernelDimension_(resolveDimension(spec, kernel.dimension)),
+      batched_(kernel.vectorised && PathWeightBatch::cpuSupported()),
       nodeVolume_(spec.nodeVolume()),
       window_(spec.nodes, nQuantities, windowLength)
 {
@@ -227,16 +223,16 @@ void DensityGrid::deposit(const Parcel& parcel, double dt)
     std::int64_t visited = 0;
     const std::size_t nx = static_cast<std::size_t>(spec_.nodes[0]);
     const std::size_t ny = static_cast<std::size_t>(spec_.nodes[1]);
-#if DROPLETFIBER_BATCHED_KERNEL
-    if (!pathWeight.stationary())
+    if (batched_ && !pathWeight.stationary())
     {
-        // AVX2 + FMA build (KernelBuild.hpp): project every node of the box, then omega of
-        // all of them four at a time without branches (PathWeightBatch); the same sums and
-        // the same list of weighted nodes, in node order, as the per-node loop below.
+        // CPU with AVX2 + FMA (KernelBuild.hpp): project every node of the box, then omega
+        // of all of them four at a time without branches (PathWeightBatch); the same sums
+        // and the same list of weighted nodes, in node order, as the per-node loop below.
         const std::size_t boxNodes = static_cast<std::size_t>(std::max(hi[0] - lo[0] + 1, 0))
             * static_cast<std::size_t>(std::max(hi[1] - lo[1] + 1, 0))
             * static_cast<std::size_t>(std::max(hi[2] - lo[2] + 1, 0));
-        const std::size_t padded = (boxNodes + laneCount - 1) / laneCount * laneCount;
+        constexpr std::size_t lanes = PathWeightBatch::laneCount;
+        const std::size_t padded = (boxNodes + lanes - 1) / lanes * lanes;
         if (boxOmega_.size() < padded)
         {
             boxLambda_.resize(padded);
@@ -286,9 +282,9 @@ void DensityGrid::deposit(const Parcel& parcel, double dt)
         visited = static_cast<std::int64_t>(boxNodes);
     }
     else
-#endif
     {
-        // Per-node loop (the default build; stationary parcels in every build).
+        // Per-node loop (vectorised off, CPUs without AVX2 + FMA, other architectures;
+        // stationary parcels always).
         for (int k = lo[2]; k <= hi[2]; ++k)
         {
             const double oz = coordinates_[2][static_cast<std::size_t>(k)] - clipStart.z();

@@ -104,6 +104,9 @@ public:
     const GridSpec& spec() const { return spec_; }
     const KernelSettings& kernelSettings() const { return kernelSettings_; }
     int kernelDimension() const { return kernelDimension_; } // 2 or 3, the r_min formula in use
+    // True when deposit() evaluates moving parcels with the batched AVX2 + FMA node loop:
+    // KernelSettings::vectorised and a CPU that has it (KernelBuild.hpp).
+    bool batchedKernel() const { return batched_; }
 
     // --- one time step ---------------------------------------------------------------
     void deposit(const Parcel& parcel, double dt);
@@ -151,6 +154,7 @@ private:
     GridSpec spec_;
     KernelSettings kernelSettings_;
     int kernelDimension_;
+    bool batched_; // batchedKernel()
     std::array<std::vector<double>, 3> coordinates_; // node coordinates per direction
     std::array<double, 3> inverseSpacing_{};
     double largestSpacing_ = 0.0; // over the active directions (KernelSettings::cloudInCellBelow)
@@ -162,9 +166,9 @@ private:
     StepStatistics stepStatistics_;
     StepStatistics lastStepStatistics_;
     std::vector<std::pair<std::size_t, double>> scratch_; // (node, omega) of the current parcel
-    // The batched deposit of the AVX2 + FMA build (KernelBuild.hpp; unused, empty, in the
-    // default build): the current parcel's box node by node (i fastest, padded to whole
-    // lanes), projection on the path line, squared distance from it, omega.
+    // The batched deposit (batchedKernel(); unused, empty, otherwise): the current parcel's
+    // box node by node (i fastest, padded to whole lanes), projection on the path line,
+    // squared distance from it, omega.
     std::vector<double> boxLambda_;
     std::vector<double> boxDistanceSquared_;
     std::vector<double> boxOmega_;

@@ -1,7 +1,9 @@
 // Lanes: four doubles that one AVX2 instruction processes together, for the branch-free
 // node loop of the deposit (PathWeightBatch). Written with the GCC/Clang vector extension
-// (__attribute__((vector_size))). Compiled only in the AVX2 + FMA build (KernelBuild.hpp):
-// with two SSE2 lanes the branch-free loop is slower than the per-node code.
+// (__attribute__((vector_size))). Compiled for AVX2 + FMA in every x86-64 build, used only
+// on CPUs that have them (KernelBuild.hpp): with two SSE2 lanes the branch-free loop is
+// slower than the per-node code. Everything here is in namespace dropletFiber::avx2 and
+// inside DROPLETFIBER_AVX2_BEGIN/END (KernelBuild.hpp: why, and what else that needs).
 //
 // Why explicit lanes and not a plain loop for the auto-vectoriser: with the default
 // -ftrapping-math GCC does not if-convert floating-point operations that it has moved
@@ -20,16 +22,19 @@
 #include "grid/KernelBuild.hpp"
 
 #if !DROPLETFIBER_BATCHED_KERNEL
-#error "Lanes.hpp is for the AVX2 + FMA build only (KernelBuild.hpp)"
+#error "Lanes.hpp needs the batched kernel's build (x86-64, GCC or Clang; KernelBuild.hpp)"
 #endif
 
+// Before the AVX2 region: their inline functions keep the default target (KernelBuild.hpp).
 #include <immintrin.h>
 
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 
-namespace dropletFiber
+DROPLETFIBER_AVX2_BEGIN
+
+namespace dropletFiber::avx2
 {
 
 constexpr int laneCount = 4;
@@ -134,4 +139,6 @@ inline void storeLanes(double* values, Lanes a)
     std::memcpy(values, &a, sizeof a);
 }
 
-} // namespace dropletFiber
+} // namespace dropletFiber::avx2
+
+DROPLETFIBER_AVX2_END

@@ -1,6 +1,7 @@
 // PathIntegralClosedForm: int phi dlambda along the path for one node (or four, V = Lanes)
 // in the common case, the closed form of eq. 23 with scaled erfc ("regime C" of
-// PathWeight.cpp), without data-dependent branches; AVX2 + FMA build only (KernelBuild.hpp).
+// PathWeight.cpp), without data-dependent branches; compiled for AVX2 + FMA (namespace avx2,
+// KernelBuild.hpp).
 // Nodes that need one of the two rare regimes (A: the path only grazes the edge of the
 // support; B: a short interval, Taylor series) are flagged in needsExact and left to
 // PathWeight::integralAlongPath (the per-node code); nodes out of reach, and nodes whose
@@ -30,7 +31,9 @@
 #include "grid/Lanes.hpp"
 #include "grid/BranchFreeErfc.hpp"
 
-namespace dropletFiber
+DROPLETFIBER_AVX2_BEGIN
+
+namespace dropletFiber::avx2
 {
 
 struct PathIntegralClosedForm
@@ -136,4 +139,6 @@ struct PathIntegralClosedForm
     }
 };
 
-} // namespace dropletFiber
+} // namespace dropletFiber::avx2
+
+DROPLETFIBER_AVX2_END

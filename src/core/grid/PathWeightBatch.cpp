@@ -1,8 +1,14 @@
-// PathWeightBatch::omegas: the stage loops of the batched deposit (see PathWeightBatch.hpp).
-// Compiled only in the AVX2 + FMA build (KernelBuild.hpp); elsewhere this file is empty.
+// PathWeightBatch: the CPU check and the stage loops of the batched deposit (see
+// PathWeightBatch.hpp). The stage loops are compiled for AVX2 + FMA (namespace avx2 between
+// DROPLETFIBER_AVX2_BEGIN and END, KernelBuild.hpp), the rest of the file for the build's
+// target: it keeps the working memory (std::vector code must stay default-target) and calls
+// the loops only on a CPU that has AVX2 and FMA.
 #include "grid/PathWeightBatch.hpp"
 
 #include "grid/KernelBuild.hpp"
+
+#include <cmath>
+#include <stdexcept>
 
 #if DROPLETFIBER_BATCHED_KERNEL
 
@@ -11,13 +17,15 @@
 #include "grid/Lanes.hpp"
 #include "grid/PathIntegralClosedForm.hpp"
 
-#include <cmath>
+DROPLETFIBER_AVX2_BEGIN
 
-namespace dropletFiber
+namespace dropletFiber::avx2
 {
 
 namespace
 {
+
+static_assert(laneCount == PathWeightBatch::laneCount, "PathWeightBatch::laneCount is the lanes' width");
 
 // Pads a list of positions to whole lanes by repeating its last entry (evaluating an entry
 // twice writes the same values twice).
@@ -48,23 +56,42 @@ void scatterLanes(double* values, const std::uint32_t* positions, Lanes a)
     }
 }
 
+// The scaled erfc's interval 0 (small), 1 (middle) or 2 (large) of BranchFreeErfc.hpp.
+// (A template, not lambdas: GCC does not give lambdas the AVX2 region's target.)
+template <int interval>
+FractionOf<Lanes> erfcScaledPartsIn(Lanes x)
+{
+    if constexpr (interval == 0)
+    {
+        return erfcScaledPartsSmall(x);
+    }
+    else if constexpr (interval == 1)
+    {
+        return erfcScaledPartsMiddle(x);
+    }
+    else
+    {
+        return erfcScaledPartsLarge(x);
+    }
+}
+
 // Evaluates one interval of the scaled erfc for the listed ends.
-template <class Interval>
+template <int interval>
 void erfcScaledPartsAt(const std::uint32_t* list, std::size_t count, const double* x, double* numerators,
-                       double* denominators, Interval interval)
+                       double* denominators)
 {
     for (std::size_t e = 0; e < count; e += laneCount)
     {
-        const FractionOf<Lanes> parts = interval(magnitude(gatherLanes(x, list + e)));
+        const FractionOf<Lanes> parts = erfcScaledPartsIn<interval>(magnitude(gatherLanes(x, list + e)));
         scatterLanes(numerators, list + e, parts.numerator);
         scatterLanes(denominators, list + e, parts.denominator);
     }
 }
 
-} // namespace
-
-void PathWeightBatch::omegas(const PathWeight& path, const double* lambdaM, const double* d0Squared, double* omega,
-                             std::size_t count)
+// PathWeightBatch::omegas with its working memory: values 11 count doubles, indices
+// 8 count + laneCount.
+void omegasInLanes(const PathWeight& path, const double* lambdaM, const double* d0Squared, double* omega,
+                   std::size_t count, double* values, std::uint32_t* indices)
 {
     const ParcelKernel& kernel = path.kernel();
     PathIntegralClosedForm closedForm;
@@ -93,18 +120,13 @@ void PathWeightBatch::omegas(const PathWeight& path, const double* lambdaM, cons
     //  5. the formula (lanes), written to the node's place;
     //  6. the ~1 node per parcel in regime A or B with the per-node code.
     const std::size_t ends = 2 * count;
-    if (values_.size() < 11 * count)
-    {
-        values_.resize(11 * count);
-        indices_.resize(4 * ends + laneCount);
-    }
-    double* x = values_.data();                // x1 of every node, then x2
+    double* x = values;                        // x1 of every node, then x2
     double* exponents = x + ends;              // exponent0, 1, 2; then exp of them in place
     double* numerators = exponents + 3 * count; // erfc parts of |x1|, then |x2|
     double* denominators = numerators + ends;
     double* width = denominators + ends;
     double* status = width + count;
-    std::uint32_t* node = indices_.data(); // packed position -> node
+    std::uint32_t* node = indices; // packed position -> node
     std::uint32_t* lists = node + count + laneCount;
 
     for (std::size_t n = 0; n < count; n += laneCount) // 1.
@@ -179,18 +201,15 @@ void PathWeightBatch::omegas(const PathWeight& path, const double* lambdaM, cons
             const std::size_t length = padToLanes(list, listLength[interval]);
             if (interval == 0)
             {
-                erfcScaledPartsAt(list, length, x, numerators, denominators,
-                                  [](Lanes v) { return erfcScaledPartsSmall(v); });
+                erfcScaledPartsAt<0>(list, length, x, numerators, denominators);
             }
             else if (interval == 1)
             {
-                erfcScaledPartsAt(list, length, x, numerators, denominators,
-                                  [](Lanes v) { return erfcScaledPartsMiddle(v); });
+                erfcScaledPartsAt<1>(list, length, x, numerators, denominators);
             }
             else
             {
-                erfcScaledPartsAt(list, length, x, numerators, denominators,
-                                  [](Lanes v) { return erfcScaledPartsLarge(v); });
+                erfcScaledPartsAt<2>(list, length, x, numerators, denominators);
             }
         }
         for (std::size_t p = 0; p < packed; p += laneCount) // 5.
@@ -216,6 +235,51 @@ void PathWeightBatch::omegas(const PathWeight& path, const double* lambdaM, cons
     }
 }
 
-} // namespace dropletFiber
+} // namespace
+
+} // namespace dropletFiber::avx2
+
+DROPLETFIBER_AVX2_END
 
 #endif // DROPLETFIBER_BATCHED_KERNEL
+
+namespace dropletFiber
+{
+
+bool PathWeightBatch::cpuSupported()
+{
+#if DROPLETFIBER_BATCHED_KERNEL
+    // libgcc's (or compiler-rt's) CPUID query, which also checks that the operating system
+    // saves the AVX registers (XGETBV). __builtin_cpu_init first: this may run before the
+    // library's constructors (static initialisers of other code).
+    static const bool supported = [] {
+        __builtin_cpu_init();
+        return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+    }();
+    return supported;
+#else
+    return false;
+#endif
+}
+
+void PathWeightBatch::omegas(const PathWeight& path, const double* lambdaM, const double* d0Squared, double* omega,
+                             std::size_t count)
+{
+    if (!cpuSupported())
+    {
+        throw std::logic_error("PathWeightBatch::omegas: this build or CPU has no AVX2 + FMA kernel "
+                               "(use the per-node code; PathWeightBatch::cpuSupported)");
+    }
+#if DROPLETFIBER_BATCHED_KERNEL
+    if (values_.size() < 11 * count)
+    {
+        values_.resize(11 * count);
+        indices_.resize(8 * count + laneCount);
+    }
+    avx2::omegasInLanes(path, lambdaM, d0Squared, omega, count, values_.data(), indices_.data());
+#else
+    (void)path, (void)lambdaM, (void)d0Squared, (void)omega, (void)count;
+#endif
+}
+
+} // namespace dropletFiber

@@ -1,15 +1,14 @@
 // PathWeightBatch: PathWeight::omegaFromOffset for all nodes of a parcel's bounding box at
-// once, for the deposit of the AVX2 + FMA build (KernelBuild.hpp). The common regime of
-// eq. 23 (regime C, closed form with scaled erfc) is evaluated four nodes at a time without
-// data-dependent branches (PathIntegralClosedForm.hpp); the ~1 node per parcel in the rare
-// regimes A and B goes to PathWeight::integralAlongPath, the per-node code.
+// once, the deposit's batched node loop for CPUs with AVX2 + FMA (KernelBuild.hpp). The
+// common regime of eq. 23 (regime C, closed form with scaled erfc) is evaluated four nodes
+// at a time without data-dependent branches (PathIntegralClosedForm.hpp); the ~1 node per
+// parcel in the rare regimes A and B goes to PathWeight::integralAlongPath, the per-node
+// code.
 //
 // Why: in the per-node code the regime choices are mispredicted ~2.7 times per weighted
 // node, a third of the deposit's time (docs/performance.md). With four lanes the
 // branch-free form pays for its extra work (3 exponentials per node instead of ~2, selects
-// and gathers); with SSE2's two lanes it does not, hence the default build does not compile
-// omegas() (the declaration is always here so that DensityGrid's members do not depend on
-// the build).
+// and gathers); with SSE2's two lanes it does not, hence it runs only where AVX2 is there.
 //
 // Result: omega of each node as PathWeight::omega gives it, to ~1e-15 relative of the
 // parcel's largest weight (inline exp and erfc within ~1 ulp of libm; PathWeightBatchTest),
@@ -28,9 +27,17 @@ namespace dropletFiber
 class PathWeightBatch
 {
 public:
+    // Nodes per lane vector: counts passed to omegas() are multiples of this.
+    static constexpr std::size_t laneCount = 4;
+
+    // True when this build has the batched code and this CPU has AVX2 and FMA (and the
+    // operating system saves their registers); asked once, the answer is kept.
+    static bool cpuSupported();
+
     // omega[n] for the nodes that project to lambdaM[n] on the moving path's line at squared
-    // distance d0Squared[n] (PathWeight::project). count must be a multiple of laneCount
-    // (Lanes.hpp): pad with d0Squared >= reach^2 (those give 0). Only in the AVX2 + FMA build.
+    // distance d0Squared[n] (PathWeight::project). count must be a multiple of laneCount:
+    // pad with d0Squared >= reach^2 (those give 0). Only where cpuSupported() (throws
+    // std::logic_error otherwise: the caller chooses the per-node code there).
     void omegas(const PathWeight& path, const double* lambdaM, const double* d0Squared, double* omega,
                 std::size_t count);
 

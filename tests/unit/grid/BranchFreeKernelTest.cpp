@@ -1,17 +1,13 @@
-// The inline exp and scaled erfc of the batched deposit (AVX2 + FMA build, KernelBuild.hpp)
-// against long double expl and erfcl (an independent implementation with 11 more bits),
-// and their four-lane form against their scalar form (the same formulas; GCC may contract
-// a * b + c into FMA differently in the two, so they agree to an ulp or two, not to the bit).
-// In the default build these functions are not compiled: the tests report a skip.
+// The inline exp and scaled erfc of the batched deposit (compiled for AVX2 + FMA in every
+// x86-64 build, KernelBuild.hpp) against long double expl and erfcl (an independent
+// implementation with 11 more bits), and their four-lane form against their scalar form (the
+// same formulas; GCC may contract a * b + c into FMA differently in the two, so they agree to
+// an ulp or two, not to the bit). On a CPU without AVX2 + FMA (or a build without the batched
+// code) the tests report a skip.
 #include "grid/KernelBuild.hpp"
+#include "grid/PathWeightBatch.hpp"
 
 #include <gtest/gtest.h>
-
-#if DROPLETFIBER_BATCHED_KERNEL
-#include "grid/BranchFreeErfc.hpp"
-#include "grid/BranchFreeExp.hpp"
-#include "grid/Lanes.hpp"
-#endif
 
 #include <cfloat>
 #include <cmath>
@@ -19,16 +15,59 @@
 #include <limits>
 #include <random>
 
+#if DROPLETFIBER_BATCHED_KERNEL
+#include "grid/BranchFreeErfc.hpp"
+#include "grid/BranchFreeExp.hpp"
+#include "grid/Lanes.hpp"
+
+// The four-lane forms for the tests, from and to arrays: code of the default target (the
+// tests) must not pass lane vectors by value to AVX2 code (KernelBuild.hpp, points 3 and 5).
+DROPLETFIBER_AVX2_BEGIN
+namespace dropletFiber::avx2
+{
+namespace
+{
+void branchFreeExpFourLanes(const double* x, double* result)
+{
+    storeLanes(result, branchFreeExp(loadLanes(x)));
+}
+
+void erfcScaledPartsFourLanes(const double* x, double* numerator, double* denominator)
+{
+    const FractionOf<Lanes> parts = erfcScaledParts(loadLanes(x));
+    storeLanes(numerator, parts.numerator);
+    storeLanes(denominator, parts.denominator);
+}
+
+// As the deposit: each of four arguments with the one interval that erfcScaledInterval
+// chooses for it (PathWeightBatch), and all three selected (erfcScaledParts).
+void erfcScaledPartsOneIntervalFourLanes(const double* x, double* numerator, double* denominator)
+{
+    const Lanes v = loadLanes(x);
+    const FractionOf<Lanes> parts[3] = {erfcScaledPartsSmall(v), erfcScaledPartsMiddle(v), erfcScaledPartsLarge(v)};
+    for (int lane = 0; lane < laneCount; ++lane)
+    {
+        const int interval = erfcScaledInterval(x[lane]);
+        numerator[lane] = parts[interval].numerator[lane];
+        denominator[lane] = parts[interval].denominator[lane];
+    }
+}
+} // namespace
+} // namespace dropletFiber::avx2
+DROPLETFIBER_AVX2_END
+#endif
+
 using namespace dropletFiber;
 
 #define SKIP_UNLESS_BATCHED()                                                                              \
-    if (!batchedDepositKernel)                                                                           \
+    if (!PathWeightBatch::cpuSupported())                                                                \
     {                                                                                                    \
-        GTEST_SKIP() << "batched kernel not compiled: build with -march=x86-64-v3 (AVX2 + FMA), "         \
-                        "CMake -DDROPLETFIBER_MARCH=x86-64-v3";                                           \
+        GTEST_SKIP() << "this CPU has no AVX2 + FMA (or this build no batched kernel): nothing to test";   \
     }
 
 #if DROPLETFIBER_BATCHED_KERNEL
+using namespace dropletFiber::avx2;
+
 namespace
 {
 
@@ -51,7 +90,7 @@ TEST(BranchFreeKernel, ExpWithinOneUlpOfExpl)
     std::uniform_real_distribution<double> wide(-708.39, 709.0);
     std::uniform_real_distribution<double> narrow(-60.0, 0.25); // what the deposit passes
     // 1 ulp for the method (the Taylor truncation is < 5e-18 relative), plus a little for
-    // GCC's contraction of a * b + c into FMA at -march=x86-64-v3 (-ffp-contract=fast),
+    // GCC's contraction of a * b + c into FMA for the AVX2 + FMA target (-ffp-contract=fast),
     // which rounds the polynomial differently: worst seen 1.006 ulp.
     constexpr double maxExpUlps = 1.02;
     double worst = 0.0;
@@ -104,13 +143,18 @@ TEST(BranchFreeKernel, ErfcScaledMatchesLongDoubleReference)
         const double error = static_cast<double>(std::abs((got - reference) / reference));
         worst = std::max(worst, error);
         ASSERT_LT(error, 2e-15) << "x = " << x;
-        // The deposit evaluates one interval per end, chosen by erfcScaledInterval: the same bits.
-        const int interval = erfcScaledInterval(x);
-        const FractionOf<double> single = interval == 0 ? erfcScaledPartsSmall(x)
-            : interval == 1                             ? erfcScaledPartsMiddle(x)
-                                                        : erfcScaledPartsLarge(x);
-        ASSERT_EQ(single.numerator, parts.numerator) << x;
-        ASSERT_EQ(single.denominator, parts.denominator) << x;
+        // The deposit evaluates one interval per end, chosen by erfcScaledInterval, in lanes:
+        // the same bits as all three selected, in lanes.
+        const double arguments[laneCount] = {x, x + 0.5e-4, 2.0 * x, 0.5 * x};
+        double numerators[laneCount], denominators[laneCount], singleNumerators[laneCount],
+            singleDenominators[laneCount];
+        erfcScaledPartsFourLanes(arguments, numerators, denominators);
+        erfcScaledPartsOneIntervalFourLanes(arguments, singleNumerators, singleDenominators);
+        for (int lane = 0; lane < laneCount; ++lane)
+        {
+            ASSERT_EQ(singleNumerators[lane], numerators[lane]) << arguments[lane];
+            ASSERT_EQ(singleDenominators[lane], denominators[lane]) << arguments[lane];
+        }
         // g erfcScaled(x) with g = exp(-x^2) and gAtZero = 1: erfc(x) itself.
         const FractionOf<double> product = gaussianErfcScaled(x, parts, static_cast<double>(std::exp(-xl * xl)), 1.0);
         const long double erfcReference = std::erfc(xl);
@@ -145,20 +189,19 @@ TEST(BranchFreeKernel, FourLanesAgreeWithScalar)
     const auto relative = [](double a, double b) { return std::abs(a - b) / std::abs(b); };
     for (int i = 0; i < 100000; ++i)
     {
-        Lanes e, x;
+        double e[laneCount], x[laneCount], expLanes[laneCount], numerators[laneCount], denominators[laneCount];
         for (int lane = 0; lane < laneCount; ++lane)
         {
             e[lane] = exponent(random);
             x[lane] = argument(random);
         }
-        const Lanes expLanes = branchFreeExp(e);
-        const FractionOf<Lanes> parts = erfcScaledParts(x);
+        branchFreeExpFourLanes(e, expLanes);
+        erfcScaledPartsFourLanes(x, numerators, denominators);
         for (int lane = 0; lane < laneCount; ++lane)
         {
             ASSERT_LE(relative(expLanes[lane], branchFreeExp(e[lane])), 5e-16) << e[lane];
             const FractionOf<double> scalar = erfcScaledParts(x[lane]);
-            ASSERT_LE(relative(parts.numerator[lane] / parts.denominator[lane], scalar.numerator / scalar.denominator),
-                      5e-16)
+            ASSERT_LE(relative(numerators[lane] / denominators[lane], scalar.numerator / scalar.denominator), 5e-16)
                 << x[lane];
         }
     }
