@@ -5,13 +5,15 @@
 // scaled-erfc rational function) and the memory bandwidth of this machine, so that the
 // deposition's distance from a simple roofline can be stated (docs/performance.md).
 //
-// Usage: depositionBench [--quick] [--budget SECONDS] [--repeats N]
+// Usage: depositionBench [--quick] [--budget SECONDS] [--repeats N] [--vectorised 0|1]
 //   --quick     parcels 1e3..1e5 only (a smoke run of a few seconds)
 //   --budget    skip a configuration whose estimated time (all repeats) exceeds this
 //               (default 40 s); skipped rows are printed as such
 //   --repeats   timing repeats per configuration (default 3; best is reported)
 //   --only DIM REACH PARCELS   one deposition configuration only, no elementary costs
 //               (for profilers: perf record / valgrind --tool=callgrind)
+//   --vectorised  KernelSettings::vectorised (default 1: the batched AVX2 + FMA node loop
+//               where the CPU has it; 0: node by node); the output says which ran
 //
 // Workload (deterministic, seed fixed): grid box 5 x 7 cm (2D: 101 x 141 nodes, h = 0.5 mm,
 // 1 cm thick; 3D: 101 x 141 x 101 nodes, 5 cm deep). Parcels of droplets r_p = 10 um,
@@ -311,6 +313,7 @@ int main(int argc, char** argv)
     int repeats = 3;
     int onlyDimension = 0;
     double onlyReach = 0.0, onlyCount = 0.0;
+    KernelSettings kernelSettings; // the paper's method: cloudInCellBelow = 0
     for (int a = 1; a < argc; ++a)
     {
         if (!std::strcmp(argv[a], "--only") && a + 3 < argc)
@@ -332,17 +335,28 @@ int main(int argc, char** argv)
         {
             repeats = std::max(1, std::atoi(argv[++a]));
         }
+        else if (!std::strcmp(argv[a], "--vectorised") && a + 1 < argc)
+        {
+            kernelSettings.vectorised = std::atoi(argv[++a]) != 0;
+        }
         else
         {
-            std::fprintf(stderr, "usage: %s [--quick] [--budget SECONDS] [--repeats N]\n", argv[0]);
+            std::fprintf(stderr,
+                         "usage: %s [--quick] [--budget SECONDS] [--repeats N] [--vectorised 0|1] "
+                         "[--only DIM REACH PARCELS]\n",
+                         argv[0]);
             return 2;
         }
     }
+    const bool batched = DensityGrid(makeSpec(2), kernelSettings, 1).batchedKernel();
+    std::printf("node weights: %s (vectorised %d, CPU has AVX2 + FMA: %s)\n",
+                batched ? "batched AVX2 + FMA" : "per node", kernelSettings.vectorised ? 1 : 0,
+                PathWeightBatch::cpuSupported() ? "yes" : "no");
 
     if (onlyDimension != 0)
     {
         const GridSpec spec = makeSpec(onlyDimension);
-        DensityGrid grid(spec, KernelSettings{}, 1);
+        DensityGrid grid(spec, kernelSettings, 1);
         const std::size_t count = static_cast<std::size_t>(onlyCount);
         const std::vector<Parcel> pool
             = makeParcels(spec, onlyDimension, onlyReach, std::min<std::size_t>(count, 1000000), 99);
@@ -391,7 +405,7 @@ int main(int argc, char** argv)
         const GridSpec spec = makeSpec(dimension);
         for (double reach : reaches)
         {
-            DensityGrid grid(spec, KernelSettings{}, 1);
+            DensityGrid grid(spec, kernelSettings, 1);
             const std::size_t poolSize = static_cast<std::size_t>(std::min(counts.back(), 1e6));
             std::vector<Parcel> pool = makeParcels(spec, dimension, reach, poolSize, 1234 + dimension * 10 + static_cast<int>(reach));
             double nsPerParcel = 0.0;   // from the last row run, for the estimate
@@ -450,7 +464,7 @@ int main(int argc, char** argv)
     for (int dimension : {2, 3})
     {
         const GridSpec spec = makeSpec(dimension);
-        KernelSettings settings;
+        KernelSettings settings = kernelSettings;
         settings.cloudInCellBelow = 0.5;
         for (double reach : reaches)
         {

@@ -231,39 +231,13 @@ void DensityGrid::deposit(const Parcel& parcel, double dt)
         const std::size_t boxNodes = static_cast<std::size_t>(std::max(hi[0] - lo[0] + 1, 0))
             * static_cast<std::size_t>(std::max(hi[1] - lo[1] + 1, 0))
             * static_cast<std::size_t>(std::max(hi[2] - lo[2] + 1, 0));
-        constexpr std::size_t lanes = PathWeightBatch::laneCount;
-        const std::size_t padded = (boxNodes + lanes - 1) / lanes * lanes;
-        if (boxOmega_.size() < padded)
-        {
-            boxLambda_.resize(padded);
-            boxDistanceSquared_.resize(padded);
-            boxOmega_.resize(padded);
-        }
-        std::size_t n = 0;
-        for (int k = lo[2]; k <= hi[2]; ++k)
-        {
-            const double oz = coordinates_[2][static_cast<std::size_t>(k)] - clipStart.z();
-            for (int j = lo[1]; j <= hi[1]; ++j)
-            {
-                const double oy = coordinates_[1][static_cast<std::size_t>(j)] - clipStart.y();
-                for (int i = lo[0]; i <= hi[0]; ++i, ++n)
-                {
-                    const Eigen::Vector3d offset(coordinates_[0][static_cast<std::size_t>(i)] - clipStart.x(), oy, oz);
-                    pathWeight.project(offset, boxLambda_[n], boxDistanceSquared_[n]);
-                }
-            }
-        }
-        for (; n < padded; ++n) // out of reach: omega 0
-        {
-            boxLambda_[n] = 0.0;
-            boxDistanceSquared_[n] = 2.0 * kernel.reach() * kernel.reach();
-        }
-        batch_.omegas(pathWeight, boxLambda_.data(), boxDistanceSquared_.data(), boxOmega_.data(), padded);
+        const double* boxOmega = batch_.boxOmegas(pathWeight, clipStart, coordinates_[0].data(),
+                                                  coordinates_[1].data(), coordinates_[2].data(), lo, hi);
         // List the nodes with omega > 0 without a branch: each node is written at the end of
         // the list and kept by advancing the count (omega <= 0 adds 0 to the sum).
         scratch_.resize(boxNodes);
         std::size_t weighted = 0;
-        n = 0;
+        std::size_t n = 0;
         for (int k = lo[2]; k <= hi[2]; ++k)
         {
             for (int j = lo[1]; j <= hi[1]; ++j)
@@ -271,7 +245,7 @@ void DensityGrid::deposit(const Parcel& parcel, double dt)
                 const std::size_t row = nx * (static_cast<std::size_t>(j) + ny * static_cast<std::size_t>(k));
                 for (int i = lo[0]; i <= hi[0]; ++i, ++n)
                 {
-                    const double omega = std::max(boxOmega_[n], 0.0);
+                    const double omega = std::max(boxOmega[n], 0.0);
                     scratch_[weighted] = {row + static_cast<std::size_t>(i), omega};
                     weighted += omega > 0.0 ? 1 : 0;
                     omegaSum += omega;

@@ -166,13 +166,7 @@ private:
     StepStatistics stepStatistics_;
     StepStatistics lastStepStatistics_;
     std::vector<std::pair<std::size_t, double>> scratch_; // (node, omega) of the current parcel
-    // The batched deposit (batchedKernel(); unused, empty, otherwise): the current parcel's
-    // box node by node (i fastest, padded to whole lanes), projection on the path line,
-    // squared distance from it, omega.
-    std::vector<double> boxLambda_;
-    std::vector<double> boxDistanceSquared_;
-    std::vector<double> boxOmega_;
-    PathWeightBatch batch_;
+    PathWeightBatch batch_; // the batched deposit (batchedKernel(); unused, empty, otherwise)
 };
 
 } // namespace dropletFiber

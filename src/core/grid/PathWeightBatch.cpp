@@ -235,6 +235,34 @@ void omegasInLanes(const PathWeight& path, const double* lambdaM, const double* 
     }
 }
 
+// PathWeightBatch::boxOmegas's projection: lambdaM and d0Squared of every node of the box
+// (i fastest), then the padding to whole lanes (out of reach: omega 0). Here so that the
+// projection is compiled for AVX2 + FMA too (PathWeight::project, inlined).
+void projectBox(const PathWeight& path, const Eigen::Vector3d& start, const double* x, const double* y,
+                const double* z, const std::array<int, 3>& lo, const std::array<int, 3>& hi, double* lambdaM,
+                double* d0Squared, std::size_t padded)
+{
+    std::size_t n = 0;
+    for (int k = lo[2]; k <= hi[2]; ++k)
+    {
+        const double oz = z[k] - start.z();
+        for (int j = lo[1]; j <= hi[1]; ++j)
+        {
+            const double oy = y[j] - start.y();
+            for (int i = lo[0]; i <= hi[0]; ++i, ++n)
+            {
+                path.project(Eigen::Vector3d(x[i] - start.x(), oy, oz), lambdaM[n], d0Squared[n]);
+            }
+        }
+    }
+    const double reach = path.kernel().reach();
+    for (; n < padded; ++n)
+    {
+        lambdaM[n] = 0.0;
+        d0Squared[n] = 2.0 * reach * reach;
+    }
+}
+
 } // namespace
 
 } // namespace dropletFiber::avx2
@@ -280,6 +308,36 @@ void PathWeightBatch::omegas(const PathWeight& path, const double* lambdaM, cons
 #else
     (void)path, (void)lambdaM, (void)d0Squared, (void)omega, (void)count;
 #endif
+}
+
+const double* PathWeightBatch::boxOmegas(const PathWeight& path, const Eigen::Vector3d& start, const double* x,
+                                         const double* y, const double* z, const std::array<int, 3>& lo,
+                                         const std::array<int, 3>& hi)
+{
+    std::size_t boxNodes = 1;
+    for (int d = 0; d < 3; ++d)
+    {
+        boxNodes *= static_cast<std::size_t>(hi[d] >= lo[d] ? hi[d] - lo[d] + 1 : 0);
+    }
+    const std::size_t padded = (boxNodes + laneCount - 1) / laneCount * laneCount;
+    if (boxOmega_.size() < padded)
+    {
+        boxLambda_.resize(padded);
+        boxDistanceSquared_.resize(padded);
+        boxOmega_.resize(padded);
+    }
+    if (!cpuSupported())
+    {
+        throw std::logic_error("PathWeightBatch::boxOmegas: this build or CPU has no AVX2 + FMA kernel "
+                               "(use the per-node code; PathWeightBatch::cpuSupported)");
+    }
+#if DROPLETFIBER_BATCHED_KERNEL
+    avx2::projectBox(path, start, x, y, z, lo, hi, boxLambda_.data(), boxDistanceSquared_.data(), padded);
+#else
+    (void)start, (void)x, (void)y, (void)z;
+#endif
+    omegas(path, boxLambda_.data(), boxDistanceSquared_.data(), boxOmega_.data(), padded);
+    return boxOmega_.data();
 }
 
 } // namespace dropletFiber

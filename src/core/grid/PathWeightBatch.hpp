@@ -17,6 +17,7 @@
 
 #include "grid/PathWeight.hpp"
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -41,10 +42,22 @@ public:
     void omegas(const PathWeight& path, const double* lambdaM, const double* d0Squared, double* omega,
                 std::size_t count);
 
+    // The deposit's use: omega of every node of the index box [lo, hi] (i fastest) of a grid
+    // with node coordinates x[i], y[j], z[k], for the moving path `path` that starts at
+    // `start`: the projection (PathWeight::project) and omegas(), both compiled for AVX2 +
+    // FMA. Returns the box's node count values, valid until the next call. Only where
+    // cpuSupported().
+    const double* boxOmegas(const PathWeight& path, const Eigen::Vector3d& start, const double* x, const double* y,
+                            const double* z, const std::array<int, 3>& lo, const std::array<int, 3>& hi);
+
 private:
-    // Working memory, reused from parcel to parcel.
+    // Working memory, reused from parcel to parcel: the stages of omegas(), and for
+    // boxOmegas() each node's projection on the path line, squared distance from it, omega.
     std::vector<double> values_;
     std::vector<std::uint32_t> indices_;
+    std::vector<double> boxLambda_;
+    std::vector<double> boxDistanceSquared_;
+    std::vector<double> boxOmega_;
 };
 
 } // namespace dropletFiber
