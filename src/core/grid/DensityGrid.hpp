@@ -21,7 +21,10 @@
 //     the path are rejected before any exp/erf. Nodes whose weight would be below
 //     KernelSettings::negligibleWeight (1e-17) times the parcel's largest are left out too
 //     (the capsule shrinks to that distance; kernels of large alpha). Cost per parcel ~ nodes in that box,
-//     independent of the grid size (StepStatistics::nodesVisited counts them).
+//     independent of the grid size (StepStatistics::nodesVisited counts them). Moving
+//     parcels' weights come from the batched AVX2 + FMA loop (PathWeightBatch) where the
+//     CPU has it and KernelSettings::vectorised is set (batchedKernel()), else node by node:
+//     the same nodes, boxes and statistics, weights equal to ~1 ulp of exp/erfc.
 //  5. Weights w_g = omega_g / sum omega (eq. 24): the mass given to the grid is f times the
 //     parcel's mass to round-off, also near edges (nodes outside the grid do not exist,
 //     so the normalisation runs over the existing ones).

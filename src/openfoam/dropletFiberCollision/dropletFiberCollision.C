@@ -132,6 +132,9 @@ void Foam::functionObjects::dropletFiberCollision::readGrid
             [](scalar e) { return e >= 0 && e <= 1e-6; },
             "in [0, 1e-6] (0: every node within reach is evaluated)"
         );
+    // Node weights with the batched AVX2 + FMA loop where the CPU has it; false:
+    // node by node, the same results to the bit on every CPU (src/core/grid/KernelBuild.hpp)
+    kernel_.vectorised = getSwitch(gridDict, "vectorised", true);
     const word dim =
         getChoice(gridDict, "dimension", "automatic", {"automatic", "2", "3"});
     kernel_.dimension =
@@ -188,6 +191,14 @@ void Foam::functionObjects::dropletFiberCollision::reportSettings() const
         << ", rMaxCap " << kernel_.rMaxCap
         << ", cloudInCellBelow " << kernel_.cloudInCellBelow
         << ", negligibleWeight " << kernel_.negligibleWeight
+        << ", vectorised " << Switch(kernel_.vectorised).c_str()
+        << (
+               grid_->batchedKernel()
+             ? " (node weights: batched AVX2 + FMA)"
+             : kernel_.vectorised
+             ? " (node weights: per node, this CPU has no AVX2 + FMA)"
+             : " (node weights: per node)"
+           )
         << ", radiusAverage "
         << (collision_.radiusAverage == ::dropletFiber::RadiusAverage::Number
             ? "number" : "mass") << nl
