@@ -223,14 +223,14 @@ void DensityGrid::deposit(const Parcel& parcel, double dt)
     std::int64_t visited = 0;
     const std::size_t nx = static_cast<std::size_t>(spec_.nodes[0]);
     const std::size_t ny = static_cast<std::size_t>(spec_.nodes[1]);
-    if (batched_ && !pathWeight.stationary())
+    const std::size_t boxNodes = static_cast<std::size_t>(std::max(hi[0] - lo[0] + 1, 0))
+        * static_cast<std::size_t>(std::max(hi[1] - lo[1] + 1, 0))
+        * static_cast<std::size_t>(std::max(hi[2] - lo[2] + 1, 0));
+    if (batched_ && !pathWeight.stationary() && boxNodes >= PathWeightBatch::minimumBoxNodes)
     {
         // CPU with AVX2 + FMA (KernelBuild.hpp): project every node of the box, then omega
         // of all of them four at a time without branches (PathWeightBatch); the same sums
         // and the same list of weighted nodes, in node order, as the per-node loop below.
-        const std::size_t boxNodes = static_cast<std::size_t>(std::max(hi[0] - lo[0] + 1, 0))
-            * static_cast<std::size_t>(std::max(hi[1] - lo[1] + 1, 0))
-            * static_cast<std::size_t>(std::max(hi[2] - lo[2] + 1, 0));
         const double* boxOmega = batch_.boxOmegas(pathWeight, clipStart, coordinates_[0].data(),
                                                   coordinates_[1].data(), coordinates_[2].data(), lo, hi);
         // List the nodes with omega > 0 without a branch: each node is written at the end of
@@ -258,7 +258,7 @@ void DensityGrid::deposit(const Parcel& parcel, double dt)
     else
     {
         // Per-node loop (vectorised off, CPUs without AVX2 + FMA, other architectures;
-        // stationary parcels always).
+        // stationary parcels and small boxes always).
         for (int k = lo[2]; k <= hi[2]; ++k)
         {
             const double oz = coordinates_[2][static_cast<std::size_t>(k)] - clipStart.z();

@@ -23,7 +23,8 @@
 //     (the capsule shrinks to that distance; kernels of large alpha). Cost per parcel ~ nodes in that box,
 //     independent of the grid size (StepStatistics::nodesVisited counts them). Moving
 //     parcels' weights come from the batched AVX2 + FMA loop (PathWeightBatch) where the
-//     CPU has it and KernelSettings::vectorised is set (batchedKernel()), else node by node:
+//     CPU has it and KernelSettings::vectorised is set (batchedKernel(); boxes of at least
+//     PathWeightBatch::minimumBoxNodes nodes), else node by node:
 //     the same nodes, boxes and statistics, weights equal to ~1 ulp of exp/erfc.
 //  5. Weights w_g = omega_g / sum omega (eq. 24): the mass given to the grid is f times the
 //     parcel's mass to round-off, also near edges (nodes outside the grid do not exist,

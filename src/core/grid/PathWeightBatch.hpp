@@ -30,6 +30,11 @@ class PathWeightBatch
 public:
     // Nodes per lane vector: counts passed to omegas() are multiples of this.
     static constexpr std::size_t laneCount = 4;
+    // Boxes of fewer nodes go node by node: there the batched loop's fixed cost (stage
+    // lists, padding to whole lanes) outweighs its gain (depositionBench, 2D: 336 vs 300 ns
+    // per parcel at 5.4 nodes per box, 393 vs 490 ns at 11; threshold 8 was the best of
+    // 6, 8, 10, 12, 16 at 5, 11 and 19 nodes per box).
+    static constexpr std::size_t minimumBoxNodes = 8;
 
     // True when this build has the batched code and this CPU has AVX2 and FMA (and the
     // operating system saves their registers); asked once, the answer is kept.
