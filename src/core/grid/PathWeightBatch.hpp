@@ -10,9 +10,12 @@
 // branch-free form pays for its extra work (3 exponentials per node instead of ~2, selects
 // and gathers); with SSE2's two lanes it does not, hence it runs only where AVX2 is there.
 //
-// Result: omega of each node as PathWeight::omega gives it, to ~1e-15 relative of the
+// Result: omega of each node as PathWeight::omega gives it, to ~3e-15 relative of the
 // parcel's largest weight (inline exp and erfc within ~1 ulp of libm; PathWeightBatchTest),
-// including the negligible-weight cut of PathWeight::limitTo.
+// including the negligible-weight cut of PathWeight::limitTo. Where that largest weight is
+// itself tiny (Gaussian exponents E of a few hundred: kernels far narrower than a cell) up
+// to ~E 1.1e-16: exp(-E) conditions the one-ulp difference between the exponent rounded
+// with FMA (here) and without (the per-node code of a portable build).
 #pragma once
 
 #include "grid/PathWeight.hpp"
