@@ -204,6 +204,21 @@ void Foam::functionObjects::dropletFiberCollision::reportSettings() const
             ? "number" : "mass") << nl
         << "    collision: samples per segment " << collision_.samples
         << " (1: midpoint, 0: one per grid spacing)" << nl;
+    // Each rank asks its own CPU: on a cluster of mixed CPUs the ranks would
+    // weight nodes with the two kernels, which agree to ~1e-14, not to the bit
+    const bool batchedHere = grid_->batchedKernel();
+    if
+    (
+        returnReduce(batchedHere, orOp<bool>())
+     != returnReduce(batchedHere, andOp<bool>())
+    )
+    {
+        WarningInFunction
+            << "grid.vectorised: some ranks weight nodes with the batched"
+            << " AVX2 + FMA kernel, others (CPUs without it) node by node;"
+            << " the results agree to ~1e-14, not to the bit. Set"
+            << " 'vectorised false;' for bitwise reproducible runs." << endl;
+    }
     air_->report(Info);
     const auto& s = solverSettings_;
     Info<< "    fibers: gravity (" << s.gravity.x() << ' ' << s.gravity.y() << ' '
