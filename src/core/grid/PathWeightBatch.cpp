@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 #if DROPLETFIBER_BATCHED_KERNEL
 
@@ -290,14 +291,22 @@ bool PathWeightBatch::cpuSupported()
 #endif
 }
 
-void PathWeightBatch::omegas(const PathWeight& path, const double* lambdaM, const double* d0Squared, double* omega,
-                             std::size_t count)
+// The batched code must not start on a CPU without AVX2 + FMA (SIGILL): callers choose the
+// per-node code there, so reaching this is a programming error.
+void PathWeightBatch::requireCpu(const char* caller)
 {
     if (!cpuSupported())
     {
-        throw std::logic_error("PathWeightBatch::omegas: this build or CPU has no AVX2 + FMA kernel "
-                               "(use the per-node code; PathWeightBatch::cpuSupported)");
+        throw std::logic_error(std::string("PathWeightBatch::") + caller
+                               + ": this build or CPU has no AVX2 + FMA kernel "
+                                 "(use the per-node code; PathWeightBatch::cpuSupported)");
     }
+}
+
+void PathWeightBatch::omegas(const PathWeight& path, const double* lambdaM, const double* d0Squared, double* omega,
+                             std::size_t count)
+{
+    requireCpu("omegas");
 #if DROPLETFIBER_BATCHED_KERNEL
     if (values_.size() < 11 * count)
     {
@@ -326,11 +335,7 @@ const double* PathWeightBatch::boxOmegas(const PathWeight& path, const Eigen::Ve
         boxDistanceSquared_.resize(padded);
         boxOmega_.resize(padded);
     }
-    if (!cpuSupported())
-    {
-        throw std::logic_error("PathWeightBatch::boxOmegas: this build or CPU has no AVX2 + FMA kernel "
-                               "(use the per-node code; PathWeightBatch::cpuSupported)");
-    }
+    requireCpu("boxOmegas"); // before projectBox: AVX2 code
 #if DROPLETFIBER_BATCHED_KERNEL
     avx2::projectBox(path, start, x, y, z, lo, hi, boxLambda_.data(), boxDistanceSquared_.data(), padded);
 #else

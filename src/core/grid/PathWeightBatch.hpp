@@ -59,6 +59,9 @@ public:
                             const double* z, const std::array<int, 3>& lo, const std::array<int, 3>& hi);
 
 private:
+    // Throws std::logic_error naming the caller unless cpuSupported().
+    static void requireCpu(const char* caller);
+
     // Working memory, reused from parcel to parcel: the stages of omegas(), and for
     // boxOmegas() each node's projection on the path line, squared distance from it, omega.
     std::vector<double> values_;
