@@ -537,8 +537,8 @@ bool Foam::functionObjects::dropletFiberCollision::read(const dictionary& dict)
     solverSettings_ = dropletFiber::readFiberSolverSettings(fibersDict, time_);
     solver_.reset(new ::dropletFiber::FiberSolver(solverSettings_));
 
-    writeVtk_ = dict.lookupOrDefault<bool>("writeVtk", true);
-    writeGridVtk_ = dict.lookupOrDefault<bool>("writeGridVtk", true);
+    writeVtk_ = dropletFiber::getSwitch(dict, "writeVtk", true);
+    writeGridVtk_ = dropletFiber::getSwitch(dict, "writeGridVtk", true);
 
     // The grid and the injectors carry state: built once (a change of these
     // settings needs a new run)
