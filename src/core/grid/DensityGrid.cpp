@@ -124,7 +124,10 @@ DensityGrid::DensityGrid(const GridSpec& spec, const KernelSettings& kernel, int
             coordinates_[d][static_cast<std::size_t>(i)] = spec.nodeCoordinate(d, i);
         }
         inverseSpacing_[d] = spec.flat(d) ? 0.0 : 1.0 / spec.spacing(d);
+        spacing_[d] = spec.flat(d) ? 0.0 : spec.spacing(d);
         largestSpacing_ = spec.flat(d) ? largestSpacing_ : std::max(largestSpacing_, spec.spacing(d));
+        smallestSpacing_ = spec.flat(d) || (smallestSpacing_ > 0.0 && smallestSpacing_ < spec.spacing(d))
+            ? smallestSpacing_ : spec.spacing(d);
         halfCellDiagonal_ += spec.flat(d) ? 0.0 : 0.25 * spec.spacing(d) * spec.spacing(d);
     }
     halfCellDiagonal_ = std::sqrt(halfCellDiagonal_);
@@ -338,44 +341,122 @@ void DensityGrid::accumulate(std::size_t node, double weight, const std::array<d
 void DensityGrid::depositFallback(const Eigen::Vector3d& start, const Eigen::Vector3d& displacement,
                                   const std::array<double, nQuantities>& parcelTotals)
 {
-    // Points at most half a node spacing apart along the path (at least one, at most 4096).
-    double spacing = 0.0;
+    // Points at most half a node spacing apart along the path (at least one, at most 4096),
+    // each spreading its share of the parcel over the corners of its cell (multilinear).
+    const double length = displacement.norm();
+    const int points = static_cast<int>(std::min(4096.0, std::max(1.0, std::ceil(2.0 * length / smallestSpacing_))));
+    const double share = 1.0 / points;
+    const auto pointAt = [&](int p) -> Eigen::Vector3d { return start + ((p + 0.5) * share) * displacement; };
+
+    // The corners of all points lie in the box spanned by the cells of the first and the last
+    // point: along a straight path the cell is non-decreasing or non-increasing per direction
+    // (axisCell). The weights of the points are summed per node in that box first, and the
+    // parcel's seven quantities added once per node that got weight: a path of 10 points
+    // touches ~12 distinct nodes of a 2D grid instead of 40 corner updates.
+    std::array<AxisCell, 3> first{}, last{};
+    const Eigen::Vector3d firstPoint = pointAt(0);
+    const Eigen::Vector3d lastPoint = pointAt(points - 1);
+    IndexBox box;
+    std::array<std::size_t, 3> stride{};
+    std::size_t boxNodes = 1;
     for (int d = 0; d < 3; ++d)
     {
-        if (!spec_.flat(d))
+        const auto u = static_cast<std::size_t>(d);
+        if (spec_.flat(d))
         {
-            spacing = spacing == 0.0 ? spec_.spacing(d) : std::min(spacing, spec_.spacing(d));
+            box.lo[u] = box.hi[u] = 0;
         }
+        else
+        {
+            first[u] = axisCell(firstPoint[d], spec_.lower[d], spacing_[u], spec_.nodes[d]);
+            last[u] = axisCell(lastPoint[d], spec_.lower[d], spacing_[u], spec_.nodes[d]);
+            box.lo[u] = std::min(first[u].cell, last[u].cell);
+            box.hi[u] = std::max(first[u].cell, last[u].cell) + 1;
+        }
+        stride[u] = boxNodes;
+        boxNodes *= static_cast<std::size_t>(box.hi[u] - box.lo[u] + 1);
     }
-    const double length = displacement.norm();
-    const int points = static_cast<int>(std::min(4096.0, std::max(1.0, std::ceil(2.0 * length / spacing))));
-    const double share = 1.0 / points;
-    // The touched box: the corners of all points, united once at the end (integer
-    // min/max per point instead of a box union per corner).
-    std::array<int, 3> lo{}, hi{};
+    stepBox_ = stepBox_.united(box);
+    const int corners = (spec_.flat(0) ? 1 : 2) * (spec_.flat(1) ? 1 : 2) * (spec_.flat(2) ? 1 : 2);
+    stepStatistics_.nodesVisited += static_cast<std::int64_t>(points) * corners;
+
+    if (boxNodes > maximumPathBoxNodes)
+    {
+        // A path across many cells (rare: parcels move a few cells per step at most): each
+        // point's corners straight onto the grid.
+        for (int p = 0; p < points; ++p)
+        {
+            const CornerWeights cornerWeights = multilinearWeights(spec_, pointAt(p));
+            for (int c = 0; c < cornerWeights.count; ++c)
+            {
+                const auto u = static_cast<std::size_t>(c);
+                accumulate(cornerWeights.node[u], share * cornerWeights.weight[u], parcelTotals);
+            }
+        }
+        stepStatistics_.nodesWeighted += static_cast<std::int64_t>(points) * corners;
+        return;
+    }
+
+    pathWeights_.assign(boxNodes, 0.0);
     for (int p = 0; p < points; ++p)
     {
-        const Eigen::Vector3d point = start + ((p + 0.5) * share) * displacement;
-        const CornerWeights corners = multilinearWeights(spec_, point);
-        for (int c = 0; c < corners.count; ++c)
-        {
-            accumulate(corners.node[static_cast<std::size_t>(c)], share * corners.weight[static_cast<std::size_t>(c)],
-                       parcelTotals);
-        }
-        stepStatistics_.nodesVisited += corners.count;
-        stepStatistics_.nodesWeighted += corners.count;
+        const Eigen::Vector3d point = pointAt(p);
+        // Per direction: the weights of the lower and upper corner and the offset of the
+        // lower corner in the box (flat directions: one corner of weight 1)
+        std::array<double, 3> lowerWeight{{1.0, 1.0, 1.0}}, upperWeight{{0.0, 0.0, 0.0}};
+        std::size_t offset = 0;
         for (int d = 0; d < 3; ++d)
         {
-            const int first = corners.lowerCorner[static_cast<std::size_t>(d)];
-            const int last = first + (spec_.flat(d) ? 0 : 1);
-            lo[static_cast<std::size_t>(d)] = p == 0 ? first : std::min(lo[static_cast<std::size_t>(d)], first);
-            hi[static_cast<std::size_t>(d)] = p == 0 ? last : std::max(hi[static_cast<std::size_t>(d)], last);
+            const auto u = static_cast<std::size_t>(d);
+            if (spec_.flat(d))
+            {
+                continue;
+            }
+            const AxisCell position = axisCell(point[d], spec_.lower[d], spacing_[u], spec_.nodes[d]);
+            lowerWeight[u] = 1.0 - position.fraction;
+            upperWeight[u] = position.fraction;
+            offset += stride[u] * static_cast<std::size_t>(position.cell - box.lo[u]);
+        }
+        // The same products, in the same order, as multilinearWeights
+        const int extentZ = spec_.flat(2) ? 1 : 2;
+        const int extentY = spec_.flat(1) ? 1 : 2;
+        const int extentX = spec_.flat(0) ? 1 : 2;
+        for (int c = 0; c < extentZ; ++c)
+        {
+            const double wz = c == 0 ? lowerWeight[2] : upperWeight[2];
+            for (int b = 0; b < extentY; ++b)
+            {
+                const double wy = b == 0 ? lowerWeight[1] : upperWeight[1];
+                double* row = pathWeights_.data() + offset + stride[2] * static_cast<std::size_t>(c)
+                    + stride[1] * static_cast<std::size_t>(b);
+                row[0] += share * (lowerWeight[0] * wy * wz);
+                if (extentX == 2)
+                {
+                    row[1] += share * (upperWeight[0] * wy * wz);
+                }
+            }
         }
     }
-    IndexBox box;
-    box.lo = lo;
-    box.hi = hi;
-    stepBox_ = stepBox_.united(box);
+
+    std::size_t n = 0;
+    std::int64_t weighted = 0;
+    for (int k = box.lo[2]; k <= box.hi[2]; ++k)
+    {
+        for (int j = box.lo[1]; j <= box.hi[1]; ++j)
+        {
+            const std::size_t row = spec_.flatIndex(0, j, k);
+            for (int i = box.lo[0]; i <= box.hi[0]; ++i, ++n)
+            {
+                const double weight = pathWeights_[n];
+                if (weight > 0.0)
+                {
+                    accumulate(row + static_cast<std::size_t>(i), weight, parcelTotals);
+                    ++weighted;
+                }
+            }
+        }
+    }
+    stepStatistics_.nodesWeighted += weighted;
 }
 
 void DensityGrid::commitStep()

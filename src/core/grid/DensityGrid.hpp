@@ -161,6 +161,8 @@ private:
     bool batched_; // batchedKernel()
     std::array<std::vector<double>, 3> coordinates_; // node coordinates per direction
     std::array<double, 3> inverseSpacing_{};
+    std::array<double, 3> spacing_{}; // 0 in flat directions
+    double smallestSpacing_ = 0.0; // over the active directions (cloud-in-cell path points)
     double largestSpacing_ = 0.0; // over the active directions (KernelSettings::cloudInCellBelow)
     double halfCellDiagonal_ = 0.0; // over the active directions (negligible weights)
     double nodeVolume_;
@@ -170,6 +172,11 @@ private:
     StepStatistics stepStatistics_;
     StepStatistics lastStepStatistics_;
     std::vector<std::pair<std::size_t, double>> scratch_; // (node, omega) of the current parcel
+    // Cloud-in-cell: weights of the current parcel's path summed per node of its box, for
+    // boxes up to maximumPathBoxNodes (a 2D path across ~30 cells; longer ones go straight
+    // onto the grid point by point)
+    static constexpr std::size_t maximumPathBoxNodes = 1024;
+    std::vector<double> pathWeights_;
     PathWeightBatch batch_; // the batched deposit (batchedKernel(); unused, empty, otherwise)
 };
 

@@ -21,12 +21,9 @@ CornerWeights multilinearWeights(const GridSpec& spec, const Eigen::Vector3d& po
             extent[d] = 1;
             continue;
         }
-        const double t = (point[d] - spec.lower[d]) / spec.spacing(d);
-        const double clamped = std::min(std::max(t, 0.0), static_cast<double>(spec.nodes[d] - 1));
-        int cell = static_cast<int>(std::floor(clamped));
-        cell = std::min(cell, spec.nodes[d] - 2); // the upper bound belongs to the last cell
-        base[d] = cell;
-        fraction[d] = clamped - cell;
+        const AxisCell position = axisCell(point[d], spec.lower[d], spec.spacing(d), spec.nodes[d]);
+        base[d] = position.cell;
+        fraction[d] = position.fraction;
         extent[d] = 2;
     }
     CornerWeights result;

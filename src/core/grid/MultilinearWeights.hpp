@@ -11,7 +11,9 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 
 namespace dropletFiber
@@ -26,6 +28,26 @@ struct CornerWeights
 };
 
 CornerWeights multilinearWeights(const GridSpec& spec, const Eigen::Vector3d& point);
+
+// Where a coordinate lies along one active direction of `nodes` nodes: the lower node of
+// its cell and the fraction towards the next node, clamped to the box (the upper bound
+// belongs to the last cell). Inline because the cloud-in-cell deposit calls it for every
+// point of every path; multilinearWeights uses the same arithmetic, so both give the same
+// weights to the bit. The cell is a non-decreasing function of the coordinate (every
+// floating-point step here is), which DensityGrid relies on to bound a path's corners.
+struct AxisCell
+{
+    int cell = 0;
+    double fraction = 0.0;
+};
+
+inline AxisCell axisCell(double coordinate, double lower, double spacing, int nodes)
+{
+    const double t = (coordinate - lower) / spacing;
+    const double clamped = std::min(std::max(t, 0.0), static_cast<double>(nodes - 1));
+    const int cell = std::min(static_cast<int>(std::floor(clamped)), nodes - 2);
+    return {cell, clamped - cell};
+}
 
 // Inside the box in every active direction, with a tolerance of `relativeTolerance` times
 // the box size (so that points on the boundary that carry round-off still count).

@@ -17,8 +17,10 @@ struct StepStatistics
     std::int64_t parcelsCapped = 0;        // influence radius limited by KernelSettings::rMaxCap
     std::int64_t parcelsFallback = 0;      // kernel reached no node: multilinear weights used
     std::int64_t parcelsCloudInCell = 0;   // kernel narrower than KernelSettings::cloudInCellBelow allows
-    std::int64_t nodesVisited = 0;         // nodes examined (bounding boxes of the swept capsules)
-    std::int64_t nodesWeighted = 0;        // nodes that received mass
+    std::int64_t nodesVisited = 0;         // nodes examined (bounding boxes of the swept capsules;
+                                           // cloud-in-cell: corners of the path's points)
+    std::int64_t nodesWeighted = 0;        // nodes that received mass (cloud-in-cell paths across
+                                           // more than ~30 cells: corner updates)
     double massIn = 0.0;                   // sum of parcel masses n m(r_p), kg
     double massDeposited = 0.0;            // mass put on the grid nodes, kg
     double massOutside = 0.0;              // massIn - massDeposited (part of the step outside the box)
