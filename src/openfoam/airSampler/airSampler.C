@@ -173,7 +173,10 @@ Foam::label Foam::dropletFiber::airSampler::findCell
     const label previousPointCell
 ) const
 {
-    if (!mesh_.bounds().contains(p))
+    // This processor's own box: mesh_.bounds() is the box of the whole mesh
+    // in parallel, which sent every point of the other processors to the
+    // octree search
+    if (!localBounds_.contains(p))
     {
         return -1;
     }
@@ -247,6 +250,9 @@ Foam::scalar Foam::dropletFiber::airSampler::referenceViscosity() const
     // across processors in one reduction
     constexpr label width = 6;
     List<scalar> values(width*n, Zero);
+    // Recomputed per sample (a few microseconds) so that a moving mesh is
+    // searched where it is now
+    localBounds_ = boundBox(mesh_.points(), false);
     cellHint_.setSize(n, -1);
     tetHint_.setSize(n);
     label previousPointCell = -1;

@@ -72,8 +72,13 @@ void Foam::dropletFiber::cloudParcels::append
     const dictionary& context
 )
 {
-    // The cloud writes its parcel fields into a scratch registry, whatever
-    // its parcel type (the generic route of vtkCloud).
+    if (appendKinematic(c))
+    {
+        return;
+    }
+
+    // Any other cloud writes its parcel fields into a scratch registry,
+    // whatever its parcel type (the generic route of vtkCloud).
     objectRegistry fields
     (
         IOobject

@@ -234,17 +234,19 @@ void Foam::functionObjects::dropletFiberCollision::reportSettings() const
 Foam::wordList
 Foam::functionObjects::dropletFiberCollision::selectClouds() const
 {
-    const wordList available = dropletFiber::cloudParcels::cloudNames(mesh_);
-
     if (cloudNames_.empty())
     {
-        return available;
+        return dropletFiber::cloudParcels::cloudNames(mesh_);
     }
 
+    // One look-up per named cloud (the sorted list of all clouds only for
+    // the error message: building it every step was measurable)
     for (const word& cloudName : cloudNames_)
     {
-        if (!available.found(cloudName))
+        if (!mesh_.foundObject<cloud>(cloudName))
         {
+            const wordList available =
+                dropletFiber::cloudParcels::cloudNames(mesh_);
             FatalIOErrorInFunction(dict_)
                 << "Cloud '" << cloudName << "' named in entry 'clouds' of "
                 << type() << " '" << name() << "' does not exist at time "

@@ -1,0 +1,77 @@
+/*---------------------------------------------------------------------------*\
+  dropletFiber: stochastic droplet-fiber coupling for OpenFOAM
+-------------------------------------------------------------------------------
+Description
+    The direct route of cloudParcels::append for the kinematic cloud types of
+    lagrangian/intermediate: clouds of basicKinematicParcel,
+    basicKinematicCollidingParcel (icoUncoupledKinematicCloud,
+    icoUncoupledKinematicParcelFoam, kinematicParcelFoam) and
+    basicKinematicMPPICParcel (MPPICFoam). Their parcels are read straight
+    from the cloud: five values per parcel, the same values in the same order
+    as their writeObjects gives (particle::position(), KinematicParcel's U,
+    d, nParticle, rho). The generic route builds ~16 fields per parcel in a
+    scratch registry every step: it was a fifth of the function object's
+    time in the tutorial.
+
+    Thermo, reacting and spray clouds keep the generic route: their parcel
+    headers need the thermophysical libraries' headers, which the library
+    does not otherwise depend on.
+
+\*---------------------------------------------------------------------------*/
+
+#include "cloudParcels.H"
+#include "Cloud.H"
+#include "basicKinematicParcel.H"
+#include "basicKinematicCollidingParcel.H"
+#include "basicKinematicMPPICParcel.H"
+
+// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- Append the parcels of c when it is a Cloud<ParcelType>; false otherwise
+template<class ParcelType>
+bool appendIfCloudOf
+(
+    const Foam::cloud& c,
+    Foam::dropletFiber::cloudParcels& parcels
+)
+{
+    const auto* typed = dynamic_cast<const Foam::Cloud<ParcelType>*>(&c);
+    if (!typed)
+    {
+        return false;
+    }
+    const Foam::label n = parcels.size() + typed->size();
+    parcels.position.reserve(n);
+    parcels.U.reserve(n);
+    parcels.d.reserve(n);
+    parcels.nParticle.reserve(n);
+    parcels.rho.reserve(n);
+    for (const ParcelType& p : *typed)
+    {
+        const Foam::KinematicParcel<Foam::particle>& k = p;
+        parcels.position.append(k.position());
+        parcels.U.append(k.U());
+        parcels.d.append(k.d());
+        parcels.nParticle.append(k.nParticle());
+        parcels.rho.append(k.rho());
+    }
+    return true;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
+
+bool Foam::dropletFiber::cloudParcels::appendKinematic(const cloud& c)
+{
+    return
+        appendIfCloudOf<basicKinematicCollidingParcel>(c, *this)
+     || appendIfCloudOf<basicKinematicParcel>(c, *this)
+     || appendIfCloudOf<basicKinematicMPPICParcel>(c, *this);
+}
+
+// ************************************************************************* //
