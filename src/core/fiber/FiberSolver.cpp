@@ -141,11 +141,14 @@ void FiberSolver::advanceFiber(Fiber& fiber, std::size_t fiberIndex, double dt, 
 }
 
 StepReport FiberSolver::step(std::vector<Fiber>& fibers, double dt, const AirSampler& air,
-                             const CaptureSources* capture)
+                             const CaptureSources* capture, const std::vector<std::size_t>* fiberNumbers)
 {
     if (!(dt > 0.0)) throw std::invalid_argument("FiberSolver::step: dt must be > 0");
     if (capture != nullptr && capture->size() != fibers.size()) {
         throw std::invalid_argument("FiberSolver::step: capture needs one list per fiber");
+    }
+    if (fiberNumbers != nullptr && fiberNumbers->size() != fibers.size()) {
+        throw std::invalid_argument("FiberSolver::step: fiberNumbers needs one number per fiber");
     }
     StepReport report;
 
@@ -182,7 +185,8 @@ StepReport FiberSolver::step(std::vector<Fiber>& fibers, double dt, const AirSam
 
     for (std::size_t f = 0; f < fibers.size(); ++f) {
         if (fibers[f].immobile()) continue;
-        advanceFiber(fibers[f], f, dt, airPointer, firstPoint[f], report);
+        advanceFiber(fibers[f], fiberNumbers != nullptr ? (*fiberNumbers)[f] : f, dt, airPointer,
+                     firstPoint[f], report);
         ++report.fibersAdvanced;
     }
 

@@ -34,8 +34,11 @@ public:
     // capture: nullptr, or one list per fiber (empty, or one SegmentSource per segment).
     // Throws std::invalid_argument on inconsistent input and std::runtime_error when
     // a fiber cannot be advanced even at the smallest allowed sub-step.
+    // fiberNumbers: nullptr, or the number of each fiber in the messages (a caller that
+    // steps a subset of its fibers names them by their place in the whole list).
     StepReport step(std::vector<Fiber>& fibers, double dt, const AirSampler& air,
-                    const CaptureSources* capture = nullptr);
+                    const CaptureSources* capture = nullptr,
+                    const std::vector<std::size_t>* fiberNumbers = nullptr);
 
 private:
     void advanceFiber(Fiber& fiber, std::size_t fiberIndex, double dt,

@@ -12,6 +12,7 @@ Description
 #include "dropletFiberCollision.H"
 #include "dictionaryChecks.H"
 #include "fiberStateIO.H"
+#include "fiberDistribution.H"
 #include "cloud.H"
 #include "Time.H"
 #include "fvMesh.H"
@@ -393,6 +394,12 @@ Foam::functionObjects::dropletFiberCollision::collide(const scalar dt) const
         const Eigen::Matrix3Xd& x = fiber.positions();
         const Eigen::Matrix3Xd& v = fiber.velocities();
         capture[f].resize(fiber.segmentCount());
+        // The fibers of other processors: their masses come with their
+        // states after the step (fiberDistribution)
+        if (!dropletFiber::fiberDistribution::advancesHere(f))
+        {
+            continue;
+        }
         for (Eigen::Index j = 0; j < fiber.segmentCount(); ++j)
         {
             const Eigen::Vector3d segmentVelocity = 0.5*(v.col(j) + v.col(j + 1));
@@ -597,8 +604,13 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
     clockValue fiberStart(true);
     injectFibers(t);
 
-    // 4. Stochastic collision mass of every segment, from the grid
-    const ::dropletFiber::CaptureSources capture = collide(dt);
+    // 4. Stochastic collision mass of every segment, from the grid (in
+    //    parallel: of the fibers this processor advances)
+    ::dropletFiber::CaptureSources capture = collide(dt);
+
+    // 5. Advance the fibers: capture, air drag, bending, inextensibility;
+    //    afterwards every processor holds every fiber and its capture
+    const ::dropletFiber::StepReport report = advanceFibers(dt, capture);
     scalar capturedStep = 0;
     for (const auto& fiberCapture : capture)
     {
@@ -606,28 +618,6 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
         {
             capturedStep += segment.mass;
         }
-    }
-
-    // 5. Advance the fibers: capture, air drag, bending, inextensibility
-    const ::dropletFiber::AirSampler sampler =
-        [this](const Eigen::Matrix3Xd& points)
-        {
-            return air_->sample(points);
-        };
-    ::dropletFiber::StepReport report;
-    try
-    {
-        report = solver_->step(fibers_, dt, sampler, &capture);
-    }
-    catch (const std::exception& e)
-    {
-        // A fiber that cannot be advanced even at the smallest sub-step stops
-        // the run with the reason (the results written so far stay)
-        FatalErrorInFunction
-            << type() << " " << name() << ": fiber step failed at time "
-            << time_.timeName() << ": " << e.what() << nl
-            << "    Reduce the time step, or raise fibers.maxSubSteps ("
-            << solverSettings_.maxSubSteps << ")." << exit(FatalError);
     }
     totals_.captured += capturedStep;
 

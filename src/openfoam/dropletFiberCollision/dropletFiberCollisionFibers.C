@@ -1,0 +1,160 @@
+/*---------------------------------------------------------------------------*\
+  dropletFiber: stochastic droplet-fiber coupling for OpenFOAM
+-------------------------------------------------------------------------------
+Description
+    Step 5 of execute(): the air at the fiber points and the fiber step. In
+    parallel each processor advances its share of the fibers
+    (fiberDistribution) and the states are exchanged afterwards.
+
+\*---------------------------------------------------------------------------*/
+
+#include "dropletFiberCollision.H"
+#include "fiberDistribution.H"
+#include "PstreamReduceOps.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+::dropletFiber::AirSample
+Foam::functionObjects::dropletFiberCollision::sampleAir() const
+{
+    // The points of all movable fibers in fiber order, as FiberSolver::step
+    // asks for them; identical on every processor, so the collective sample
+    // is called by all or by none
+    if (solverSettings_.drag.model == ::dropletFiber::DragModelType::none)
+    {
+        return {};
+    }
+    Eigen::Index n = 0;
+    for (const auto& fiber : fibers_)
+    {
+        n += fiber.immobile() ? 0 : fiber.pointCount();
+    }
+    if (n == 0)
+    {
+        return {};
+    }
+    Eigen::Matrix3Xd points(3, n);
+    n = 0;
+    for (const auto& fiber : fibers_)
+    {
+        if (!fiber.immobile())
+        {
+            points.middleCols(n, fiber.pointCount()) = fiber.positions();
+            n += fiber.pointCount();
+        }
+    }
+    return air_->sample(points);
+}
+
+
+::dropletFiber::StepReport
+Foam::functionObjects::dropletFiberCollision::advanceFibers
+(
+    const scalar dt,
+    ::dropletFiber::CaptureSources& capture
+)
+{
+    using namespace ::dropletFiber;
+    const AirSample air = sampleAir();
+
+    // This processor's fibers (all of them in a serial run) with their
+    // capture and their slice of the air sample
+    std::vector<std::size_t> mine;
+    for (std::size_t f = 0; f < fibers_.size(); ++f)
+    {
+        if (dropletFiber::fiberDistribution::advancesHere(f))
+        {
+            mine.push_back(f);
+        }
+    }
+    std::vector<Fiber> own;
+    CaptureSources ownCapture;
+    own.reserve(mine.size());
+    ownCapture.reserve(mine.size());
+    AirSample ownAir;
+    if (air.velocity.cols() > 0)
+    {
+        std::vector<Eigen::Index> firstPoint(fibers_.size(), 0);
+        Eigen::Index first = 0, ownPoints = 0;
+        for (std::size_t f = 0; f < fibers_.size(); ++f)
+        {
+            firstPoint[f] = first;
+            const Eigen::Index n = fibers_[f].immobile() ? 0 : fibers_[f].pointCount();
+            first += n;
+            ownPoints += dropletFiber::fiberDistribution::advancesHere(f) ? n : 0;
+        }
+        ownAir.velocity.resize(3, ownPoints);
+        ownAir.density.resize(ownPoints);
+        ownAir.viscosity.resize(ownPoints);
+        Eigen::Index at = 0;
+        for (const std::size_t f : mine)
+        {
+            const Eigen::Index n = fibers_[f].immobile() ? 0 : fibers_[f].pointCount();
+            ownAir.velocity.middleCols(at, n) = air.velocity.middleCols(firstPoint[f], n);
+            ownAir.density.segment(at, n) = air.density.segment(firstPoint[f], n);
+            ownAir.viscosity.segment(at, n) = air.viscosity.segment(firstPoint[f], n);
+            at += n;
+        }
+    }
+    for (const std::size_t f : mine)
+    {
+        own.push_back(std::move(fibers_[f]));
+        ownCapture.push_back(capture[f]);
+    }
+    const AirSampler sampler =
+        [&ownAir](const Eigen::Matrix3Xd& points)
+        {
+            if (points.cols() != ownAir.velocity.cols())
+            {
+                throw std::logic_error
+                (
+                    "air sample of " + std::to_string(ownAir.velocity.cols())
+                  + " points asked for " + std::to_string(points.cols())
+                );
+            }
+            return ownAir;
+        };
+
+    StepReport report;
+    std::string failure;
+    try
+    {
+        report = solver_->step(own, dt, sampler, &ownCapture, &mine);
+    }
+    catch (const std::exception& e)
+    {
+        failure = e.what();
+    }
+    for (std::size_t k = 0; k < mine.size(); ++k)
+    {
+        fibers_[mine[k]] = std::move(own[k]);
+    }
+
+    // A fiber that cannot be advanced even at the smallest sub-step stops
+    // the run with the reason (the results written so far stay), on every
+    // processor at once: the others would wait for it in the exchange
+    List<string> failures(Pstream::nProcs());
+    failures[Pstream::myProcNo()] = failure;
+    Pstream::gatherList(failures);
+    Pstream::scatterList(failures);
+    for (const string& reason : failures)
+    {
+        if (!reason.empty())
+        {
+            FatalErrorInFunction
+                << type() << " " << name() << ": fiber step failed at time "
+                << time_.timeName() << ": " << reason.c_str() << nl
+                << "    Reduce the time step, or raise fibers.maxSubSteps ("
+                << solverSettings_.maxSubSteps << ")." << exit(FatalError);
+        }
+    }
+
+    dropletFiber::fiberDistribution::exchange(fibers_, capture);
+
+    // The figures the table and the log report, over all fibers
+    reduce(report.maxSegmentLengthError, maxOp<scalar>());
+    reduce(report.subSteps, sumOp<int>());
+    return report;
+}
+
+// ************************************************************************* //
