@@ -483,26 +483,35 @@ void DensityGrid::commitStep()
 
 std::vector<double> DensityGrid::packStep(const IndexBox& box) const
 {
-    std::vector<double> values;
+    std::vector<double> values(box.empty() ? 0 : box.nodeCount() * nQuantities);
+    packStep(box, values.data());
+    return values;
+}
+
+void DensityGrid::packStep(const IndexBox& box, double* values) const
+{
     if (box.empty())
     {
-        return values;
+        return;
     }
-    values.reserve(box.nodeCount() * nQuantities);
     for (int k = box.lo[2]; k <= box.hi[2]; ++k)
     {
         for (int j = box.lo[1]; j <= box.hi[1]; ++j)
         {
             const std::size_t first = spec_.flatIndex(box.lo[0], j, k) * nQuantities;
             const std::size_t last = spec_.flatIndex(box.hi[0], j, k) * nQuantities + nQuantities;
-            values.insert(values.end(), step_.begin() + static_cast<std::ptrdiff_t>(first),
-                          step_.begin() + static_cast<std::ptrdiff_t>(last));
+            values = std::copy(step_.begin() + static_cast<std::ptrdiff_t>(first),
+                               step_.begin() + static_cast<std::ptrdiff_t>(last), values);
         }
     }
-    return values;
 }
 
 void DensityGrid::unpackStep(const IndexBox& box, const std::vector<double>& values)
+{
+    unpackStep(box, values.data(), values.size());
+}
+
+void DensityGrid::unpackStep(const IndexBox& box, const double* values, std::size_t count)
 {
     if (box.empty())
     {
@@ -515,21 +524,18 @@ void DensityGrid::unpackStep(const IndexBox& box, const std::vector<double>& val
             throw std::invalid_argument("DensityGrid::unpackStep: box outside the grid");
         }
     }
-    if (values.size() != box.nodeCount() * nQuantities)
+    if (count != box.nodeCount() * nQuantities)
     {
         throw std::invalid_argument("DensityGrid::unpackStep: value count does not match the box");
     }
-    std::size_t read = 0;
+    const std::size_t rowValues = static_cast<std::size_t>(box.hi[0] - box.lo[0] + 1) * nQuantities;
     for (int k = box.lo[2]; k <= box.hi[2]; ++k)
     {
         for (int j = box.lo[1]; j <= box.hi[1]; ++j)
         {
             const std::size_t first = spec_.flatIndex(box.lo[0], j, k) * nQuantities;
-            const std::size_t count = static_cast<std::size_t>(box.hi[0] - box.lo[0] + 1) * nQuantities;
-            std::copy(values.begin() + static_cast<std::ptrdiff_t>(read),
-                      values.begin() + static_cast<std::ptrdiff_t>(read + count),
-                      step_.begin() + static_cast<std::ptrdiff_t>(first));
-            read += count;
+            std::copy(values, values + rowValues, step_.begin() + static_cast<std::ptrdiff_t>(first));
+            values += rowValues;
         }
     }
     stepBox_ = stepBox_.united(box);

@@ -127,9 +127,13 @@ public:
     IndexBox stepBox() const { return stepBox_; }
     // Copies the box's values (nQuantities per node, i fastest) into a contiguous buffer...
     std::vector<double> packStep(const IndexBox& box) const;
+    // The same into the caller's buffer of box.nodeCount() * nQuantities values (the
+    // function object packs straight into its message: 0.4 MB per step in the tutorial).
+    void packStep(const IndexBox& box, double* values) const;
     // ...and back: overwrites the box (e.g. with the sum over ranks); stepBox() becomes
     // stepBox() united with box. Nodes outside the box are left as they are.
     void unpackStep(const IndexBox& box, const std::vector<double>& values);
+    void unpackStep(const IndexBox& box, const double* values, std::size_t count);
 
     // --- averaging window and fields ----------------------------------------------------
     int windowLength() const { return window_.length(); }

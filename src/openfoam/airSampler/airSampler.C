@@ -123,14 +123,20 @@ Foam::vector Foam::dropletFiber::airSampler::interpolateU
     {
         return interpU.interpolate(w, hint);
     }
-    // The cell's tets in OpenFOAM's order, so the first that holds p is the
-    // one interpolationCellPoint::interpolate(p, celli) would use
-    for (const tetIndices& tet : polyMeshTetDecomposition::cellTetIndices(mesh_, celli))
+    // The cell's tets in OpenFOAM's order (polyMeshTetDecomposition::
+    // cellTetIndices, without building its lists), so the first that holds p
+    // is the one interpolationCellPoint::interpolate(p, celli) would use
+    const faceList& faces = mesh_.faces();
+    for (const label facei : mesh_.cells()[celli])
     {
-        if (tetHolds(tet, p, w))
+        for (label tetPti = 1; tetPti < faces[facei].size() - 1; ++tetPti)
         {
-            hint = tet;
-            return interpU.interpolate(w, tet);
+            const tetIndices tet(celli, facei, tetPti);
+            if (tetHolds(tet, p, w))
+            {
+                hint = tet;
+                return interpU.interpolate(w, tet);
+            }
         }
     }
     // None holds it (a point on a warped face): OpenFOAM's nearest-tet rule

@@ -330,13 +330,15 @@ Foam::functionObjects::dropletFiberCollision::depositParcels(const scalar dt)
         }
         if (!box.empty())
         {
-            std::vector<double> block = grid.packStep(box);
-            List<scalar> values(label(block.size()));
-            std::copy(block.begin(), block.end(), values.begin());
+            // Packed straight into the message and read back from it
+            List<scalar> values
+            (
+                label(box.nodeCount()*::dropletFiber::nQuantities)
+            );
+            grid.packStep(box, values.data());
             Pstream::listCombineGather(values, plusEqOp<scalar>());
             Pstream::listCombineScatter(values);
-            std::copy(values.begin(), values.end(), block.begin());
-            grid.unpackStep(box, block);
+            grid.unpackStep(box, values.cdata(), std::size_t(values.size()));
         }
     }
 
