@@ -1,6 +1,7 @@
 #include "output/VtkWriter.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -25,6 +26,18 @@ std::ofstream openOrThrow(const std::string& path)
     return os;
 }
 
+// The shortest decimal that reads back as the same double (std::to_chars): as exact as
+// the stream at precision 17, about ten times faster (formatting the grid's ~50k values
+// was nearly all of a write in the tutorial) and shorter. Non-finite values are written
+// as 0: VTK has no notation for them that every reader accepts.
+void appendNumber(std::string& out, double v)
+{
+    char buffer[32];
+    const std::to_chars_result written =
+        std::to_chars(buffer, buffer + sizeof buffer, std::isfinite(v) ? v : 0.0);
+    out.append(buffer, written.ptr);
+}
+
 void writeTimeFieldData(std::ostream& os, double time)
 {
     os << "    <FieldData>\n"
@@ -45,17 +58,18 @@ void writeDataArray(std::ostream& os, const VtkField& field, std::size_t tuples)
     }
     os << "        <DataArray type=\"Float64\" Name=\"" << field.name
        << "\" NumberOfComponents=\"" << field.components << "\" format=\"ascii\">\n";
+    std::string text;
+    text.reserve(field.values.size() * 24);
     for (std::size_t i = 0; i < field.values.size(); ++i)
     {
-        // VTK has no notation for non-finite values that every reader accepts
-        const double v = std::isfinite(field.values[i]) ? field.values[i] : 0.0;
-        os << (i % 6 == 0 ? "          " : " ") << v;
+        text += i % 6 == 0 ? "          " : " ";
+        appendNumber(text, field.values[i]);
         if (i % 6 == 5 || i + 1 == field.values.size())
         {
-            os << '\n';
+            text += '\n';
         }
     }
-    os << "        </DataArray>\n";
+    os << text << "        </DataArray>\n";
 }
 
 void writeFieldBlock(std::ostream& os, const char* tag, const std::vector<VtkField>& fields,
@@ -94,11 +108,18 @@ void writePolylines(const std::string& path, double time,
        << nSegments << "\">\n"
        << "      <Points>\n"
        << "        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+    std::string text;
     for (const Eigen::Vector3d& p : points)
     {
-        os << "          " << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
+        text += "         ";
+        for (int d = 0; d < 3; ++d)
+        {
+            text += ' ';
+            appendNumber(text, p[d]);
+        }
+        text += '\n';
     }
-    os << "        </DataArray>\n"
+    os << text << "        </DataArray>\n"
        << "      </Points>\n"
        << "      <Lines>\n"
        << "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
