@@ -69,10 +69,11 @@ Foam::scalar Foam::dropletFiber::cloudParcels::nDroplets() const
 void Foam::dropletFiber::cloudParcels::append
 (
     const cloud& c,
-    const dictionary& context
+    const dictionary& context,
+    const bool generic
 )
 {
-    if (appendKinematic(c))
+    if (!generic && appendKinematic(c))
     {
         return;
     }

@@ -178,12 +178,17 @@ void Foam::functionObjects::dropletFiberCollision::reportSettings() const
         << "    clouds: ";
     if (cloudNames_.empty())
     {
-        Info<< "all" << nl;
+        Info<< "all";
     }
     else
     {
-        Info<< cloudNames_ << nl;
+        Info<< cloudNames_;
     }
+    Info<< (
+               gatherWriteObjects_
+             ? " (gather writeObjects: every cloud through cloud::writeObjects)"
+             : " (gather direct: kinematic parcel types read directly)"
+           ) << nl;
     Info<< "    grid: (" << g.lower.x() << ' ' << g.lower.y() << ' ' << g.lower.z()
         << ") to (" << g.upper.x() << ' ' << g.upper.y() << ' ' << g.upper.z()
         << "), nodes (" << g.nodes[0] << ' ' << g.nodes[1] << ' ' << g.nodes[2]
@@ -267,7 +272,10 @@ void Foam::functionObjects::dropletFiberCollision::gatherParcels()
     parcels_.clear();
     for (const word& cloudName : selectClouds())
     {
-        parcels_.append(mesh_.lookupObject<cloud>(cloudName), dict_);
+        parcels_.append
+        (
+            mesh_.lookupObject<cloud>(cloudName), dict_, gatherWriteObjects_
+        );
     }
 }
 
@@ -480,6 +488,7 @@ Foam::functionObjects::dropletFiberCollision::dropletFiberCollision
     writeFile(mesh_, name, "dropletFiber", dict),
     dict_(dict),
     cloudNames_(),
+    gatherWriteObjects_(false),
     lastTimeIndex_(-1),
     parcels_(),
     averagingSteps_(1),
@@ -537,6 +546,13 @@ bool Foam::functionObjects::dropletFiberCollision::read(const dictionary& dict)
     dict_ = dict;
 
     cloudNames_ = dict.lookupOrDefault<wordList>("clouds", wordList());
+    // direct: the kinematic parcel types read parcel by parcel, others through
+    // cloud::writeObjects; writeObjects: every cloud that way (the same values)
+    gatherWriteObjects_ =
+        dropletFiber::getChoice
+        (
+            dict, "gather", "direct", {"direct", "writeObjects"}
+        ) == "writeObjects";
     readGrid(dict);
     readCollision(dict);
     air_.reset

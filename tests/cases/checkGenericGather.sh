@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# The two routes that gather parcels give the same parcels: the case is run with
+# 'gather writeObjects;' (every cloud through cloud::writeObjects, the generic
+# route), and its table must equal, to the last digit written, the table of the
+# default run ('gather direct;': the kinematic parcel types read directly).
+# Usage: checkGenericGather.sh CASE_DIR WORK_DIR DEFAULT_RUN_TABLE
+set -uo pipefail
+here="$(cd "${0%/*}" && pwd)"
+# shellcheck disable=SC1091
+. "$here/lib/prepareCase.sh"
+defaultTable="$3"
+prepareCaseCopy "$1" "$2"
+foamDictionary system/controlDict -entry functions/dropletFiber/gather -add writeObjects > /dev/null
+"$(foamDictionary -entry application -value system/controlDict)" > log.generic 2>&1
+status=$?
+check "[ $status -eq 0 ]" "the run with the debug switch failed ($status), see $2/log.generic"
+check 'grep -q "gather writeObjects: every cloud through" log.generic' \
+    "the entry did not take effect (no generic-route line in the log)"
+check 'grep -q "gather direct: kinematic parcel types read directly" "$(dirname "$defaultTable")/../../../log.pimpleFoam"' \
+    "the default run did not read the parcels directly"
+python3 "$here/compareTables.py" "$defaultTable" postProcessing/dropletFiber/0/dropletFiber.dat 0
+check "[ $? -eq 0 ]" "the tables of the two routes differ"
+checkSummary
