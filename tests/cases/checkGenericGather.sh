@@ -20,4 +20,11 @@ check 'grep -q "gather direct: kinematic parcel types read directly" "$(dirname 
     "the default run did not read the parcels directly"
 python3 "$here/compareTables.py" "$defaultTable" postProcessing/dropletFiber/0/dropletFiber.dat 0
 check "[ $? -eq 0 ]" "the tables of the two routes differ"
+# The averaging window of the last write time, every value in binary: the
+# parcels' positions, velocities, sizes and numbers must agree to the bit
+defaultRun="$(cd "$(dirname "$defaultTable")/../../.." && pwd)"
+last="$(foamListTimes -latestTime -case "$defaultRun" 2>/dev/null | tail -1)"
+window="$last/uniform/dropletFiber/dropletFiber.gridWindow"
+check '[ -n "$last" ] && [ -f "$defaultRun/$window" ] && [ -f "$window" ]' "no grid window at the last write time '$last'"
+check 'cmp -s "$defaultRun/$window" "$window"' "the grid windows of the two routes differ (at $last)"
 checkSummary
