@@ -12,6 +12,10 @@ Description
 #include "fiberDistribution.H"
 #include "PstreamReduceOps.H"
 
+#include <stdexcept>
+#include <string>
+#include <vector>
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 ::dropletFiber::AirSample
