@@ -126,8 +126,10 @@ DensityGrid::DensityGrid(const GridSpec& spec, const KernelSettings& kernel, int
         inverseSpacing_[d] = spec.flat(d) ? 0.0 : 1.0 / spec.spacing(d);
         spacing_[d] = spec.flat(d) ? 0.0 : spec.spacing(d);
         largestSpacing_ = spec.flat(d) ? largestSpacing_ : std::max(largestSpacing_, spec.spacing(d));
-        smallestSpacing_ = spec.flat(d) || (smallestSpacing_ > 0.0 && smallestSpacing_ < spec.spacing(d))
-            ? smallestSpacing_ : spec.spacing(d);
+        if (!spec.flat(d))
+        {
+            smallestSpacing_ = smallestSpacing_ > 0.0 ? std::min(smallestSpacing_, spec.spacing(d)) : spec.spacing(d);
+        }
         halfCellDiagonal_ += spec.flat(d) ? 0.0 : 0.25 * spec.spacing(d) * spec.spacing(d);
     }
     halfCellDiagonal_ = std::sqrt(halfCellDiagonal_);

@@ -176,13 +176,11 @@ Foam::label Foam::dropletFiber::airSampler::findCell
 (
     const point& p,
     const label hint,
-    const label previousPointCell
+    const label previousPointCell,
+    const boundBox& localBounds
 ) const
 {
-    // This processor's own box: mesh_.bounds() is the box of the whole mesh
-    // in parallel, which sent every point of the other processors to the
-    // octree search
-    if (!localBounds_.contains(p))
+    if (!localBounds.contains(p))
     {
         return -1;
     }
@@ -256,16 +254,18 @@ Foam::scalar Foam::dropletFiber::airSampler::referenceViscosity() const
     // across processors in one reduction
     constexpr label width = 6;
     List<scalar> values(width*n, Zero);
-    // Recomputed per sample (a few microseconds) so that a moving mesh is
-    // searched where it is now
-    localBounds_ = boundBox(mesh_.points(), false);
+    // This processor's own box (not reduced: mesh_.bounds() is the box of
+    // the whole mesh in parallel, which sent every point of the other
+    // processors to the octree search), per sample so that a moving mesh is
+    // searched where it is now (a few microseconds)
+    const boundBox localBounds(mesh_.points(), false);
     cellHint_.setSize(n, -1);
     tetHint_.setSize(n);
     label previousPointCell = -1;
     for (label i = 0; i < n; ++i)
     {
         const point p(points(0, i), points(1, i), points(2, i));
-        const label celli = findCell(p, cellHint_[i], previousPointCell);
+        const label celli = findCell(p, cellHint_[i], previousPointCell, localBounds);
         cellHint_[i] = celli;
         previousPointCell = celli;
         if (celli < 0)

@@ -16,6 +16,21 @@ Description
 #include <string>
 #include <vector>
 
+// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- Points of a fiber in the air sample (FiberSolver::step samples movable
+//  fibers only)
+Eigen::Index sampledPoints(const ::dropletFiber::Fiber& fiber)
+{
+    return fiber.immobile() ? 0 : fiber.pointCount();
+}
+
+} // End anonymous namespace
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 ::dropletFiber::AirSample
@@ -31,7 +46,7 @@ Foam::functionObjects::dropletFiberCollision::sampleAir() const
     Eigen::Index n = 0;
     for (const auto& fiber : fibers_)
     {
-        n += fiber.immobile() ? 0 : fiber.pointCount();
+        n += sampledPoints(fiber);
     }
     if (n == 0)
     {
@@ -41,7 +56,7 @@ Foam::functionObjects::dropletFiberCollision::sampleAir() const
     n = 0;
     for (const auto& fiber : fibers_)
     {
-        if (!fiber.immobile())
+        if (sampledPoints(fiber) > 0)
         {
             points.middleCols(n, fiber.pointCount()) = fiber.positions();
             n += fiber.pointCount();
@@ -61,49 +76,49 @@ Foam::functionObjects::dropletFiberCollision::advanceFibers
     using namespace ::dropletFiber;
     const AirSample air = sampleAir();
 
-    // This processor's fibers (all of them in a serial run) with their
-    // capture and their slice of the air sample
+    // This processor's fibers (all of them in a serial run), where their
+    // points start in the air sample, and how many points they have there
     std::vector<std::size_t> mine;
+    std::vector<Eigen::Index> mineFirstPoint;
+    Eigen::Index first = 0, ownPoints = 0;
     for (std::size_t f = 0; f < fibers_.size(); ++f)
     {
         if (dropletFiber::fiberDistribution::advancesHere(f))
         {
             mine.push_back(f);
+            mineFirstPoint.push_back(first);
+            ownPoints += sampledPoints(fibers_[f]);
         }
+        first += sampledPoints(fibers_[f]);
+    }
+
+    // Their slice of the air sample, their capture, and the fibers
+    AirSample ownAir;
+    if (air.velocity.cols() > 0)
+    {
+        ownAir.velocity.resize(3, ownPoints);
+        ownAir.density.resize(ownPoints);
+        ownAir.viscosity.resize(ownPoints);
     }
     std::vector<Fiber> own;
     CaptureSources ownCapture;
     own.reserve(mine.size());
     ownCapture.reserve(mine.size());
-    AirSample ownAir;
-    if (air.velocity.cols() > 0)
+    Eigen::Index at = 0;
+    for (std::size_t k = 0; k < mine.size(); ++k)
     {
-        std::vector<Eigen::Index> firstPoint(fibers_.size(), 0);
-        Eigen::Index first = 0, ownPoints = 0;
-        for (std::size_t f = 0; f < fibers_.size(); ++f)
+        const std::size_t f = mine[k];
+        if (air.velocity.cols() > 0)
         {
-            firstPoint[f] = first;
-            const Eigen::Index n = fibers_[f].immobile() ? 0 : fibers_[f].pointCount();
-            first += n;
-            ownPoints += dropletFiber::fiberDistribution::advancesHere(f) ? n : 0;
-        }
-        ownAir.velocity.resize(3, ownPoints);
-        ownAir.density.resize(ownPoints);
-        ownAir.viscosity.resize(ownPoints);
-        Eigen::Index at = 0;
-        for (const std::size_t f : mine)
-        {
-            const Eigen::Index n = fibers_[f].immobile() ? 0 : fibers_[f].pointCount();
-            ownAir.velocity.middleCols(at, n) = air.velocity.middleCols(firstPoint[f], n);
-            ownAir.density.segment(at, n) = air.density.segment(firstPoint[f], n);
-            ownAir.viscosity.segment(at, n) = air.viscosity.segment(firstPoint[f], n);
+            const Eigen::Index n = sampledPoints(fibers_[f]);
+            const Eigen::Index from = mineFirstPoint[k];
+            ownAir.velocity.middleCols(at, n) = air.velocity.middleCols(from, n);
+            ownAir.density.segment(at, n) = air.density.segment(from, n);
+            ownAir.viscosity.segment(at, n) = air.viscosity.segment(from, n);
             at += n;
         }
-    }
-    for (const std::size_t f : mine)
-    {
-        own.push_back(std::move(fibers_[f]));
         ownCapture.push_back(capture[f]);
+        own.push_back(std::move(fibers_[f]));
     }
     const AirSampler sampler =
         [&ownAir](const Eigen::Matrix3Xd& points)
