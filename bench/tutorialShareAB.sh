@@ -5,11 +5,16 @@
 # interleaved (A B C A B C ...): the machine's speed drifts by 10-30 % between
 # runs minutes apart, so only builds measured side by side can be compared.
 #
-# Usage: bench/tutorialShareAB.sh [-parallel] [-rounds N] [-keep DIR] REV...
+# Usage: bench/tutorialShareAB.sh [-parallel] [-rounds N] [-refine R] [-keep DIR] REV...
 #   REV        a git revision (built from a worktree into DIR/lib_<REV>), or
 #              "work": the library of the working tree, as ./Allwmake built it
 #   -parallel  2 ranks instead of serial
 #   -rounds N  runs per build (default 3)
+#   -refine R  the scratch copy's CFD mesh refined R times in x and y (25R x 75R
+#              cells) and its time step divided by R (the same Courant number);
+#              the function object's settings, the spray and the fibers are
+#              unchanged: how the share falls as the flow solver's work grows
+#              (default 1, the tutorial as it is)
 #   -keep DIR  scratch directory (default: a new mktemp -d directory)
 # Prints one line per run (bench/tutorialShare.py) and, per build, the shares
 # of all rounds. Needs the OpenFOAM environment (bin/functions.sh loads it).
@@ -19,19 +24,24 @@ here="$(cd "${0%/*}" && pwd)"
 root="$(cd "$here/.." && pwd)"
 parallel=false
 rounds=3
+refine=1
 scratch=""
 revs=()
 while [ $# -gt 0 ]; do
     case "$1" in
         -parallel) parallel=true ;;
         -rounds) rounds="$2"; shift ;;
+        -refine) refine="$2"; shift ;;
         -keep) scratch="$2"; shift ;;
-        -*) echo "usage: $0 [-parallel] [-rounds N] [-keep DIR] REV..." >&2; exit 2 ;;
+        -*) echo "usage: $0 [-parallel] [-rounds N] [-refine R] [-keep DIR] REV..." >&2; exit 2 ;;
         *) revs+=("$1") ;;
     esac
     shift
 done
-[ "${#revs[@]}" -gt 0 ] || { echo "usage: $0 [-parallel] [-rounds N] [-keep DIR] REV..." >&2; exit 2; }
+[ "${#revs[@]}" -gt 0 ] || { echo "usage: $0 [-parallel] [-rounds N] [-refine R] [-keep DIR] REV..." >&2; exit 2; }
+case "$refine" in
+    '' | *[!0-9]* | 0) echo "tutorialShareAB: -refine takes a positive integer, got '$refine'" >&2; exit 2 ;;
+esac
 # shellcheck disable=SC1091
 . "$root/bin/functions.sh"
 loadFoamEnvironment
@@ -65,6 +75,13 @@ cp -r "$root/tutorials/channelSpray" "$dir"
     ./Allclean > /dev/null 2>&1 || true
     rm -f system/controlDict.short
     cp -r 0.orig 0
+    if [ "$refine" != 1 ]; then
+        # 25 x 75 cells -> 25R x 75R, deltaT 5e-4 -> 5e-4 / R
+        sed -i "s/(25 75 1)/($((25 * refine)) $((75 * refine)) 1)/" system/blockMeshDict
+        grep -q "($((25 * refine)) $((75 * refine)) 1)" system/blockMeshDict || {
+            echo "tutorialShareAB: could not refine system/blockMeshDict" >&2; exit 1; }
+        foamDictionary -entry deltaT -set "$(python3 -c "print(5e-4 / $refine)")" system/controlDict > /dev/null
+    fi
     blockMesh > log.blockMesh 2>&1
     if [ "$parallel" = true ]; then
         decomposePar > log.decomposePar 2>&1

@@ -41,6 +41,7 @@ AveragingWindow::AveragingWindow(const std::array<int, 3>& nodes, int nQuantitie
     slots_.resize(static_cast<std::size_t>(length));
     slotBoxes_.resize(static_cast<std::size_t>(length));
     total_.assign(size, 0.0);
+    summedAt_.assign(size / static_cast<std::size_t>(nQuantities), -1);
 }
 
 // Calls f(offset, count) for each contiguous row (fixed j, k) of the box, in values.
@@ -116,22 +117,22 @@ void AveragingWindow::nodeTotal(std::size_t node, double* sums) const
 {
     const std::size_t q = static_cast<std::size_t>(nQuantities_);
     const std::size_t offset = node * q;
-    if (!boxHolds(staleBox_, node))
+    double* total = total_.data() + offset;
+    if (summedAt_[node] != committed_ && boxHolds(staleBox_, node))
     {
-        std::copy(total_.begin() + static_cast<std::ptrdiff_t>(offset),
-                  total_.begin() + static_cast<std::ptrdiff_t>(offset + q), sums);
-        return;
-    }
-    // The same additions in the same order as recomputeTotal.
-    std::fill(sums, sums + q, 0.0);
-    for (int age = 0; age < filled_; ++age)
-    {
-        const double* slot = slots_[slotIndex(age)].data() + offset;
-        for (std::size_t n = 0; n < q; ++n)
+        // The same additions in the same order as recomputeTotal.
+        std::fill(total, total + q, 0.0);
+        for (int age = 0; age < filled_; ++age)
         {
-            sums[n] += slot[n];
+            const double* slot = slots_[slotIndex(age)].data() + offset;
+            for (std::size_t n = 0; n < q; ++n)
+            {
+                total[n] += slot[n];
+            }
         }
+        summedAt_[node] = committed_;
     }
+    std::copy(total, total + q, sums);
 }
 
 void AveragingWindow::recomputeTotal(const IndexBox& box) const
@@ -261,6 +262,7 @@ void AveragingWindow::restore(const WindowState& state)
     }
     committed_ = c[7];
     staleBox_ = IndexBox{};
+    std::fill(summedAt_.begin(), summedAt_.end(), -1);
     recomputeTotal(box());
 }
 

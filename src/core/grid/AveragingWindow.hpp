@@ -18,6 +18,9 @@
 // date (cost: |stale box| * nQuantities * W, paid by output at write times), while
 // nodeTotal() sums the slots of one node in the same order (bit-identical to total()),
 // so the per-step sampling along the fibers does not pay for the whole box every step.
+// nodeTotal() keeps what it summed (in the total array, stamped with the step count):
+// the collision samples of one step share most of their nodes (neighbouring samples of
+// a fiber, 1-4 corners each), and each node's W slots are far apart in memory.
 #pragma once
 
 #include "grid/GridSpec.hpp"
@@ -79,9 +82,11 @@ private:
     int head_ = 0;   // slot of the oldest step
     int filled_ = 0;
     std::int64_t committed_ = 0;
-    // total_ is a cache of the slots' sum, valid outside staleBox_.
+    // total_ is a cache of the slots' sum, valid outside staleBox_, and inside it at the
+    // nodes whose summedAt_ equals committed_ (summed by nodeTotal since the last push).
     mutable std::vector<double> total_;
     mutable IndexBox staleBox_;
+    mutable std::vector<std::int64_t> summedAt_;
 };
 
 } // namespace dropletFiber

@@ -143,36 +143,52 @@ Foam::functionObjects::dropletFiberCollision::advanceFibers
     catch (const std::exception& e)
     {
         failure = e.what();
+        if (failure.empty())
+        {
+            failure = "fiber step failed (no reason given)";
+        }
     }
     for (std::size_t k = 0; k < mine.size(); ++k)
     {
         fibers_[mine[k]] = std::move(own[k]);
     }
 
+    // The advanced fibers to every processor, with the processors' outcomes
+    dropletFiber::fiberDistribution::stepOutcome outcome;
+    outcome.failed = !failure.empty();
+    outcome.maxSegmentLengthError = report.maxSegmentLengthError;
+    outcome.subSteps = report.subSteps;
+    outcome = dropletFiber::fiberDistribution::exchange
+    (
+        fibers_, capture, outcome
+    );
+
     // A fiber that cannot be advanced even at the smallest sub-step stops
     // the run with the reason (the results written so far stay), on every
-    // processor at once: the others would wait for it in the exchange
-    List<string> failures(Pstream::nProcs());
-    failures[Pstream::myProcNo()] = failure;
-    Pstream::gatherList(failures);
-    Pstream::scatterList(failures);
-    for (const string& reason : failures)
+    // processor at once: all know from the exchange that one failed, so the
+    // reasons are gathered only then
+    if (outcome.failed)
     {
-        if (!reason.empty())
+        List<string> failures(Pstream::nProcs());
+        failures[Pstream::myProcNo()] = failure;
+        Pstream::gatherList(failures);
+        Pstream::scatterList(failures);
+        for (const string& reason : failures)
         {
-            FatalErrorInFunction
-                << type() << " " << name() << ": fiber step failed at time "
-                << time_.timeName() << ": " << reason.c_str() << nl
-                << "    Reduce the time step, or raise fibers.maxSubSteps ("
-                << solverSettings_.maxSubSteps << ")." << exit(FatalError);
+            if (!reason.empty())
+            {
+                FatalErrorInFunction
+                    << type() << " " << name() << ": fiber step failed at time "
+                    << time_.timeName() << ": " << reason.c_str() << nl
+                    << "    Reduce the time step, or raise fibers.maxSubSteps ("
+                    << solverSettings_.maxSubSteps << ")." << exit(FatalError);
+            }
         }
     }
 
-    dropletFiber::fiberDistribution::exchange(fibers_, capture);
-
     // The figures the table and the log report, over all fibers
-    reduce(report.maxSegmentLengthError, maxOp<scalar>());
-    reduce(report.subSteps, sumOp<int>());
+    report.maxSegmentLengthError = outcome.maxSegmentLengthError;
+    report.subSteps = outcome.subSteps;
     return report;
 }
 

@@ -19,6 +19,9 @@ Foam::label packedSize(const ::dropletFiber::Fiber& fiber)
     return Foam::label(6*fiber.pointCount() + 3*fiber.segmentCount());
 }
 
+//- Doubles of the step outcome at the end of each processor's list
+constexpr Foam::label outcomeSize = 3;
+
 } // End anonymous namespace
 
 
@@ -30,15 +33,17 @@ bool Foam::dropletFiber::fiberDistribution::advancesHere(const std::size_t f)
 }
 
 
-void Foam::dropletFiber::fiberDistribution::exchange
+Foam::dropletFiber::fiberDistribution::stepOutcome
+Foam::dropletFiber::fiberDistribution::exchange
 (
     std::vector<::dropletFiber::Fiber>& fibers,
-    ::dropletFiber::CaptureSources& capture
+    ::dropletFiber::CaptureSources& capture,
+    const stepOutcome& local
 )
 {
     if (!Pstream::parRun())
     {
-        return;
+        return local;
     }
     const std::size_t nProcs = std::size_t(Pstream::nProcs());
 
@@ -53,7 +58,7 @@ void Foam::dropletFiber::fiberDistribution::exchange
     }
     List<scalarList> perProcessor(Pstream::nProcs());
     scalarList& mine = perProcessor[Pstream::myProcNo()];
-    mine.setSize(size);
+    mine.setSize(size + outcomeSize);
     label k = 0;
     for (std::size_t f = 0; f < fibers.size(); ++f)
     {
@@ -83,6 +88,10 @@ void Foam::dropletFiber::fiberDistribution::exchange
             mine[k++] = segment.mass;
         }
     }
+    // Sub-steps as a double: exact for counts below 2^53
+    mine[k++] = local.failed ? 1 : 0;
+    mine[k++] = local.maxSegmentLengthError;
+    mine[k++] = scalar(local.subSteps);
 
     // Exact copies (not a sum): every processor ends with the same bits
     Pstream::gatherList(perProcessor);
@@ -98,7 +107,7 @@ void Foam::dropletFiber::fiberDistribution::exchange
         }
         const scalarList& theirs = perProcessor[label(owner)];
         label& at = offset[owner];
-        if (at + packedSize(fibers[f]) > theirs.size())
+        if (at + packedSize(fibers[f]) + outcomeSize > theirs.size())
         {
             FatalErrorInFunction
                 << "Fiber " << label(f) << ": processor " << label(owner)
@@ -128,6 +137,19 @@ void Foam::dropletFiber::fiberDistribution::exchange
             segment.mass = theirs[at++];
         }
     }
+
+    // The outcomes, the last values of each processor's list, combined in
+    // processor order (the same on every processor)
+    stepOutcome all;
+    for (const scalarList& theirs : perProcessor)
+    {
+        const label at = theirs.size() - outcomeSize;
+        all.failed = all.failed || theirs[at] != 0;
+        all.maxSegmentLengthError =
+            max(all.maxSegmentLengthError, theirs[at + 1]);
+        all.subSteps += label(theirs[at + 2]);
+    }
+    return all;
 }
 
 // ************************************************************************* //

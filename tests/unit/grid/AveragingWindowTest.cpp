@@ -62,18 +62,23 @@ TEST(AveragingWindow, NodeTotalAndTotalAreTheChronologicalSumBitForBit)
         if (static_cast<int>(history.size()) > length) history.pop_front();
         window.push(history.back(), box);
 
-        // Read node by node first (the window is stale here), then as the whole array on
-        // every other step, so both orders of use are covered.
+        // Read node by node first (the window is stale here; twice, the second time from
+        // what the first read kept), then as the whole array on every other step, so both
+        // orders of use are covered.
         const std::size_t nodeCount = static_cast<std::size_t>(nodes[0] * nodes[1] * nodes[2]);
-        for (std::size_t n = 0; n < nodeCount; ++n)
+        for (int read = 0; read < 2; ++read)
         {
-            double sums[nq];
-            window.nodeTotal(n, sums);
-            for (std::size_t q = 0; q < nq; ++q)
+            for (std::size_t n = 0; n < nodeCount; ++n)
             {
-                double expected = 0.0;
-                for (const auto& s : history) expected += s[n * nq + q];
-                ASSERT_EQ(sums[q], expected) << "step " << step << " node " << n << " quantity " << q;
+                double sums[nq];
+                window.nodeTotal(n, sums);
+                for (std::size_t q = 0; q < nq; ++q)
+                {
+                    double expected = 0.0;
+                    for (const auto& s : history) expected += s[n * nq + q];
+                    ASSERT_EQ(sums[q], expected)
+                        << "step " << step << " read " << read << " node " << n << " quantity " << q;
+                }
             }
         }
         if (step % 2 == 1)
@@ -113,4 +118,37 @@ TEST(AveragingWindow, RestoredWindowGivesTheSameTotals)
         for (int q = 0; q < nq; ++q) EXPECT_EQ(a[q], b[q]);
     }
     EXPECT_TRUE(continuous.total() == restored.total());
+}
+
+// A window restored from a state of fewer committed steps than it had: the node totals it
+// kept from its own later steps must not be taken for the restored window's.
+TEST(AveragingWindow, RestoreForgetsTheNodeTotalsOfTheWindowsOwnSteps)
+{
+    std::mt19937 rng(23);
+    const std::size_t nodeCount = static_cast<std::size_t>(nodes[0] * nodes[1] * nodes[2]);
+    IndexBox whole;
+    whole.lo = {0, 0, 0};
+    whole.hi = {nodes[0] - 1, nodes[1] - 1, nodes[2] - 1};
+    AveragingWindow ahead(nodes, nq, 3);
+    for (int s = 0; s < 8; ++s)
+    {
+        ahead.push(randomStep(whole, rng), whole);
+        double sums[nq];
+        for (std::size_t n = 0; n < nodeCount; ++n) ahead.nodeTotal(n, sums);
+    }
+    AveragingWindow behind(nodes, nq, 3);
+    for (int s = 0; s < 7; ++s) behind.push(randomStep(whole, rng), whole);
+
+    // ahead goes back to step 7 of another history; the same step 8 enters both
+    ahead.restore(behind.save());
+    const std::vector<double> next = randomStep(whole, rng);
+    ahead.push(next, whole);
+    behind.push(next, whole);
+    for (std::size_t n = 0; n < nodeCount; ++n)
+    {
+        double a[nq], b[nq];
+        ahead.nodeTotal(n, a);
+        behind.nodeTotal(n, b);
+        for (int q = 0; q < nq; ++q) ASSERT_EQ(a[q], b[q]) << "node " << n << " quantity " << q;
+    }
 }
