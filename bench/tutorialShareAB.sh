@@ -7,7 +7,12 @@
 #
 # Usage: bench/tutorialShareAB.sh [-parallel] [-rounds N] [-refine R] [-keep DIR] REV...
 #   REV        a git revision (built from a worktree into DIR/lib_<REV>), or
-#              "work": the library of the working tree, as ./Allwmake built it
+#              "work": the library of the working tree, as ./Allwmake built it, or
+#              "none": the case without the dropletFiber function object (removed
+#              from the copy's controlDict for that run); then the marginal cost
+#              of each build is printed too, (T_build - T_none) / T_build of the
+#              solver's ExecutionTime per round: what the coupling really adds,
+#              including the work it shares with the cloud (the point field of U)
 #   -parallel  2 ranks instead of serial
 #   -rounds N  runs per build (default 3)
 #   -refine R  the scratch copy's CFD mesh refined R times in x and y (25R x 75R
@@ -53,6 +58,7 @@ echo "scratch: $scratch"
 for rev in "${revs[@]}"; do
     lib="$scratch/lib_$rev"
     mkdir -p "$lib"
+    [ "$rev" = none ] && continue
     if [ "$rev" = work ]; then
         cp "$FOAM_USER_LIBBIN/libdropletFiber.so" "$lib/"
         continue
@@ -89,12 +95,24 @@ cp -r "$root/tutorials/channelSpray" "$dir"
 )
 app="$(foamDictionary -entry application -value "$dir/system/controlDict")"
 
-declare -A shares
+# The controlDict with and without the coupling (foamDictionary -remove edits in place)
+cp "$dir/system/controlDict" "$dir/system/controlDict.full"
+cp "$dir/system/controlDict" "$dir/system/controlDict.none"
+foamDictionary -entry functions/dropletFiber -remove "$dir/system/controlDict.none" > /dev/null
+[ -s "$dir/system/controlDict.none" ] && ! grep -q dropletFiberCollision "$dir/system/controlDict.none" || {
+    echo "tutorialShareAB: could not remove the dropletFiber function object" >&2; exit 1; }
+
+declare -A shares executions
 for round in $(seq 1 "$rounds"); do
     for rev in "${revs[@]}"; do
         (
             cd "$dir"
             rm -rf postProcessing processor*/0.[0-9]* processor*/[1-9]* 0.[0-9]* [1-9]*
+            if [ "$rev" = none ]; then
+                cp system/controlDict.none system/controlDict
+            else
+                cp system/controlDict.full system/controlDict
+            fi
             libs="$scratch/lib_$rev:$LD_LIBRARY_PATH"
             if [ "$parallel" = true ]; then
                 mpirun -np 2 -x LD_LIBRARY_PATH="$libs" "$app" -parallel > "log.$app" 2>&1
@@ -102,14 +120,34 @@ for round in $(seq 1 "$rounds"); do
                 LD_LIBRARY_PATH="$libs" "$app" > "log.$app" 2>&1
             fi
         ) || { echo "tutorialShareAB: run of $rev failed, see $dir/log.$app" >&2; exit 1; }
+        execution="$(sed -n 's/^ExecutionTime = \([0-9.eE+-]*\) s.*/\1/p' "$dir/log.$app" | tail -1)"
+        executions[$rev]="${executions[$rev]:-} $execution"
+        if [ "$rev" = none ]; then
+            echo "none round $round: ExecutionTime $execution s (no coupling)"
+            continue
+        fi
         line="$(python3 "$here/tutorialShare.py" "$dir" --label "$rev round $round" | grep "function object total")"
         echo "$rev round $round: $line"
         share="$(echo "$line" | sed -n 's/.*= \([0-9.]*\) % of ExecutionTime.*/\1/p')"
         shares[$rev]="${shares[$rev]:-} $share"
     done
 done
+cp "$dir/system/controlDict.full" "$dir/system/controlDict"
 echo
 echo "share of ExecutionTime per build ($([ "$parallel" = true ] && echo "2 ranks" || echo serial), $rounds rounds):"
 for rev in "${revs[@]}"; do
+    [ "$rev" = none ] && continue
     echo "  $rev:${shares[$rev]} %"
 done
+if [ -n "${executions[none]:-}" ]; then
+    echo "marginal cost, (ExecutionTime - ExecutionTime without the coupling) / ExecutionTime, per round:"
+    for rev in "${revs[@]}"; do
+        [ "$rev" = none ] && continue
+        echo "  $rev: $(python3 -c "
+import sys
+full = [float(x) for x in sys.argv[1].split()]
+none = [float(x) for x in sys.argv[2].split()]
+print(' '.join('%.1f' % (100 * (f - n) / f) for f, n in zip(full, none)), '%')
+" "${executions[$rev]}" "${executions[none]}")"
+    done
+fi
