@@ -13,7 +13,7 @@ prepareCaseCopy "$1" "$2"
 foamDictionary system/controlDict -entry functions/dropletFiber/gather -add writeObjects > /dev/null
 "$(foamDictionary -entry application -value system/controlDict)" > log.generic 2>&1
 status=$?
-check "[ $status -eq 0 ]" "the run with the debug switch failed ($status), see $2/log.generic"
+check "[ $status -eq 0 ]" "the run with 'gather writeObjects' failed ($status), see $2/log.generic"
 check 'grep -q "gather writeObjects: every cloud through" log.generic' \
     "the entry did not take effect (no generic-route line in the log)"
 check 'grep -q "gather direct: kinematic parcel types read directly" "$(dirname "$defaultTable")/../../../log.pimpleFoam"' \

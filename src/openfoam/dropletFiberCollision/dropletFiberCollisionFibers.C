@@ -10,7 +10,7 @@ Description
 
 #include "dropletFiberCollision.H"
 #include "fiberDistribution.H"
-#include "PstreamReduceOps.H"
+#include "Pstream.H"
 
 #include <stdexcept>
 #include <string>
