@@ -37,7 +37,7 @@ TEST(Capture, MomentumOfFiberAndDropletsConserved)
             injectedMass += source.mass;
             scale += source.momentum.norm();
         }
-        const StepReport report = solver.step(fibers, 1e-4, AirSampler(), &capture);
+        const StepReport report = solver.step(fibers, 1e-4, AirSample(), &capture);
         worstSegmentError = std::max(worstSegmentError, report.maxSegmentLengthError);
     }
     const double momentumError = (fibers[0].momentum() - p0 - injected).norm() / scale;
@@ -61,7 +61,7 @@ TEST(Capture, ImmobileFiberCollectsMassOnly)
     CaptureSources capture(1, std::vector<SegmentSource>(10, SegmentSource{1e-12, Eigen::Vector3d(0, 0, -1e-12)}));
     FiberSolver solver{FiberSolverSettings()};
     const Eigen::Matrix3Xd before = fibers[0].positions();
-    const StepReport report = solver.step(fibers, 1e-3, AirSampler(), &capture);
+    const StepReport report = solver.step(fibers, 1e-3, AirSample(), &capture);
     EXPECT_EQ(report.fibersAdvanced, 0);
     EXPECT_NEAR(fibers[0].capturedMass(), 1e-11, 1e-24);
     EXPECT_EQ(fibers[0].positions(), before);
