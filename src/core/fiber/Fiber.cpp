@@ -169,10 +169,10 @@ Eigen::VectorXd Fiber::lineDensityAtPoints() const
 
 double Fiber::totalMass() const
 {
-    return state_.material.baseLineDensity() * length() + capturedMass();
+    return state_.material.baseLineDensity() * length() + totalCapturedMass();
 }
 
-double Fiber::capturedMass() const { return state_.capturedMass.sum(); }
+double Fiber::totalCapturedMass() const { return state_.capturedMass.sum(); }
 
 Eigen::Vector3d Fiber::centreOfMass() const
 {

@@ -58,7 +58,7 @@ public:
     void nodalLengths(Eigen::VectorXd& w) const;
     Eigen::VectorXd lineDensityAtPoints() const;  // sigma [kg/m] per point
     double totalMass() const;
-    double capturedMass() const;
+    double totalCapturedMass() const;  // all segments [kg]
 
     // Kinematics.
     Eigen::Vector3d centreOfMass() const;

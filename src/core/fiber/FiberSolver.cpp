@@ -163,7 +163,7 @@ void FiberSolver::addDiagnostics(const std::vector<Fiber>& fibers, StepReport& r
         report.elasticEnergy += d.elasticEnergy;
         report.gravitationalEnergy += d.gravitationalEnergy;
         report.totalMass += d.totalMass;
-        report.capturedMass += d.capturedMass;
+        report.totalCapturedMass += d.totalCapturedMass;
         report.momentum += d.momentum;
         report.maxSegmentLengthError = std::max(report.maxSegmentLengthError, d.maxSegmentLengthError);
     }
