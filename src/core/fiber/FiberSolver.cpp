@@ -42,7 +42,7 @@ void applyCapture(Fiber& fiber, const std::vector<SegmentSource>& sources)
         const SegmentSource& source = sources[j];
         if (source.mass < 0.0) throw std::invalid_argument("capture: negative mass");
         const auto jj = static_cast<Eigen::Index>(j);
-        state.capturedMass(jj) += source.mass;
+        state.segmentCapturedMass(jj) += source.mass;
         pointMomentum.col(jj) += 0.5 * source.momentum;
         pointMomentum.col(jj + 1) += 0.5 * source.momentum;
     }
