@@ -68,7 +68,6 @@ int main(int argc, char** argv)
     }
     FiberSolverSettings settings;
     settings.drag.model = DragModelType::slenderBodyOseen;
-    const AirSampler air = uniformAir(Eigen::Vector3d(0.5, 0.2, 0.0), 1.2, 1.8e-5);
     const double dt = 1e-3;
 
     std::printf("== fiberScalingBench: FiberSolver::step, dt = %g s ==\n", dt);
@@ -87,6 +86,7 @@ int main(int argc, char** argv)
         {
             const double totalPoints = static_cast<double>(fibersN) * pointsN;
             std::vector<Fiber> fibers = makeFibers(fibersN, pointsN);
+            const AirSample air = uniformAir(fibers, Eigen::Vector3d(0.5, 0.2, 0.0), 1.2, 1.8e-5);
             FiberSolver solver(settings);
             const auto warm = bench::Clock::now();
             solver.step(fibers, dt, air); // warm-up

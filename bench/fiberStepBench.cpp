@@ -46,7 +46,6 @@ int main()
 {
     FiberSolverSettings settings;
     settings.drag.model = DragModelType::slenderBodyOseen;
-    const AirSampler air = uniformAir(Eigen::Vector3d(0.5, 0.2, 0.0), 1.2, 1.8e-5);
     const double dt = 1e-3;
     const std::vector<int> fiberCounts{1, 10, 100, 1000};
     const std::vector<int> pointCounts{20, 50, 100, 200};
@@ -60,6 +59,7 @@ int main()
             const int fibersN = fiberCounts[a], pointsN = pointCounts[b];
             const long totalPoints = static_cast<long>(fibersN) * pointsN;
             std::vector<Fiber> fibers = makeFibers(fibersN, pointsN);
+            const AirSample air = uniformAir(fibers, Eigen::Vector3d(0.5, 0.2, 0.0), 1.2, 1.8e-5);
             FiberSolver solver(settings);
             solver.step(fibers, dt, air);  // warm-up (first-touch allocations)
             // about 4e5 point-steps per configuration, at least 3 steps

@@ -91,7 +91,6 @@ int main(int argc, char** argv)
     settings.gravity = Eigen::Vector3d(0.0, -9.81, 0.0);
     settings.drag.model = DragModelType::slenderBodyOseen;
     const double dt = 5e-4;
-    const AirSampler air = tutorialAir;
 
     const std::vector<Fiber> initial = tutorialFibers();
     long pointCount = 0;
@@ -105,7 +104,7 @@ int main(int argc, char** argv)
         [&] {
             for (int k = 0; k < steps; ++k)
             {
-                const StepReport report = solver.step(fibers, dt, air);
+                const StepReport report = solver.step(fibers, dt, tutorialAir(airSamplePoints(fibers)));
                 subSteps += report.subSteps;
                 newton += report.newtonIterations;
                 fiberSteps += report.fibersAdvanced;

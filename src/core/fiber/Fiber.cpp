@@ -22,7 +22,7 @@ Fiber::Fiber(const Eigen::Matrix3Xd& points, const FiberMaterial& material,
     for (Eigen::Index j = 0; j + 1 < n; ++j) {
         state_.restLengths(j) = (points.col(j + 1) - points.col(j)).norm();
     }
-    state_.capturedMass = Eigen::VectorXd::Zero(n - 1);
+    state_.segmentCapturedMass = Eigen::VectorXd::Zero(n - 1);
     state_.tension = Eigen::VectorXd::Zero(n - 1);
     state_.externalForce = Eigen::Matrix3Xd::Zero(3, n);
     state_.material = material;
@@ -70,13 +70,13 @@ void Fiber::validate() const
     if (state_.velocities.cols() != n) fail("velocities: wrong number of points");
     if (state_.externalForce.cols() != n) fail("externalForce: wrong number of points");
     if (state_.restLengths.size() != n - 1) fail("restLengths: wrong number of segments");
-    if (state_.capturedMass.size() != n - 1) fail("capturedMass: wrong number of segments");
+    if (state_.segmentCapturedMass.size() != n - 1) fail("segmentCapturedMass: wrong number of segments");
     if (state_.tension.size() != n - 1) fail("tension: wrong number of segments");
     if (!(state_.restLengths.minCoeff() > 0.0)) fail("zero-length segment (coincident points)");
     if (!(state_.material.radius > 0.0)) fail("radius must be > 0");
     if (!(state_.material.density > 0.0)) fail("density must be > 0");
     if (!(state_.material.youngsModulus >= 0.0)) fail("Young's modulus must be >= 0");
-    if (state_.capturedMass.minCoeff() < 0.0) fail("negative captured mass");
+    if (state_.segmentCapturedMass.minCoeff() < 0.0) fail("negative captured mass");
     for (const EndCondition* end : {&state_.startEnd, &state_.endEnd}) {
         if (end->type == EndType::clamped && std::abs(end->clampDirection.norm() - 1.0) > 1e-12) {
             fail("clamp direction must be a unit vector");
@@ -135,7 +135,7 @@ void spreadHalvesToPoints(Eigen::Index pointCount, SegmentValue segmentValue, Ei
 
 double Fiber::segmentMass(Eigen::Index j) const
 {
-    return state_.material.baseLineDensity() * state_.restLengths(j) + state_.capturedMass(j);
+    return state_.material.baseLineDensity() * state_.restLengths(j) + state_.segmentCapturedMass(j);
 }
 
 Eigen::VectorXd Fiber::pointMasses() const
@@ -169,10 +169,10 @@ Eigen::VectorXd Fiber::lineDensityAtPoints() const
 
 double Fiber::totalMass() const
 {
-    return state_.material.baseLineDensity() * length() + capturedMass();
+    return state_.material.baseLineDensity() * length() + totalCapturedMass();
 }
 
-double Fiber::capturedMass() const { return state_.capturedMass.sum(); }
+double Fiber::totalCapturedMass() const { return state_.segmentCapturedMass.sum(); }
 
 Eigen::Vector3d Fiber::centreOfMass() const
 {

@@ -29,7 +29,7 @@ public:
     const Eigen::Matrix3Xd& velocities() const { return state_.velocities; }
     const Eigen::VectorXd& restLengths() const { return state_.restLengths; }
     const Eigen::VectorXd& tension() const { return state_.tension; }
-    const Eigen::VectorXd& capturedMassPerSegment() const { return state_.capturedMass; }
+    const Eigen::VectorXd& capturedMassPerSegment() const { return state_.segmentCapturedMass; }
     const FiberMaterial& material() const { return state_.material; }
     const EndCondition& startEnd() const { return state_.startEnd; }
     const EndCondition& endEnd() const { return state_.endEnd; }
@@ -58,7 +58,7 @@ public:
     void nodalLengths(Eigen::VectorXd& w) const;
     Eigen::VectorXd lineDensityAtPoints() const;  // sigma [kg/m] per point
     double totalMass() const;
-    double capturedMass() const;
+    double totalCapturedMass() const;  // all segments [kg]
 
     // Kinematics.
     Eigen::Vector3d centreOfMass() const;

@@ -16,7 +16,7 @@ FiberDiagnostics diagnose(const Fiber& fiber, const Eigen::Vector3d& gravity)
     }
     d.elasticEnergy = bendingEnergy(bendingJoints(fiber), x);
     d.totalMass = fiber.totalMass();
-    d.capturedMass = fiber.capturedMass();
+    d.totalCapturedMass = fiber.totalCapturedMass();
     d.momentum = v * m;
     d.centreOfMass = x * m / m.sum();
     d.maxSegmentLengthError = fiber.maxSegmentLengthError();

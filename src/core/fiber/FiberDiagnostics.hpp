@@ -11,7 +11,7 @@ struct FiberDiagnostics {
     double elasticEnergy = 0.0;
     double gravitationalEnergy = 0.0;
     double totalMass = 0.0;
-    double capturedMass = 0.0;
+    double totalCapturedMass = 0.0;
     Eigen::Vector3d momentum = Eigen::Vector3d::Zero();
     Eigen::Vector3d centreOfMass = Eigen::Vector3d::Zero();
     double maxSegmentLengthError = 0.0;

@@ -42,7 +42,7 @@ void applyCapture(Fiber& fiber, const std::vector<SegmentSource>& sources)
         const SegmentSource& source = sources[j];
         if (source.mass < 0.0) throw std::invalid_argument("capture: negative mass");
         const auto jj = static_cast<Eigen::Index>(j);
-        state.capturedMass(jj) += source.mass;
+        state.segmentCapturedMass(jj) += source.mass;
         pointMomentum.col(jj) += 0.5 * source.momentum;
         pointMomentum.col(jj + 1) += 0.5 * source.momentum;
     }
@@ -140,7 +140,36 @@ void FiberSolver::advanceFiber(Fiber& fiber, std::size_t fiberIndex, double dt, 
     report.maxSubStepsOfAFiber = std::max(report.maxSubStepsOfAFiber, accepted);
 }
 
-StepReport FiberSolver::step(std::vector<Fiber>& fibers, double dt, const AirSampler& air,
+const AirSample* FiberSolver::airForDrag(const AirSampleLayout& layout, const AirSample& air) const
+{
+    if (settings_.drag.model == DragModelType::none) return nullptr;
+    const Eigen::Index pointTotal = layout.pointCount;
+    if (pointTotal == 0) return nullptr;
+    if (air.pointCount() != pointTotal || air.density.size() != pointTotal ||
+        air.viscosity.size() != pointTotal) {
+        throw std::invalid_argument("FiberSolver::step: drag needs the air at the " +
+                                    std::to_string(pointTotal) +
+                                    " points of airSamplePoints, the sample has " +
+                                    std::to_string(air.pointCount()));
+    }
+    return &air;
+}
+
+void FiberSolver::addDiagnostics(const std::vector<Fiber>& fibers, StepReport& report) const
+{
+    for (const Fiber& fiber : fibers) {
+        const FiberDiagnostics d = diagnose(fiber, settings_.gravity);
+        report.kineticEnergy += d.kineticEnergy;
+        report.elasticEnergy += d.elasticEnergy;
+        report.gravitationalEnergy += d.gravitationalEnergy;
+        report.totalMass += d.totalMass;
+        report.totalCapturedMass += d.totalCapturedMass;
+        report.momentum += d.momentum;
+        report.maxSegmentLengthError = std::max(report.maxSegmentLengthError, d.maxSegmentLengthError);
+    }
+}
+
+StepReport FiberSolver::step(std::vector<Fiber>& fibers, double dt, const AirSample& air,
                              const CaptureSources* capture, const std::vector<std::size_t>* fiberNumbers)
 {
     if (!(dt > 0.0)) throw std::invalid_argument("FiberSolver::step: dt must be > 0");
@@ -158,48 +187,16 @@ StepReport FiberSolver::step(std::vector<Fiber>& fibers, double dt, const AirSam
         }
     }
 
-    // One batched air sample for all movable fibers.
-    std::vector<Eigen::Index> firstPoint(fibers.size(), 0);
-    Eigen::Index pointTotal = 0;
-    for (std::size_t f = 0; f < fibers.size(); ++f) {
-        firstPoint[f] = pointTotal;
-        if (!fibers[f].immobile()) pointTotal += fibers[f].pointCount();
-    }
-    AirSample airSample;
-    const AirSample* airPointer = nullptr;
-    if (settings_.drag.model != DragModelType::none && pointTotal > 0) {
-        if (!air) throw std::invalid_argument("FiberSolver::step: drag needs an air sampler");
-        Eigen::Matrix3Xd points(3, pointTotal);
-        for (std::size_t f = 0; f < fibers.size(); ++f) {
-            if (!fibers[f].immobile()) {
-                points.middleCols(firstPoint[f], fibers[f].pointCount()) = fibers[f].positions();
-            }
-        }
-        airSample = air(points);
-        if (airSample.velocity.cols() != pointTotal || airSample.density.size() != pointTotal ||
-            airSample.viscosity.size() != pointTotal) {
-            throw std::invalid_argument("FiberSolver::step: air sample has the wrong size");
-        }
-        airPointer = &airSample;
-    }
-
+    const AirSampleLayout layout = airSampleLayout(fibers);
+    const AirSample* airPointer = airForDrag(layout, air);
     for (std::size_t f = 0; f < fibers.size(); ++f) {
         if (fibers[f].immobile()) continue;
         advanceFiber(fibers[f], fiberNumbers != nullptr ? (*fiberNumbers)[f] : f, dt, airPointer,
-                     firstPoint[f], report);
+                     layout.firstPoint[f], report);
         ++report.fibersAdvanced;
     }
 
-    for (const Fiber& fiber : fibers) {
-        const FiberDiagnostics d = diagnose(fiber, settings_.gravity);
-        report.kineticEnergy += d.kineticEnergy;
-        report.elasticEnergy += d.elasticEnergy;
-        report.gravitationalEnergy += d.gravitationalEnergy;
-        report.totalMass += d.totalMass;
-        report.capturedMass += d.capturedMass;
-        report.momentum += d.momentum;
-        report.maxSegmentLengthError = std::max(report.maxSegmentLengthError, d.maxSegmentLengthError);
-    }
+    addDiagnostics(fibers, report);
     return report;
 }
 

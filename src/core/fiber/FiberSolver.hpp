@@ -4,8 +4,8 @@
 //      points (half each) with the droplets' momentum - an inelastic merge that
 //      conserves momentum - followed by the impulsive tension response (velocity
 //      projection) that keeps the fiber inextensible;
-//   2. one batched call of the air sampler for all points of all movable fibers
-//      (skipped when the drag model is none);
+//   2. the air at all points of all movable fibers, sampled by the caller in one
+//      batch before the step (see AirSample; not used when the drag model is none);
 //   3. each movable fiber independently: implicit sub-steps (ImplicitFiberStep),
 //      as many as its own accuracy needs (see FiberSolverSettings).
 // Fibers are processed one after another in list order; no randomness, no threads:
@@ -31,16 +31,22 @@ public:
 
     const FiberSolverSettings& settings() const { return settings_; }
 
+    // air: the air at airSamplePoints(fibers) (AirSample.hpp); may be empty when the
+    // drag model is none or no fiber is movable.
     // capture: nullptr, or one list per fiber (empty, or one SegmentSource per segment).
     // Throws std::invalid_argument on inconsistent input and std::runtime_error when
     // a fiber cannot be advanced even at the smallest allowed sub-step.
     // fiberNumbers: nullptr, or the number of each fiber in the messages (a caller that
     // steps a subset of its fibers names them by their place in the whole list).
-    StepReport step(std::vector<Fiber>& fibers, double dt, const AirSampler& air,
+    StepReport step(std::vector<Fiber>& fibers, double dt, const AirSample& air,
                     const CaptureSources* capture = nullptr,
                     const std::vector<std::size_t>* fiberNumbers = nullptr);
 
 private:
+    // The sample the drag uses (nullptr: no drag); checks it fits the fibers' layout.
+    const AirSample* airForDrag(const AirSampleLayout& layout, const AirSample& air) const;
+    // Energies, mass, momentum and constraint error of all fibers into report.
+    void addDiagnostics(const std::vector<Fiber>& fibers, StepReport& report) const;
     void advanceFiber(Fiber& fiber, std::size_t fiberIndex, double dt,
                       const AirSample* air, Eigen::Index firstPoint, StepReport& report);
     // dragIsCurrent: drag_ was evaluated for the fiber's present state (saves doing

@@ -3,7 +3,7 @@
 // never having stopped (the solver keeps no other state).
 //
 // Mass is stored per segment: the segment's base mass is rho_F pi r_F^2 l_j (from the
-// material and the rest length) and capturedMass_j is the droplet mass it has
+// material and the rest length) and segmentCapturedMass_j is the droplet mass it has
 // collected. Point masses are lumped: half of each adjacent segment.
 #pragma once
 
@@ -18,7 +18,7 @@ struct FiberState {
     Eigen::Matrix3Xd positions;       // x_i [m], n points
     Eigen::Matrix3Xd velocities;      // v_i [m/s]
     Eigen::VectorXd restLengths;      // l_j [m], n-1 segments (held fixed: inextensible)
-    Eigen::VectorXd capturedMass;     // [kg] per segment
+    Eigen::VectorXd segmentCapturedMass;  // [kg] per segment
     Eigen::VectorXd tension;          // T_j [N] per segment (last step's multipliers)
     Eigen::Matrix3Xd externalForce;   // [N] per point, applied every step until changed
     FiberMaterial material;

@@ -37,10 +37,17 @@ ImplicitFiberStep::ImplicitFiberStep()
 void ImplicitFiberStep::prepare(const Fiber& fiber, double h, const PointDrag& drag,
                                 const FiberSolverSettings& settings)
 {
+    takeFiber(fiber, h, settings.theta);
+    setScales();
+    setConstantTerms(fiber, drag, settings.gravity);
+    resizeWork();
+    buildConstantJacobian();
+}
+
+void ImplicitFiberStep::takeFiber(const Fiber& fiber, double h, double theta)
+{
     const FiberState& state = fiber.state();
     const Eigen::Index n = fiber.pointCount();
-    const Eigen::Index s = n - 1;
-    const double theta = settings.theta;
     n_ = n;
     h_ = h;
     theta_ = theta;
@@ -59,19 +66,33 @@ void ImplicitFiberStep::prepare(const Fiber& fiber, double h, const PointDrag& d
     held_.resize(static_cast<std::size_t>(n));
     for (Eigen::Index i = 0; i < n; ++i) held_[static_cast<std::size_t>(i)] = fiber.pointHeld(i);
 
+    // First iterate: every point moves on at its present (held: prescribed) velocity.
     y_.resize(3, n);
     for (Eigen::Index i = 0; i < n; ++i) {
         y_.col(i) = xn_.col(i) + h * (held(i) ? fiber.heldPointVelocity(i) : Eigen::Vector3d(vn.col(i)));
     }
     lambda_ = state.tension;
+}
 
+void ImplicitFiberStep::setScales()
+{
+    const Eigen::Index n = n_;
+    const Eigen::Index s = n - 1;
+    const double h = h_, theta = theta_;
     rowScale_.resize(n);
     lambdaScale_.resize(s);
     for (Eigen::Index i = 0; i < n; ++i) rowScale_(i) = theta * h / m_(i);
     for (Eigen::Index j = 0; j < s; ++j) lambdaScale_(j) = 0.5 * (m_(j) + m_(j + 1)) / (theta * h * h);
+}
 
-    // Terms of the residual that do not change during the Newton iteration.
-    const Eigen::Vector3d g = settings.gravity;
+void ImplicitFiberStep::setConstantTerms(const Fiber& fiber, const PointDrag& drag,
+                                         const Eigen::Vector3d& gravity)
+{
+    const FiberState& state = fiber.state();
+    const Eigen::Index n = n_;
+    const double h = h_;
+    const Eigen::Matrix3Xd& vn = *vn_;
+    const Eigen::Vector3d g = gravity;
     load_.resize(3, n);
     loadNorm_.resize(n);
     xnNorm_.resize(n);
@@ -92,9 +113,13 @@ void ImplicitFiberStep::prepare(const Fiber& fiber, double h, const PointDrag& d
             airNorm_(i) = drag.airVelocity->col(i).norm();
         }
     }
+}
 
-    const Eigen::Index size = 4 * n - 1;
-    rhs_.resize(size);
+void ImplicitFiberStep::resizeWork()
+{
+    const Eigen::Index n = n_;
+    const Eigen::Index s = n - 1;
+    rhs_.resize(4 * n - 1);
     residual_.resize(3, n);
     magnitude_.resize(n);
     noise_.resize(n);
@@ -107,30 +132,25 @@ void ImplicitFiberStep::prepare(const Fiber& fiber, double h, const PointDrag& d
     wt_.resize(n);
     segment_.resize(3, s);
     dy_.resize(3, s);
+}
 
-    // The Jacobian's constant part, in the order the full assembly adds it: mass,
-    // then bending (linear force: constant coefficients), then the rows of held
-    // points and of segments between two held points (identity, nothing else).
+void ImplicitFiberStep::buildConstantJacobian()
+{
+    const Eigen::Index n = n_;
+    const Eigen::Index s = n - 1;
+    const double h = h_, theta = theta_;
+
+    // In the order the full assembly adds it: mass, then bending (linear force:
+    // constant coefficients), then the rows of held points and of segments between
+    // two held points (identity, nothing else).
     BandedLU& J = constantJacobian_;
-    J.reset(size, bandwidth, bandwidth);
+    J.reset(4 * n - 1, bandwidth, bandwidth);
     for (Eigen::Index i = 0; i < n; ++i) {
         if (held(i)) continue;
         const double diagonal = rowScale_(i) * (m_(i) / (theta * h));
         for (int a = 0; a < 3; ++a) J.add(pointRow(i) + a, pointRow(i) + a, diagonal);
     }
-    for (const BendingJoint& joint : joints_) {
-        for (int a = 0; a < joint.pointCount; ++a) {
-            const Eigen::Index p = joint.point[static_cast<std::size_t>(a)];
-            const double ca = joint.coefficient[static_cast<std::size_t>(a)];
-            for (int c = 0; c < joint.pointCount; ++c) {
-                const Eigen::Index q = joint.point[static_cast<std::size_t>(c)];
-                if (held(p) || held(q)) continue;
-                const double cc = joint.coefficient[static_cast<std::size_t>(c)];
-                const double value = rowScale_(p) * (h * theta * joint.stiffness * ca * cc);
-                for (int b = 0; b < 3; ++b) J.add(pointRow(p) + b, pointRow(q) + b, value);
-            }
-        }
-    }
+    addBendingJacobian(J);
     for (Eigen::Index j = 0; j < s; ++j) {
         if (held(j) && held(j + 1)) J.add(tensionRow(j), tensionRow(j), 1.0);
     }
@@ -150,25 +170,49 @@ void ImplicitFiberStep::prepare(const Fiber& fiber, double h, const PointDrag& d
     }
 }
 
+void ImplicitFiberStep::addBendingJacobian(BandedLU& J) const
+{
+    const double h = h_, theta = theta_;
+    for (const BendingJoint& joint : joints_) {
+        for (int a = 0; a < joint.pointCount; ++a) {
+            const Eigen::Index p = joint.point[static_cast<std::size_t>(a)];
+            const double ca = joint.coefficient[static_cast<std::size_t>(a)];
+            for (int c = 0; c < joint.pointCount; ++c) {
+                const Eigen::Index q = joint.point[static_cast<std::size_t>(c)];
+                if (held(p) || held(q)) continue;
+                const double cc = joint.coefficient[static_cast<std::size_t>(c)];
+                const double value = rowScale_(p) * (h * theta * joint.stiffness * ca * cc);
+                for (int b = 0; b < 3; ++b) J.add(pointRow(p) + b, pointRow(q) + b, value);
+            }
+        }
+    }
+}
+
 template <bool withSizes>
 void ImplicitFiberStep::evaluateResidual(const PointDrag& drag, double& constraintError)
 {
-    const Eigen::Index n = n_;
-    const Eigen::Index s = n - 1;
-    const double h = h_, theta = theta_;
-    const Eigen::Matrix3Xd& vn = *vn_;
-    const Eigen::VectorXd& l = *l_;
-
-    xTheta_ = xn_ + theta * (y_ - xn_);
-    vTheta_ = (y_ - xn_) / h;
+    xTheta_ = xn_ + theta_ * (y_ - xn_);
+    vTheta_ = (y_ - xn_) / h_;
     residual_.setZero();
     if (withSizes) {
-        for (Eigen::Index i = 0; i < n; ++i) xThetaNorm_(i) = xTheta_.col(i).norm();
+        for (Eigen::Index i = 0; i < n_; ++i) xThetaNorm_(i) = xTheta_.col(i).norm();
         magnitude_.setZero();
         noise_.setZero();
     }
+    addInertiaAndLoad<withSizes>();
+    addBendingForce<withSizes>();
+    if (drag.airVelocity != nullptr) addDragForce<withSizes>(drag);
+    addTensionForce<withSizes>();
+    constraintError = evaluateConstraints();
+    scaleResidualRows();
+}
 
-    for (Eigen::Index i = 0; i < n; ++i) {
+template <bool withSizes>
+void ImplicitFiberStep::addInertiaAndLoad()
+{
+    const double h = h_, theta = theta_;
+    const Eigen::Matrix3Xd& vn = *vn_;
+    for (Eigen::Index i = 0; i < n_; ++i) {
         if (held(i)) continue;
         const Eigen::Vector3d inertia = m_(i) * (vTheta_.col(i) - vn.col(i)) / theta;
         residual_.col(i) += inertia - load_.col(i);
@@ -177,6 +221,12 @@ void ImplicitFiberStep::evaluateResidual(const PointDrag& drag, double& constrai
             noise_(i) += m_(i) * (y_.col(i).norm() + xnNorm_(i) + h * vnNorm_(i)) / (theta * h);
         }
     }
+}
+
+template <bool withSizes>
+void ImplicitFiberStep::addBendingForce()
+{
+    const double h = h_;
     for (std::size_t k = 0; k < joints_.size(); ++k) {
         const BendingJoint& joint = joints_[k];
         const Eigen::Vector3d b = jointVector(joint, xTheta_);
@@ -200,31 +250,44 @@ void ImplicitFiberStep::evaluateResidual(const PointDrag& drag, double& constrai
             }
         }
     }
-    if (drag.airVelocity != nullptr) {
-        for (Eigen::Index i = 0; i < n; ++i) {
-            if (held(i)) continue;
-            const double cn = cn_(i), ct = ct_(i);
-            if (cn == 0.0 && ct == 0.0) continue;
-            Eigen::Index hi, lo;
-            tangentStencil(i, n, hi, lo);
-            const Eigen::Vector3d chord = xTheta_.col(hi) - xTheta_.col(lo);
-            const double chordLength = chord.norm();
-            const Eigen::Vector3d t = chord / chordLength;
-            const Eigen::Vector3d w = drag.airVelocity->col(i) - vTheta_.col(i);
-            const double wt = t.dot(w);
-            const Eigen::Vector3d force = cn * w + (ct - cn) * wt * t;
-            residual_.col(i) -= h * force;
-            if (withSizes) {
-                magnitude_(i) += h * force.norm();
-                noise_(i) += h * std::max(cn, ct) * (airNorm_(i) + vTheta_.col(i).norm());
-            }
-            tangent_.col(i) = t;
-            relativeAir_.col(i) = w;
-            chordLength_(i) = chordLength;
-            wt_(i) = wt;
+}
+
+template <bool withSizes>
+void ImplicitFiberStep::addDragForce(const PointDrag& drag)
+{
+    const Eigen::Index n = n_;
+    const double h = h_;
+    for (Eigen::Index i = 0; i < n; ++i) {
+        if (held(i)) continue;
+        const double cn = cn_(i), ct = ct_(i);
+        if (cn == 0.0 && ct == 0.0) continue;
+        Eigen::Index hi, lo;
+        tangentStencil(i, n, hi, lo);
+        const Eigen::Vector3d chord = xTheta_.col(hi) - xTheta_.col(lo);
+        const double chordLength = chord.norm();
+        const Eigen::Vector3d t = chord / chordLength;
+        const Eigen::Vector3d w = drag.airVelocity->col(i) - vTheta_.col(i);
+        const double wt = t.dot(w);
+        const Eigen::Vector3d force = cn * w + (ct - cn) * wt * t;
+        residual_.col(i) -= h * force;
+        if (withSizes) {
+            magnitude_(i) += h * force.norm();
+            noise_(i) += h * std::max(cn, ct) * (airNorm_(i) + vTheta_.col(i).norm());
         }
+        // Kept for the Jacobian.
+        tangent_.col(i) = t;
+        relativeAir_.col(i) = w;
+        chordLength_(i) = chordLength;
+        wt_(i) = wt;
     }
-    constraintError = 0.0;
+}
+
+template <bool withSizes>
+void ImplicitFiberStep::addTensionForce()
+{
+    const Eigen::Index s = n_ - 1;
+    const double h = h_;
+    const Eigen::VectorXd& l = *l_;
     for (Eigen::Index j = 0; j < s; ++j) {
         const Eigen::Vector3d d = xTheta_.col(j + 1) - xTheta_.col(j);
         segment_.col(j) = d;
@@ -248,6 +311,15 @@ void ImplicitFiberStep::evaluateResidual(const PointDrag& drag, double& constrai
                 noise_(j + 1) += pullNoise;
             }
         }
+    }
+}
+
+double ImplicitFiberStep::evaluateConstraints()
+{
+    const Eigen::Index s = n_ - 1;
+    const Eigen::VectorXd& l = *l_;
+    double constraintError = 0.0;
+    for (Eigen::Index j = 0; j < s; ++j) {
         if (held(j) && held(j + 1)) {
             rhs_(tensionRow(j)) = 0.0;
             continue;
@@ -259,7 +331,12 @@ void ImplicitFiberStep::evaluateResidual(const PointDrag& drag, double& constrai
         rhs_(tensionRow(j)) = constraintScale_(j) * c;
         constraintError = std::max(constraintError, std::abs(c) / l(j));
     }
-    for (Eigen::Index i = 0; i < n; ++i) {
+    return constraintError;
+}
+
+void ImplicitFiberStep::scaleResidualRows()
+{
+    for (Eigen::Index i = 0; i < n_; ++i) {
         if (held(i)) {
             rhs_.segment<3>(pointRow(i)).setZero();
         } else {
@@ -281,54 +358,70 @@ bool ImplicitFiberStep::residualSmall(double residualTolerance) const
 
 void ImplicitFiberStep::assembleJacobian(const PointDrag& drag)
 {
-    const Eigen::Index n = n_;
-    const Eigen::Index s = n - 1;
+    lu_.assignMatrix(constantJacobian_);
+    if (drag.airVelocity != nullptr) addDragJacobian();
+    addTensionJacobian();
+}
+
+void ImplicitFiberStep::addDragJacobian()
+{
+    BandedLU& J = lu_;
+    for (Eigen::Index i = 0; i < n_; ++i) {
+        if (held(i)) continue;
+        const double cn = cn_(i), ct = ct_(i);
+        if (cn == 0.0 && ct == 0.0) continue;
+        const Eigen::Vector3d t = tangent_.col(i);
+        const double scale = rowScale_(i);
+        // d(-h f)/dy through v_theta = (y - x_n) / h: (c_n I + (c_t - c_n) t t^T)
+        for (int a = 0; a < 3; ++a) {
+            const double outer = (ct - cn) * t(a);
+            for (int b = 0; b < 3; ++b) {
+                const double value = (a == b ? cn : 0.0) + outer * t(b);
+                J.add(pointRow(i) + a, pointRow(i) + b, scale * value);
+            }
+        }
+        if (ct == cn) continue;
+        addDragTangentJacobian(i);
+    }
+}
+
+void ImplicitFiberStep::addDragTangentJacobian(Eigen::Index i)
+{
+    // d(-h f)/dy through the tangent t = chord / |chord| at x_theta:
+    //   df/dchord = (c_t - c_n) / |chord| (wt I + t w^T)(I - t t^T)
+    //             = (c_t - c_n) / |chord| (wt (I - t t^T) + t w_n^T),
+    // w_n = w - wt t (w^T t = wt), written out instead of a matrix product.
+    BandedLU& J = lu_;
+    const double cn = cn_(i), ct = ct_(i);
+    const Eigen::Vector3d t = tangent_.col(i);
+    const double scale = rowScale_(i);
+    Eigen::Index hi, lo;
+    tangentStencil(i, n_, hi, lo);
+    const double wt = wt_(i);
+    const Eigen::Vector3d wn = relativeAir_.col(i) - wt * t;
+    const double dForce = scale * h_ * theta_ * (ct - cn) / chordLength_(i);
+    double block[3][3];  // scale * h theta df/dchord
+    for (int a = 0; a < 3; ++a) {
+        for (int b = 0; b < 3; ++b) {
+            block[a][b] = dForce * (wt * ((a == b ? 1.0 : 0.0) - t(a) * t(b)) + t(a) * wn(b));
+        }
+    }
+    if (!held(hi)) {
+        for (int a = 0; a < 3; ++a)
+            for (int b = 0; b < 3; ++b) J.add(pointRow(i) + a, pointRow(hi) + b, -block[a][b]);
+    }
+    if (!held(lo)) {
+        for (int a = 0; a < 3; ++a)
+            for (int b = 0; b < 3; ++b) J.add(pointRow(i) + a, pointRow(lo) + b, block[a][b]);
+    }
+}
+
+void ImplicitFiberStep::addTensionJacobian()
+{
+    const Eigen::Index s = n_ - 1;
     const double h = h_, theta = theta_;
     const Eigen::VectorXd& l = *l_;
     BandedLU& J = lu_;
-    J.assignMatrix(constantJacobian_);
-
-    if (drag.airVelocity != nullptr) {
-        for (Eigen::Index i = 0; i < n; ++i) {
-            if (held(i)) continue;
-            const double cn = cn_(i), ct = ct_(i);
-            if (cn == 0.0 && ct == 0.0) continue;
-            const Eigen::Vector3d t = tangent_.col(i);
-            const double scale = rowScale_(i);
-            // d(-h f)/dy through v_theta = (y - x_n) / h: (c_n I + (c_t - c_n) t t^T)
-            for (int a = 0; a < 3; ++a) {
-                const double outer = (ct - cn) * t(a);
-                for (int b = 0; b < 3; ++b) {
-                    const double value = (a == b ? cn : 0.0) + outer * t(b);
-                    J.add(pointRow(i) + a, pointRow(i) + b, scale * value);
-                }
-            }
-            if (ct == cn) continue;
-            // ... and through the tangent t = chord / |chord| at x_theta:
-            //   df/dchord = (c_t - c_n) / |chord| (wt I + t w^T)(I - t t^T)
-            //             = (c_t - c_n) / |chord| (wt (I - t t^T) + t w_n^T),
-            // w_n = w - wt t (w^T t = wt), written out instead of a matrix product.
-            Eigen::Index hi, lo;
-            tangentStencil(i, n, hi, lo);
-            const double wt = wt_(i);
-            const Eigen::Vector3d wn = relativeAir_.col(i) - wt * t;
-            const double dForce = scale * h * theta * (ct - cn) / chordLength_(i);
-            double block[3][3];  // scale * h theta df/dchord
-            for (int a = 0; a < 3; ++a) {
-                for (int b = 0; b < 3; ++b) {
-                    block[a][b] = dForce * (wt * ((a == b ? 1.0 : 0.0) - t(a) * t(b)) + t(a) * wn(b));
-                }
-            }
-            if (!held(hi)) {
-                for (int a = 0; a < 3; ++a)
-                    for (int b = 0; b < 3; ++b) J.add(pointRow(i) + a, pointRow(hi) + b, -block[a][b]);
-            }
-            if (!held(lo)) {
-                for (int a = 0; a < 3; ++a)
-                    for (int b = 0; b < 3; ++b) J.add(pointRow(i) + a, pointRow(lo) + b, block[a][b]);
-            }
-        }
-    }
     for (Eigen::Index j = 0; j < s; ++j) {
         const bool heldJ = held(j), heldNext = held(j + 1);
         const double k = h * theta * lambda_(j) / l(j);
@@ -370,41 +463,25 @@ SubStepResult ImplicitFiberStep::advance(Fiber& fiber, double h, const PointDrag
 {
     SubStepResult result;
     prepare(fiber, h, drag, settings);
-    FiberState& state = fiber.mutableState();
-    const Eigen::Index n = n_;
-    const Eigen::Index s = n - 1;
-    const double theta = theta_;
-    const Eigen::VectorXd& l = state.restLengths;
-    const double shortest = l.minCoeff();
+    solve(drag, settings, result);
+    if (!result.converged) return result;
+    result.maxRotation = maxSegmentRotation();
+    accept(fiber);
+    return result;
+}
 
+void ImplicitFiberStep::solve(const PointDrag& drag, const FiberSolverSettings& settings,
+                              SubStepResult& result)
+{
+    const double shortest = l_->minCoeff();
     double lastUpdate = std::numeric_limits<double>::infinity();
     double constraintError = 0.0;
     double previousConstraintError = std::numeric_limits<double>::infinity();
     for (int iteration = 0;; ++iteration) {
         evaluateResidual<false>(drag, constraintError);
-
-        // ---- convergence -----------------------------------------------------------
-        // Segment lengths cannot be computed closer than round-off in the coordinates
-        // (relative to point 0): never ask for better than that.
-        // (sqrt of the largest squared norm: the same bits as the largest norm)
-        const double roundOff = 16.0 * std::numeric_limits<double>::epsilon() *
-                                std::sqrt(y_.colwise().squaredNorm().maxCoeff()) / shortest;
-        const double constraintTarget = std::max(settings.constraintTolerance, roundOff);
-        const bool updateSmall = lastUpdate <= std::max(settings.updateTolerance, roundOff);
-        // The residual test needs the size of every term (a dozen square roots per
-        // point): evaluated again with them only when it decides.
-        bool converged = false;
-        if (constraintError <= constraintTarget) {
-            if (updateSmall) {
-                converged = true;
-            } else {
-                evaluateResidual<true>(drag, constraintError);
-                converged = residualSmall(settings.residualTolerance);
-            }
-        }
-        if (converged) {
+        if (hasConverged(drag, settings, shortest, lastUpdate, constraintError)) {
             result.converged = true;
-            break;
+            return;
         }
         // Stalled at round-off (no more progress, tiny updates): accept if the
         // constraints hold to the hard limit.
@@ -415,37 +492,69 @@ SubStepResult ImplicitFiberStep::advance(Fiber& fiber, double h, const PointDrag
                 result.converged = true;
                 result.loose = true;
             }
-            break;
+            return;
         }
         previousConstraintError = constraintError;
-
-        // ---- Newton update ---------------------------------------------------------
-        assembleJacobian(drag);
-        if (!lu_.factorize()) break;
-        rhs_ = -rhs_;
-        lu_.solveInPlace(rhs_);
-        ++result.iterations;
-        double biggest = 0.0;
-        for (Eigen::Index i = 0; i < n; ++i) {
-            if (held(i)) continue;
-            const Eigen::Vector3d step = rhs_.segment<3>(pointRow(i));
-            y_.col(i) += step;
-            biggest = std::max(biggest, step.norm());
-        }
-        for (Eigen::Index j = 0; j < s; ++j) lambda_(j) += lambdaScale_(j) * rhs_(tensionRow(j));
-        lastUpdate = biggest / shortest;
-        if (!std::isfinite(lastUpdate) || !lambda_.allFinite()) break;
+        if (!newtonUpdate(drag, shortest, lastUpdate, result)) return;
     }
-    if (!result.converged) return result;
+}
 
-    // ---- accept ---------------------------------------------------------------------
-    for (Eigen::Index j = 0; j < s; ++j) {
+bool ImplicitFiberStep::hasConverged(const PointDrag& drag, const FiberSolverSettings& settings,
+                                     double shortest, double lastUpdate, double& constraintError)
+{
+    // Segment lengths cannot be computed closer than round-off in the coordinates
+    // (relative to point 0): never ask for better than that.
+    // (sqrt of the largest squared norm: the same bits as the largest norm)
+    const double roundOff = 16.0 * std::numeric_limits<double>::epsilon() *
+                            std::sqrt(y_.colwise().squaredNorm().maxCoeff()) / shortest;
+    const double constraintTarget = std::max(settings.constraintTolerance, roundOff);
+    const bool updateSmall = lastUpdate <= std::max(settings.updateTolerance, roundOff);
+    if (!(constraintError <= constraintTarget)) return false;  // NaN: not converged
+    if (updateSmall) return true;
+    // The residual test needs the size of every term (a dozen square roots per
+    // point): evaluated again with them only when it decides.
+    evaluateResidual<true>(drag, constraintError);
+    return residualSmall(settings.residualTolerance);
+}
+
+bool ImplicitFiberStep::newtonUpdate(const PointDrag& drag, double shortest, double& lastUpdate,
+                                     SubStepResult& result)
+{
+    assembleJacobian(drag);
+    if (!lu_.factorize()) return false;
+    rhs_ = -rhs_;
+    lu_.solveInPlace(rhs_);
+    ++result.iterations;
+    double biggest = 0.0;
+    for (Eigen::Index i = 0; i < n_; ++i) {
+        if (held(i)) continue;
+        const Eigen::Vector3d step = rhs_.segment<3>(pointRow(i));
+        y_.col(i) += step;
+        biggest = std::max(biggest, step.norm());
+    }
+    for (Eigen::Index j = 0; j < n_ - 1; ++j) lambda_(j) += lambdaScale_(j) * rhs_(tensionRow(j));
+    lastUpdate = biggest / shortest;
+    return std::isfinite(lastUpdate) && lambda_.allFinite();
+}
+
+double ImplicitFiberStep::maxSegmentRotation() const
+{
+    const Eigen::VectorXd& l = *l_;
+    double largest = 0.0;
+    for (Eigen::Index j = 0; j < n_ - 1; ++j) {
         const Eigen::Vector3d before = (xn_.col(j + 1) - xn_.col(j)) / l(j);
         const Eigen::Vector3d after = (y_.col(j + 1) - y_.col(j)) / l(j);
-        result.maxRotation = std::max(result.maxRotation, (after - before).norm());
+        largest = std::max(largest, (after - before).norm());
     }
+    return largest;
+}
+
+void ImplicitFiberStep::accept(Fiber& fiber) const
+{
+    FiberState& state = fiber.mutableState();
+    const double h = h_, theta = theta_;
     const Eigen::Vector3d origin = state.positions.col(0);
-    for (Eigen::Index i = 0; i < n; ++i) {
+    for (Eigen::Index i = 0; i < n_; ++i) {
         if (held(i)) {
             state.velocities.col(i) = fiber.heldPointVelocity(i);
         } else {
@@ -454,7 +563,6 @@ SubStepResult ImplicitFiberStep::advance(Fiber& fiber, double h, const PointDrag
     }
     state.positions = y_.colwise() + origin;
     state.tension = lambda_;
-    return result;
 }
 
 }  // namespace dropletFiber

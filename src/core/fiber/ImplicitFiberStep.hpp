@@ -66,15 +66,57 @@ private:
     // Per sub-step: geometry, scales, constant terms, first iterate, constant Jacobian.
     void prepare(const Fiber& fiber, double h, const PointDrag& drag,
                  const FiberSolverSettings& settings);
+    // The fiber's state relative to its first point, masses, joints, held points,
+    // and the first iterate (y, lambda).
+    void takeFiber(const Fiber& fiber, double h, double theta);
+    // Row scales of the point rows and of the multipliers.
+    void setScales();
+    // Residual terms fixed during the iteration: loads, norms, drag resistances.
+    void setConstantTerms(const Fiber& fiber, const PointDrag& drag, const Eigen::Vector3d& gravity);
+    void resizeWork();
+    // Mass, bending and held rows of the Jacobian, and the constraint rows' scales.
+    void buildConstantJacobian();
+    void addBendingJacobian(BandedLU& J) const;
+
+    // Newton's iteration from the first iterate; result says whether it converged.
+    void solve(const PointDrag& drag, const FiberSolverSettings& settings, SubStepResult& result);
+    // Convergence test at the iterate evaluateResidual<false> saw.
+    bool hasConverged(const PointDrag& drag, const FiberSolverSettings& settings, double shortest,
+                      double lastUpdate, double& constraintError);
+    // One Newton update of (y_, lambda_); false when it fails (singular, not finite).
+    bool newtonUpdate(const PointDrag& drag, double shortest, double& lastUpdate,
+                      SubStepResult& result);
+    // Largest segment turn from x_n to y [rad, chord].
+    double maxSegmentRotation() const;
+    // The converged iterate into the fiber.
+    void accept(Fiber& fiber) const;
+
     // Residual rows at (y_, lambda_) into rhs_ (scaled as the Jacobian's rows) and
     // the largest relative constraint error; withSizes: also the size of each point
     // row's terms and their round-off (magnitude_, noise_) for residualSmall().
     template <bool withSizes>
     void evaluateResidual(const PointDrag& drag, double& constraintError);
+    // Its parts, each adding one force to residual_ (and its sizes).
+    template <bool withSizes>
+    void addInertiaAndLoad();
+    template <bool withSizes>
+    void addBendingForce();
+    template <bool withSizes>
+    void addDragForce(const PointDrag& drag);
+    template <bool withSizes>
+    void addTensionForce();
+    // Constraint rows into rhs_; returns the largest relative constraint error.
+    double evaluateConstraints();
+    void scaleResidualRows();
     // Is every point's residual below its tolerance? (after evaluateResidual<true>)
     bool residualSmall(double residualTolerance) const;
-    // Jacobian at the iterate evaluateResidual saw, into lu_.
+
+    // Jacobian at the iterate evaluateResidual saw, into lu_: the constant part plus
+    // drag and tension.
     void assembleJacobian(const PointDrag& drag);
+    void addDragJacobian();
+    void addDragTangentJacobian(Eigen::Index i);
+    void addTensionJacobian();
     bool held(Eigen::Index i) const { return held_[static_cast<std::size_t>(i)] != 0; }
 
     // The sub-step being solved.

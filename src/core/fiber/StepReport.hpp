@@ -20,7 +20,7 @@ struct StepReport {
     double elasticEnergy = 0.0;          // bending [J]
     double gravitationalEnergy = 0.0;    // -m g.x, zero at the origin [J]
     double totalMass = 0.0;              // [kg], fibers incl. captured droplets
-    double capturedMass = 0.0;           // [kg]
+    double totalCapturedMass = 0.0;      // [kg]
     Eigen::Vector3d momentum = Eigen::Vector3d::Zero();  // [kg m/s]
 };
 

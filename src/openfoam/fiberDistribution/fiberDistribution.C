@@ -79,9 +79,9 @@ Foam::dropletFiber::fiberDistribution::exchange
         {
             mine[k++] = s.tension(j);
         }
-        for (Eigen::Index j = 0; j < s.capturedMass.size(); ++j)
+        for (Eigen::Index j = 0; j < s.segmentCapturedMass.size(); ++j)
         {
-            mine[k++] = s.capturedMass(j);
+            mine[k++] = s.segmentCapturedMass(j);
         }
         for (const auto& segment : capture[f])
         {
@@ -128,9 +128,9 @@ Foam::dropletFiber::fiberDistribution::exchange
         {
             s.tension(j) = theirs[at++];
         }
-        for (Eigen::Index j = 0; j < s.capturedMass.size(); ++j)
+        for (Eigen::Index j = 0; j < s.segmentCapturedMass.size(); ++j)
         {
-            s.capturedMass(j) = theirs[at++];
+            s.segmentCapturedMass(j) = theirs[at++];
         }
         for (auto& segment : capture[f])
         {

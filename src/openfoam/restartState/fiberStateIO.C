@@ -93,7 +93,13 @@ Foam::dictionary Foam::dropletFiber::fiberStateDict
     d.add("positions", toScalarList(s.positions.data(), s.positions.size()));
     d.add("velocities", toScalarList(s.velocities.data(), s.velocities.size()));
     d.add("restLengths", toScalarList(s.restLengths.data(), s.restLengths.size()));
-    d.add("capturedMass", toScalarList(s.capturedMass.data(), s.capturedMass.size()));
+    // Keyword capturedMass (per segment): kept so that existing restart
+    // files load
+    d.add
+    (
+        "capturedMass",
+        toScalarList(s.segmentCapturedMass.data(), s.segmentCapturedMass.size())
+    );
     d.add("tension", toScalarList(s.tension.data(), s.tension.size()));
     d.add
     (
@@ -123,7 +129,7 @@ Foam::dictionary Foam::dropletFiber::fiberStateDict
     readInto(d, "restLengths", row, 1);
     s.restLengths = row.transpose();
     readInto(d, "capturedMass", row, 1);
-    s.capturedMass = row.transpose();
+    s.segmentCapturedMass = row.transpose();
     readInto(d, "tension", row, 1);
     s.tension = row.transpose();
     return s;

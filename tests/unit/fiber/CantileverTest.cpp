@@ -98,7 +98,7 @@ double bucklingExcursion(double loadFactor, double* segmentError)
     FiberSolver solver(settings);
     std::vector<Fiber> fibers{fiber};
     double excursion = 0.0;
-    const RunSummary summary = run(solver, fibers, period1 / 40.0, 40 * 25, AirSampler(),
+    const RunSummary summary = run(solver, fibers, period1 / 40.0, 40 * 25, AirSample(),
                                    [&](int, const StepReport&) {
                                        excursion = std::max(excursion,
                                                             std::abs(fibers[0].positions()(1, segments)));
@@ -157,7 +157,7 @@ double measuredFrequencyRatio(double betaL, double expectedSquare, int segments)
     std::vector<double> times{0.0}, signal{reference.dot(m.cwiseProduct(reference))};
     const double dt = period / 200.0;
     const RunSummary summary =
-        run(solver, fibers, dt, 200 * 6, AirSampler(), [&](int k, const StepReport&) {
+        run(solver, fibers, dt, 200 * 6, AirSample(), [&](int k, const StepReport&) {
             times.push_back((k + 1) * dt);
             const Eigen::VectorXd lateral = fibers[0].positions().row(1).transpose();
             signal.push_back(lateral.dot(m.cwiseProduct(reference)));

@@ -79,7 +79,7 @@ double terminalSpeed(DragModelType model, double* segmentError, int* subSteps)
     FiberSolver solver(settings);
     std::vector<Fiber> fibers{fiber};
     const RunSummary summary =
-        run(solver, fibers, 1e-3, 200, uniformAir(Eigen::Vector3d::Zero(), airDensity, airViscosity));
+        run(solver, fibers, 1e-3, 200, uniformAir(fibers, Eigen::Vector3d::Zero(), airDensity, airViscosity));
     *segmentError = summary.worstSegmentError;
     *subSteps = summary.subSteps;
     const Eigen::Vector3d v = fibers[0].momentum() / fibers[0].totalMass();
@@ -133,7 +133,7 @@ TEST(Drag, InclinedFiberDriftsAtNineteenPointFiveDegrees)
     settings.drag.tangentialCoefficient = 1.5e-5;
     FiberSolver solver(settings);
     std::vector<Fiber> fibers{fiber};
-    const RunSummary summary = run(solver, fibers, 1e-3, 300, uniformAir(Eigen::Vector3d::Zero(), 1.2, 1.8e-5));
+    const RunSummary summary = run(solver, fibers, 1e-3, 300, uniformAir(fibers, Eigen::Vector3d::Zero(), 1.2, 1.8e-5));
     const Eigen::Vector3d v = fibers[0].momentum() / fibers[0].totalMass();
     const double drift = std::atan2(std::hypot(v.x(), v.y()), -v.z()) * 180.0 / M_PI;
     const double expected = std::atan(std::sqrt(2.0) / 4.0) * 180.0 / M_PI;

@@ -59,13 +59,17 @@ struct RunSummary {
     int maxSubStepsOfAFiber = 0;
 };
 
+// The air as a function of position: sampled at airSamplePoints(fibers) before every
+// step, as the OpenFOAM layer samples its fields.
+using AirField = std::function<AirSample(const Eigen::Matrix3Xd& points)>;
+
 inline RunSummary run(FiberSolver& solver, std::vector<Fiber>& fibers, double dt, int steps,
-                      const AirSampler& air = AirSampler(),
+                      const AirField& air,
                       const std::function<void(int, const StepReport&)>& observe = {})
 {
     RunSummary summary;
     for (int k = 0; k < steps; ++k) {
-        const StepReport report = solver.step(fibers, dt, air);
+        const StepReport report = solver.step(fibers, dt, air(airSamplePoints(fibers)));
         summary.worstSegmentError = std::max(summary.worstSegmentError, report.maxSegmentLengthError);
         summary.subSteps += report.subSteps;
         summary.newtonIterations += report.newtonIterations;
@@ -73,6 +77,15 @@ inline RunSummary run(FiberSolver& solver, std::vector<Fiber>& fibers, double dt
         if (observe) observe(k, report);
     }
     return summary;
+}
+
+// The same with one sample for every step (no air, or air that does not depend on
+// position such as uniformAir(fibers, ...)).
+inline RunSummary run(FiberSolver& solver, std::vector<Fiber>& fibers, double dt, int steps,
+                      const AirSample& air = AirSample(),
+                      const std::function<void(int, const StepReport&)>& observe = {})
+{
+    return run(solver, fibers, dt, steps, [&air](const Eigen::Matrix3Xd&) { return air; }, observe);
 }
 
 // Mean period from the upward zero crossings of a sampled signal (linear interpolation).

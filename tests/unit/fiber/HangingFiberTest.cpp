@@ -15,7 +15,7 @@ TEST(HangingFiber, TensionEqualsWeightBelow)
                 glassFiber(), EndCondition::pinnedEnd(), EndCondition::freeEnd());
     // Non-uniform captured mass, so the check is not just a linear profile.
     for (int j = 0; j < segments; ++j) {
-        fiber.mutableState().capturedMass(j) = 1e-12 * (1.0 + (j % 7));
+        fiber.mutableState().segmentCapturedMass(j) = 1e-12 * (1.0 + (j % 7));
     }
     std::vector<Fiber> fibers{fiber};
     FiberSolverSettings settings;

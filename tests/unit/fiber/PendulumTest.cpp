@@ -31,7 +31,7 @@ TEST(Pendulum, StiffRodPeriod)
     FiberSolver solver{FiberSolverSettings()};
     const double dt = period / 200.0;
     std::vector<double> times{0.0}, signal{fibers[0].positions()(0, 50)};
-    const RunSummary summary = run(solver, fibers, dt, 200 * 5, AirSampler(), [&](int k, const StepReport&) {
+    const RunSummary summary = run(solver, fibers, dt, 200 * 5, AirSample(), [&](int k, const StepReport&) {
         times.push_back((k + 1) * dt);
         signal.push_back(fibers[0].positions()(0, 50));
     });
@@ -63,7 +63,7 @@ TEST(Pendulum, LimpChainFirstMode)
     const double period = 2.0 * M_PI / omega;
     const double dt = period / 200.0;
     std::vector<double> times{0.0}, signal{reference.dot(m.cwiseProduct(reference))};
-    const RunSummary summary = run(solver, fibers, dt, 200 * 6, AirSampler(), [&](int k, const StepReport&) {
+    const RunSummary summary = run(solver, fibers, dt, 200 * 6, AirSample(), [&](int k, const StepReport&) {
         times.push_back((k + 1) * dt);
         signal.push_back(fibers[0].positions().row(0).dot(m.cwiseProduct(reference)));
     });
@@ -100,7 +100,7 @@ TEST(Pendulum, EnergyOverHundredPeriods)
         double worstDrift = 0.0;
         double afterOnePeriod = 0.0;
         double firstPeriodSegmentError = 0.0, lastPeriodSegmentError = 0.0;
-        const RunSummary summary = run(solver, fibers, period / perPeriod, periods * perPeriod, AirSampler(),
+        const RunSummary summary = run(solver, fibers, period / perPeriod, periods * perPeriod, AirSample(),
                                        [&](int k, const StepReport& report) {
                                            const double e = swingEnergy();
                                            worstDrift = std::max(worstDrift, std::abs(e - e0) / e0);

@@ -45,7 +45,7 @@ FiberSolverSettings settings()
 void advance(std::vector<Fiber>& fibers, int from, int to)
 {
     FiberSolver solver(settings());
-    const AirSampler air = uniformAir(Eigen::Vector3d(0.5, 0.1, 0.0), 1.2, 1.8e-5);
+    const AirSample air = uniformAir(fibers, Eigen::Vector3d(0.5, 0.1, 0.0), 1.2, 1.8e-5);
     for (int step = from; step < to; ++step) {
         const CaptureSources capture = captureAt(step, fibers);
         solver.step(fibers, 1e-3, air, &capture);

@@ -17,7 +17,7 @@ Eigen::Matrix3Xd positionsAfter(double dt, double endTime, double* segmentError,
     FiberSolver solver(settings);
     const int steps = static_cast<int>(std::lround(endTime / dt));
     const RunSummary summary =
-        run(solver, fibers, dt, steps, uniformAir(Eigen::Vector3d(0.0, 0.3, 0.1), 1.2, 1.8e-5));
+        run(solver, fibers, dt, steps, uniformAir(fibers, Eigen::Vector3d(0.0, 0.3, 0.1), 1.2, 1.8e-5));
     *segmentError = summary.worstSegmentError;
     *subSteps = summary.subSteps;
     return fibers[0].positions();

@@ -71,16 +71,16 @@ TEST(SubStepping, ManyFibersOfDifferentSizesAndOneBatchedAirSample)
     for (int k = 0; k < 5; ++k) expectedPoints += fibers[static_cast<std::size_t>(k)].pointCount();
     int calls = 0;
     Eigen::Index sampledPoints = 0;
-    const AirSampler uniform = uniformAir(Eigen::Vector3d::Zero(), 1.2, 1.8e-5);
-    const AirSampler counting = [&](const Eigen::Matrix3Xd& points) {
+    // The caller samples the points the core lays out, once per step.
+    const auto counting = [&](const Eigen::Matrix3Xd& points) {
         ++calls;
         sampledPoints = points.cols();
-        return uniform(points);
+        return uniformAir(fibers, Eigen::Vector3d::Zero(), 1.2, 1.8e-5);
     };
     FiberSolverSettings settings;
     settings.drag.model = DragModelType::slenderBodyStokes;
     FiberSolver solver(settings);
-    const StepReport report = solver.step(fibers, 1e-3, counting);
+    const StepReport report = solver.step(fibers, 1e-3, counting(airSamplePoints(fibers)));
     EXPECT_EQ(calls, 1);
     EXPECT_EQ(sampledPoints, expectedPoints);
     EXPECT_EQ(report.fibersAdvanced, 5);
