@@ -48,22 +48,8 @@ AveragingWindow::AveragingWindow(const std::array<int, 3>& nodes, int nQuantitie
 template<class F>
 void AveragingWindow::forEachBoxRow(const IndexBox& box, F&& f) const
 {
-    if (box.empty())
-    {
-        return;
-    }
     const std::size_t q = static_cast<std::size_t>(nQuantities_);
-    const std::size_t rowLength = static_cast<std::size_t>(box.hi[0] - box.lo[0] + 1) * q;
-    for (int k = box.lo[2]; k <= box.hi[2]; ++k)
-    {
-        for (int j = box.lo[1]; j <= box.hi[1]; ++j)
-        {
-            const std::size_t node = static_cast<std::size_t>(box.lo[0])
-                + static_cast<std::size_t>(nodes_[0])
-                    * (static_cast<std::size_t>(j) + static_cast<std::size_t>(nodes_[1]) * static_cast<std::size_t>(k));
-            f(node * q, rowLength);
-        }
-    }
+    forEachRow(box, nodes_, [&](const IndexRow& row) { f(row.first * q, row.length * q); });
 }
 
 void AveragingWindow::push(const std::vector<double>& step, const IndexBox& box)
