@@ -11,6 +11,11 @@ namespace
 {
 constexpr std::int64_t formatVersion = 1;
 constexpr std::size_t headerSize = 8;
+
+[[noreturn]] void failRestart(const std::string& what)
+{
+    throw std::invalid_argument("averaging window restart: " + what);
+}
 } // namespace
 
 bool AveragingWindow::boxHolds(const IndexBox& box, std::size_t node) const
@@ -48,22 +53,8 @@ AveragingWindow::AveragingWindow(const std::array<int, 3>& nodes, int nQuantitie
 template<class F>
 void AveragingWindow::forEachBoxRow(const IndexBox& box, F&& f) const
 {
-    if (box.empty())
-    {
-        return;
-    }
     const std::size_t q = static_cast<std::size_t>(nQuantities_);
-    const std::size_t rowLength = static_cast<std::size_t>(box.hi[0] - box.lo[0] + 1) * q;
-    for (int k = box.lo[2]; k <= box.hi[2]; ++k)
-    {
-        for (int j = box.lo[1]; j <= box.hi[1]; ++j)
-        {
-            const std::size_t node = static_cast<std::size_t>(box.lo[0])
-                + static_cast<std::size_t>(nodes_[0])
-                    * (static_cast<std::size_t>(j) + static_cast<std::size_t>(nodes_[1]) * static_cast<std::size_t>(k));
-            f(node * q, rowLength);
-        }
-    }
+    forEachRow(box, nodes_, [&](const IndexRow& row) { f(row.first * q, row.length * q); });
 }
 
 void AveragingWindow::push(const std::vector<double>& step, const IndexBox& box)
@@ -185,30 +176,28 @@ WindowState AveragingWindow::save() const
     return state;
 }
 
-void AveragingWindow::restore(const WindowState& state)
+std::vector<IndexBox> AveragingWindow::savedSlotBoxes(const WindowState& state) const
 {
     const std::vector<std::int64_t>& c = state.counters;
-    auto fail = [](const std::string& what) { throw std::invalid_argument("averaging window restart: " + what); };
     if (c.size() < headerSize || c[0] != formatVersion)
     {
-        fail("unknown format");
+        failRestart("unknown format");
     }
     if (c[1] != nodes_[0] || c[2] != nodes_[1] || c[3] != nodes_[2])
     {
-        fail("saved for a grid of " + std::to_string(c[1]) + "x" + std::to_string(c[2]) + "x" + std::to_string(c[3])
-             + " nodes, this grid has " + std::to_string(nodes_[0]) + "x" + std::to_string(nodes_[1]) + "x"
-             + std::to_string(nodes_[2]));
+        failRestart("saved for a grid of " + std::to_string(c[1]) + "x" + std::to_string(c[2]) + "x"
+                    + std::to_string(c[3]) + " nodes, this grid has " + std::to_string(nodes_[0]) + "x"
+                    + std::to_string(nodes_[1]) + "x" + std::to_string(nodes_[2]));
     }
     if (c[4] != nQuantities_)
     {
-        fail("different number of quantities per node");
+        failRestart("different number of quantities per node");
     }
     const std::int64_t savedFilled = c[6];
     if (savedFilled < 0 || savedFilled > c[5] || c.size() != headerSize + 6 * static_cast<std::size_t>(savedFilled))
     {
-        fail("inconsistent slot count");
+        failRestart("inconsistent slot count");
     }
-    // Read all boxes and check the value count before touching this window.
     std::vector<IndexBox> boxes(static_cast<std::size_t>(savedFilled));
     std::size_t expectedValues = 0;
     for (std::size_t s = 0; s < boxes.size(); ++s)
@@ -219,18 +208,27 @@ void AveragingWindow::restore(const WindowState& state)
             boxes[s].hi[d] = static_cast<int>(c[headerSize + 6 * s + 3 + static_cast<std::size_t>(d)]);
             if (!boxes[s].empty() && (boxes[s].lo[d] < 0 || boxes[s].hi[d] >= nodes_[d]))
             {
-                fail("slot box outside the grid");
+                failRestart("slot box outside the grid");
             }
         }
         expectedValues += boxes[s].nodeCount() * static_cast<std::size_t>(nQuantities_);
     }
     if (expectedValues != state.values.size())
     {
-        fail("value count does not match the slot boxes");
+        failRestart("value count does not match the slot boxes");
     }
+    return boxes;
+}
 
-    // Keep the newest min(savedFilled, length) steps.
-    const std::size_t skip = savedFilled > length_ ? static_cast<std::size_t>(savedFilled - length_) : 0;
+void AveragingWindow::restore(const WindowState& state)
+{
+    // All boxes read and the value count checked before touching this window.
+    const std::vector<IndexBox> boxes = savedSlotBoxes(state);
+
+    // Keep the newest min(saved slots, length) steps.
+    const std::size_t skip = boxes.size() > static_cast<std::size_t>(length_)
+        ? boxes.size() - static_cast<std::size_t>(length_)
+        : 0;
     for (auto& slot : slots_)
     {
         slot.clear();
@@ -260,7 +258,7 @@ void AveragingWindow::restore(const WindowState& state)
         }
         position += count;
     }
-    committed_ = c[7];
+    committed_ = state.counters[7];
     staleBox_ = IndexBox{};
     std::fill(summedAt_.begin(), summedAt_.end(), -1);
     recomputeTotal(box());

@@ -70,6 +70,9 @@ public:
 private:
     std::size_t slotIndex(int age) const { return static_cast<std::size_t>((head_ + age) % length_); }
     void recomputeTotal(const IndexBox& box) const;
+    // The slot boxes of a saved state, checked against this grid and the state's value
+    // count; throws std::invalid_argument naming what does not fit.
+    std::vector<IndexBox> savedSlotBoxes(const WindowState& state) const;
     bool boxHolds(const IndexBox& box, std::size_t node) const;
     template<class F>
     void forEachBoxRow(const IndexBox& box, F&& f) const;

@@ -105,6 +105,117 @@ bool clipToBox(const GridSpec& spec, const Eigen::Vector3d& start, const Eigen::
     return true;
 }
 
+// Step 7: what the parcel puts on the grid per quantity (GridQuantities.hpp), for the
+// fraction of the step it spends inside the box.
+std::array<double, nQuantities> parcelTotals(const Parcel& parcel, double mass, double fraction)
+{
+    const double massInside = fraction * mass;
+    const double radius = 0.5 * parcel.diameter;
+    const double nParticle = parcel.nParticle;
+    return {{massInside, fraction * nParticle, fraction * nParticle * radius, massInside * radius,
+             massInside * parcel.velocity.x(), massInside * parcel.velocity.y(), massInside * parcel.velocity.z()}};
+}
+
+// Cloud-in-cell: points at most half the smallest node spacing apart along the path (at
+// least one, at most 4096), at the middles of equal parts; each carries `share` of the parcel.
+struct PathPoints
+{
+    PathPoints(const Eigen::Vector3d& pathStart, const Eigen::Vector3d& pathDisplacement, double smallestSpacing)
+        : start(pathStart),
+          displacement(pathDisplacement),
+          count(static_cast<int>(
+              std::min(4096.0, std::max(1.0, std::ceil(2.0 * pathDisplacement.norm() / smallestSpacing))))),
+          share(1.0 / count)
+    {
+    }
+
+    Eigen::Vector3d at(int p) const { return start + ((p + 0.5) * share) * displacement; }
+
+    Eigen::Vector3d start;
+    Eigen::Vector3d displacement;
+    int count;
+    double share;
+};
+
+// The box of the cells' corners of all points of a path, with its strides (i fastest).
+struct PathCells
+{
+    IndexBox box;
+    std::array<std::size_t, 3> stride{};
+    std::size_t nodeCount = 1;
+};
+
+// The corners of all points lie in the box spanned by the cells of the first and the last
+// point: along a straight path the cell is non-decreasing or non-increasing per direction
+// (axisCell). Summing the points' weights per node of that box first, and adding the
+// parcel's seven quantities once per node that got weight, makes a path of 10 points touch
+// ~12 distinct nodes of a 2D grid instead of 40 corner updates.
+PathCells pathCells(const GridSpec& spec, const std::array<double, 3>& spacing, const PathPoints& points)
+{
+    const Eigen::Vector3d firstPoint = points.at(0);
+    const Eigen::Vector3d lastPoint = points.at(points.count - 1);
+    PathCells cells;
+    for (int d = 0; d < 3; ++d)
+    {
+        const auto u = static_cast<std::size_t>(d);
+        if (spec.flat(d))
+        {
+            cells.box.lo[u] = cells.box.hi[u] = 0;
+        }
+        else
+        {
+            const AxisCell first = axisCell(firstPoint[d], spec.lower[d], spacing[u], spec.nodes[d]);
+            const AxisCell last = axisCell(lastPoint[d], spec.lower[d], spacing[u], spec.nodes[d]);
+            cells.box.lo[u] = std::min(first.cell, last.cell);
+            cells.box.hi[u] = std::max(first.cell, last.cell) + 1;
+        }
+        cells.stride[u] = cells.nodeCount;
+        cells.nodeCount *= static_cast<std::size_t>(cells.box.hi[u] - cells.box.lo[u] + 1);
+    }
+    return cells;
+}
+
+// Adds share times the multilinear weights of the point's cell corners to weights (one
+// value per node of cells.box): the same products, in the same order, as multilinearWeights.
+void addCornerWeights(const GridSpec& spec, const std::array<double, 3>& spacing, const PathCells& cells,
+                      const Eigen::Vector3d& point, double share, double* weights)
+{
+    // Per direction: the weights of the lower and upper corner and the offset of the lower
+    // corner in the box (flat directions: one corner of weight 1)
+    std::array<double, 3> lowerWeight{{1.0, 1.0, 1.0}}, upperWeight{{0.0, 0.0, 0.0}};
+    std::size_t offset = 0;
+    for (int d = 0; d < 3; ++d)
+    {
+        const auto u = static_cast<std::size_t>(d);
+        if (spec.flat(d))
+        {
+            continue;
+        }
+        const AxisCell position = axisCell(point[d], spec.lower[d], spacing[u], spec.nodes[d]);
+        lowerWeight[u] = 1.0 - position.fraction;
+        upperWeight[u] = position.fraction;
+        offset += cells.stride[u] * static_cast<std::size_t>(position.cell - cells.box.lo[u]);
+    }
+    const int extentZ = spec.flat(2) ? 1 : 2;
+    const int extentY = spec.flat(1) ? 1 : 2;
+    const int extentX = spec.flat(0) ? 1 : 2;
+    for (int c = 0; c < extentZ; ++c)
+    {
+        const double wz = c == 0 ? lowerWeight[2] : upperWeight[2];
+        for (int b = 0; b < extentY; ++b)
+        {
+            const double wy = b == 0 ? lowerWeight[1] : upperWeight[1];
+            double* row = weights + offset + cells.stride[2] * static_cast<std::size_t>(c)
+                + cells.stride[1] * static_cast<std::size_t>(b);
+            row[0] += share * (lowerWeight[0] * wy * wz);
+            if (extentX == 2)
+            {
+                row[1] += share * (upperWeight[0] * wy * wz);
+            }
+        }
+    }
+}
+
 } // namespace
 
 DensityGrid::DensityGrid(const GridSpec& spec, const KernelSettings& kernel, int windowLength)
@@ -150,48 +261,16 @@ void DensityGrid::deposit(const Parcel& parcel, double dt)
     stats.massIn += mass;
 
     // 1-2. Path during the step, clipped to the grid box.
-    const Eigen::Vector3d displacement = parcel.velocity * dt;
-    const Eigen::Vector3d start = parcel.position - displacement;
-    double t0 = 0.0, t1 = 1.0;
-    if (!clipToBox(spec_, start, displacement, t0, t1))
+    ClippedPath path;
+    if (!clipPath(parcel, dt, mass, path))
     {
-        ++stats.parcelsOutside;
-        stats.massOutside += mass;
         return;
     }
-    const double fraction = (displacement.squaredNorm() > 0.0) ? t1 - t0 : 1.0;
-    if (fraction < 1.0)
-    {
-        ++stats.parcelsPartlyOutside;
-    }
-    const double massInside = fraction * mass;
-    stats.massDeposited += massInside;
-    stats.massOutside += mass - massInside;
-    if (!(fraction > 0.0))
-    {
-        return; // touches the box in a single point: measure zero
-    }
+    const std::array<double, nQuantities> totals = parcelTotals(parcel, mass, path.fraction);
 
-    // Clipped path, projected into the active directions (flat: on the node layer).
-    Eigen::Vector3d clipStart = start + t0 * displacement;
-    Eigen::Vector3d clipDisplacement = (t1 - t0) * displacement;
-    for (int d = 0; d < 3; ++d)
-    {
-        if (spec_.flat(d))
-        {
-            clipStart[d] = coordinates_[d][0];
-            clipDisplacement[d] = 0.0;
-        }
-    }
-
+    // 3. Kernel; unresolved ones go to the cell corners.
     const double radius = 0.5 * parcel.diameter;
-    const double nParticle = parcel.nParticle;
-    const std::array<double, nQuantities> totals{{massInside, fraction * nParticle, fraction * nParticle * radius,
-                                                  massInside * radius, massInside * parcel.velocity.x(),
-                                                  massInside * parcel.velocity.y(), massInside * parcel.velocity.z()}};
-
-    // 3. Kernel.
-    const ParcelKernel kernel(radius, nParticle, kernelSettings_, kernelDimension_);
+    const ParcelKernel kernel(radius, parcel.nParticle, kernelSettings_, kernelDimension_);
     if (kernel.capped())
     {
         ++stats.parcelsCapped;
@@ -199,111 +278,152 @@ void DensityGrid::deposit(const Parcel& parcel, double dt)
     if (kernel.width() < kernelSettings_.cloudInCellBelow * largestSpacing_)
     {
         ++stats.parcelsCloudInCell;
-        depositFallback(clipStart, clipDisplacement, totals);
+        depositFallback(path.start, path.displacement, totals);
         return;
     }
-    PathWeight pathWeight(kernel, clipStart, clipDisplacement);
-    const double reach = negligibleDistance(kernel, clipDisplacement.norm());
+    PathWeight pathWeight(kernel, path.start, path.displacement);
+    const double reach = negligibleDistance(kernel, path.displacement.norm());
     pathWeight.limitTo(reach);
 
-    // 4. Nodes in the bounding box of the swept capsule.
-    std::array<int, 3> lo{}, hi{};
-    for (int d = 0; d < 3; ++d)
-    {
-        if (spec_.flat(d))
-        {
-            lo[d] = hi[d] = 0;
-            continue;
-        }
-        const double a = std::min(clipStart[d], clipStart[d] + clipDisplacement[d]) - reach;
-        const double b = std::max(clipStart[d], clipStart[d] + clipDisplacement[d]) + reach;
-        const double last = spec_.nodes[d] - 1;
-        const double first = std::ceil((a - spec_.lower[d]) * inverseSpacing_[d]);
-        const double lastReached = std::floor((b - spec_.lower[d]) * inverseSpacing_[d]);
-        lo[d] = static_cast<int>(std::min(std::max(first, 0.0), last));
-        hi[d] = static_cast<int>(std::min(std::max(lastReached, -1.0), last));
-    }
-    scratch_.clear();
-    double omegaSum = 0.0;
-    std::int64_t visited = 0;
-    const std::size_t nx = static_cast<std::size_t>(spec_.nodes[0]);
-    const std::size_t ny = static_cast<std::size_t>(spec_.nodes[1]);
-    const std::size_t boxNodes = static_cast<std::size_t>(std::max(hi[0] - lo[0] + 1, 0))
-        * static_cast<std::size_t>(std::max(hi[1] - lo[1] + 1, 0))
-        * static_cast<std::size_t>(std::max(hi[2] - lo[2] + 1, 0));
-    if (batched_ && !pathWeight.stationary() && boxNodes >= PathWeightBatch::minimumBoxNodes)
-    {
-        // CPU with AVX2 + FMA (KernelBuild.hpp): project every node of the box, then omega
-        // of all of them four at a time without branches (PathWeightBatch); the same sums
-        // and the same list of weighted nodes, in node order, as the per-node loop below.
-        const double* boxOmega = batch_.boxOmegas(pathWeight, clipStart, coordinates_[0].data(),
-                                                  coordinates_[1].data(), coordinates_[2].data(), lo, hi);
-        // List the nodes with omega > 0 without a branch: each node is written at the end of
-        // the list and kept by advancing the count (omega <= 0 adds 0 to the sum).
-        scratch_.resize(boxNodes);
-        std::size_t weighted = 0;
-        std::size_t n = 0;
-        for (int k = lo[2]; k <= hi[2]; ++k)
-        {
-            for (int j = lo[1]; j <= hi[1]; ++j)
-            {
-                const std::size_t row = nx * (static_cast<std::size_t>(j) + ny * static_cast<std::size_t>(k));
-                for (int i = lo[0]; i <= hi[0]; ++i, ++n)
-                {
-                    const double omega = std::max(boxOmega[n], 0.0);
-                    scratch_[weighted] = {row + static_cast<std::size_t>(i), omega};
-                    weighted += omega > 0.0 ? 1 : 0;
-                    omegaSum += omega;
-                }
-            }
-        }
-        scratch_.resize(weighted);
-        visited = static_cast<std::int64_t>(boxNodes);
-    }
-    else
-    {
-        // Per-node loop (vectorised off, CPUs without AVX2 + FMA, other architectures;
-        // stationary parcels and small boxes always).
-        for (int k = lo[2]; k <= hi[2]; ++k)
-        {
-            const double oz = coordinates_[2][static_cast<std::size_t>(k)] - clipStart.z();
-            for (int j = lo[1]; j <= hi[1]; ++j)
-            {
-                const double oy = coordinates_[1][static_cast<std::size_t>(j)] - clipStart.y();
-                const std::size_t row = nx * (static_cast<std::size_t>(j) + ny * static_cast<std::size_t>(k));
-                for (int i = lo[0]; i <= hi[0]; ++i)
-                {
-                    const Eigen::Vector3d offset(coordinates_[0][static_cast<std::size_t>(i)] - clipStart.x(), oy, oz);
-                    const double omega = pathWeight.omegaFromOffset(offset);
-                    if (omega > 0.0)
-                    {
-                        scratch_.emplace_back(row + static_cast<std::size_t>(i), omega);
-                        omegaSum += omega;
-                    }
-                }
-                visited += hi[0] >= lo[0] ? hi[0] - lo[0] + 1 : 0;
-            }
-        }
-    }
-    stats.nodesVisited += visited;
+    // 4. Weights of the nodes in the bounding box of the swept capsule.
+    const IndexBox box = nodeBox(path, reach);
+    const bool batched = batched_ && !pathWeight.stationary() && box.nodeCount() >= PathWeightBatch::minimumBoxNodes;
+    const double omegaSum
+        = batched ? weighNodesBatched(pathWeight, path.start, box) : weighNodesOneByOne(pathWeight, path.start, box);
+    stats.nodesVisited += static_cast<std::int64_t>(box.nodeCount());
 
     // 5-6. Normalise (eq. 24), or fall back to cloud-in-cell weights.
     if (!(omegaSum >= DBL_MIN))
     {
         ++stats.parcelsFallback;
-        depositFallback(clipStart, clipDisplacement, totals);
+        depositFallback(path.start, path.displacement, totals);
         return;
     }
-    const double inverseSum = 1.0 / omegaSum;
+    depositWeighted(1.0 / omegaSum, totals, box);
+}
+
+bool DensityGrid::clipPath(const Parcel& parcel, double dt, double mass, ClippedPath& path)
+{
+    StepStatistics& stats = stepStatistics_;
+    const Eigen::Vector3d displacement = parcel.velocity * dt;
+    const Eigen::Vector3d start = parcel.position - displacement;
+    double t0 = 0.0, t1 = 1.0;
+    if (!clipToBox(spec_, start, displacement, t0, t1))
+    {
+        ++stats.parcelsOutside;
+        stats.massOutside += mass;
+        return false;
+    }
+    path.fraction = (displacement.squaredNorm() > 0.0) ? t1 - t0 : 1.0;
+    if (path.fraction < 1.0)
+    {
+        ++stats.parcelsPartlyOutside;
+    }
+    const double massInside = path.fraction * mass;
+    stats.massDeposited += massInside;
+    stats.massOutside += mass - massInside;
+    if (!(path.fraction > 0.0))
+    {
+        return false; // touches the box in a single point: measure zero
+    }
+    // Projected into the active directions (flat: on the node layer).
+    path.start = start + t0 * displacement;
+    path.displacement = (t1 - t0) * displacement;
+    for (int d = 0; d < 3; ++d)
+    {
+        if (spec_.flat(d))
+        {
+            path.start[d] = coordinates_[d][0];
+            path.displacement[d] = 0.0;
+        }
+    }
+    return true;
+}
+
+IndexBox DensityGrid::nodeBox(const ClippedPath& path, double reach) const
+{
+    IndexBox box;
+    for (int d = 0; d < 3; ++d)
+    {
+        if (spec_.flat(d))
+        {
+            box.lo[d] = box.hi[d] = 0;
+            continue;
+        }
+        const double a = std::min(path.start[d], path.start[d] + path.displacement[d]) - reach;
+        const double b = std::max(path.start[d], path.start[d] + path.displacement[d]) + reach;
+        const double last = spec_.nodes[d] - 1;
+        const double first = std::ceil((a - spec_.lower[d]) * inverseSpacing_[d]);
+        const double lastReached = std::floor((b - spec_.lower[d]) * inverseSpacing_[d]);
+        box.lo[d] = static_cast<int>(std::min(std::max(first, 0.0), last));
+        box.hi[d] = static_cast<int>(std::min(std::max(lastReached, -1.0), last));
+    }
+    return box;
+}
+
+double DensityGrid::weighNodesBatched(const PathWeight& pathWeight, const Eigen::Vector3d& start, const IndexBox& box)
+{
+    // CPU with AVX2 + FMA (KernelBuild.hpp): project every node of the box, then omega of
+    // all of them four at a time without branches (PathWeightBatch); the same sums and the
+    // same list of weighted nodes, in node order, as weighNodesOneByOne.
+    const double* boxOmega = batch_.boxOmegas(pathWeight, start, coordinates_[0].data(), coordinates_[1].data(),
+                                              coordinates_[2].data(), box.lo, box.hi);
+    // List the nodes with omega > 0 without a branch: each node is written at the end of
+    // the list and kept by advancing the count (omega <= 0 adds 0 to the sum).
+    scratch_.clear();
+    scratch_.resize(box.nodeCount());
+    std::size_t weighted = 0;
+    double omegaSum = 0.0;
+    forEachRow(box, spec_.nodes,
+               [&](const IndexRow& row)
+               {
+                   for (std::size_t i = 0; i < row.length; ++i)
+                   {
+                       const double omega = std::max(boxOmega[row.offsetInBox + i], 0.0);
+                       scratch_[weighted] = {row.first + i, omega};
+                       weighted += omega > 0.0 ? 1 : 0;
+                       omegaSum += omega;
+                   }
+               });
+    scratch_.resize(weighted);
+    return omegaSum;
+}
+
+double DensityGrid::weighNodesOneByOne(const PathWeight& pathWeight, const Eigen::Vector3d& start, const IndexBox& box)
+{
+    // Vectorised off, CPUs without AVX2 + FMA, other architectures; stationary parcels and
+    // small boxes always.
+    scratch_.clear();
+    double omegaSum = 0.0;
+    const double* x = coordinates_[0].data() + box.lo[0]; // lo >= 0 (nodeBox)
+    forEachRow(box, spec_.nodes,
+               [&](const IndexRow& row)
+               {
+                   const double oz = coordinates_[2][static_cast<std::size_t>(row.k)] - start.z();
+                   const double oy = coordinates_[1][static_cast<std::size_t>(row.j)] - start.y();
+                   for (std::size_t i = 0; i < row.length; ++i)
+                   {
+                       const Eigen::Vector3d offset(x[i] - start.x(), oy, oz);
+                       const double omega = pathWeight.omegaFromOffset(offset);
+                       if (omega > 0.0)
+                       {
+                           scratch_.emplace_back(row.first + i, omega);
+                           omegaSum += omega;
+                       }
+                   }
+               });
+    return omegaSum;
+}
+
+void DensityGrid::depositWeighted(double inverseSum, const std::array<double, nQuantities>& parcelTotals,
+                                  const IndexBox& box)
+{
     for (const auto& [node, omega] : scratch_)
     {
-        accumulate(node, omega * inverseSum, totals);
+        accumulate(node, omega * inverseSum, parcelTotals);
     }
-    stats.nodesWeighted += static_cast<std::int64_t>(scratch_.size());
-    // The touched box: the weighted nodes lie inside [lo, hi].
-    IndexBox box;
-    box.lo = lo;
-    box.hi = hi;
+    stepStatistics_.nodesWeighted += static_cast<std::int64_t>(scratch_.size());
+    // The touched box: the weighted nodes lie inside it.
     stepBox_ = stepBox_.united(box);
 }
 
@@ -343,141 +463,70 @@ void DensityGrid::accumulate(std::size_t node, double weight, const std::array<d
 void DensityGrid::depositFallback(const Eigen::Vector3d& start, const Eigen::Vector3d& displacement,
                                   const std::array<double, nQuantities>& parcelTotals)
 {
-    // Points at most half a node spacing apart along the path (at least one, at most 4096),
-    // each spreading its share of the parcel over the corners of its cell (multilinear).
-    const double length = displacement.norm();
-    const int points = static_cast<int>(std::min(4096.0, std::max(1.0, std::ceil(2.0 * length / smallestSpacing_))));
-    const double share = 1.0 / points;
-    const auto pointAt = [&](int p) -> Eigen::Vector3d { return start + ((p + 0.5) * share) * displacement; };
-
-    // The corners of all points lie in the box spanned by the cells of the first and the last
-    // point: along a straight path the cell is non-decreasing or non-increasing per direction
-    // (axisCell). The weights of the points are summed per node in that box first, and the
-    // parcel's seven quantities added once per node that got weight: a path of 10 points
-    // touches ~12 distinct nodes of a 2D grid instead of 40 corner updates.
-    std::array<AxisCell, 3> first{}, last{};
-    const Eigen::Vector3d firstPoint = pointAt(0);
-    const Eigen::Vector3d lastPoint = pointAt(points - 1);
-    IndexBox box;
-    std::array<std::size_t, 3> stride{};
-    std::size_t boxNodes = 1;
-    for (int d = 0; d < 3; ++d)
-    {
-        const auto u = static_cast<std::size_t>(d);
-        if (spec_.flat(d))
-        {
-            box.lo[u] = box.hi[u] = 0;
-        }
-        else
-        {
-            first[u] = axisCell(firstPoint[d], spec_.lower[d], spacing_[u], spec_.nodes[d]);
-            last[u] = axisCell(lastPoint[d], spec_.lower[d], spacing_[u], spec_.nodes[d]);
-            box.lo[u] = std::min(first[u].cell, last[u].cell);
-            box.hi[u] = std::max(first[u].cell, last[u].cell) + 1;
-        }
-        stride[u] = boxNodes;
-        boxNodes *= static_cast<std::size_t>(box.hi[u] - box.lo[u] + 1);
-    }
-    stepBox_ = stepBox_.united(box);
+    const PathPoints points(start, displacement, smallestSpacing_);
+    const PathCells cells = pathCells(spec_, spacing_, points);
+    stepBox_ = stepBox_.united(cells.box);
     const int corners = (spec_.flat(0) ? 1 : 2) * (spec_.flat(1) ? 1 : 2) * (spec_.flat(2) ? 1 : 2);
-    stepStatistics_.nodesVisited += static_cast<std::int64_t>(points) * corners;
+    stepStatistics_.nodesVisited += static_cast<std::int64_t>(points.count) * corners;
 
-    if (boxNodes > maximumPathBoxNodes)
+    if (cells.nodeCount > maximumPathBoxNodes)
     {
         // A path across many cells (rare: parcels move a few cells per step at most): each
         // point's corners straight onto the grid.
-        for (int p = 0; p < points; ++p)
+        for (int p = 0; p < points.count; ++p)
         {
-            const CornerWeights cornerWeights = multilinearWeights(spec_, pointAt(p));
-            for (int c = 0; c < cornerWeights.count; ++c)
-            {
-                const auto u = static_cast<std::size_t>(c);
-                accumulate(cornerWeights.node[u], share * cornerWeights.weight[u], parcelTotals);
-            }
+            depositAtCorners(points.at(p), points.share, parcelTotals);
         }
-        stepStatistics_.nodesWeighted += static_cast<std::int64_t>(points) * corners;
+        stepStatistics_.nodesWeighted += static_cast<std::int64_t>(points.count) * corners;
         return;
     }
-
-    pathWeights_.assign(boxNodes, 0.0);
-    for (int p = 0; p < points; ++p)
+    pathWeights_.assign(cells.nodeCount, 0.0);
+    for (int p = 0; p < points.count; ++p)
     {
-        const Eigen::Vector3d point = pointAt(p);
-        // Per direction: the weights of the lower and upper corner and the offset of the
-        // lower corner in the box (flat directions: one corner of weight 1)
-        std::array<double, 3> lowerWeight{{1.0, 1.0, 1.0}}, upperWeight{{0.0, 0.0, 0.0}};
-        std::size_t offset = 0;
-        for (int d = 0; d < 3; ++d)
-        {
-            const auto u = static_cast<std::size_t>(d);
-            if (spec_.flat(d))
-            {
-                continue;
-            }
-            const AxisCell position = axisCell(point[d], spec_.lower[d], spacing_[u], spec_.nodes[d]);
-            lowerWeight[u] = 1.0 - position.fraction;
-            upperWeight[u] = position.fraction;
-            offset += stride[u] * static_cast<std::size_t>(position.cell - box.lo[u]);
-        }
-        // The same products, in the same order, as multilinearWeights
-        const int extentZ = spec_.flat(2) ? 1 : 2;
-        const int extentY = spec_.flat(1) ? 1 : 2;
-        const int extentX = spec_.flat(0) ? 1 : 2;
-        for (int c = 0; c < extentZ; ++c)
-        {
-            const double wz = c == 0 ? lowerWeight[2] : upperWeight[2];
-            for (int b = 0; b < extentY; ++b)
-            {
-                const double wy = b == 0 ? lowerWeight[1] : upperWeight[1];
-                double* row = pathWeights_.data() + offset + stride[2] * static_cast<std::size_t>(c)
-                    + stride[1] * static_cast<std::size_t>(b);
-                row[0] += share * (lowerWeight[0] * wy * wz);
-                if (extentX == 2)
-                {
-                    row[1] += share * (upperWeight[0] * wy * wz);
-                }
-            }
-        }
+        addCornerWeights(spec_, spacing_, cells, points.at(p), points.share, pathWeights_.data());
     }
+    depositPathWeights(cells.box, parcelTotals);
+}
 
-    std::size_t n = 0;
+void DensityGrid::depositAtCorners(const Eigen::Vector3d& point, double share,
+                                   const std::array<double, nQuantities>& parcelTotals)
+{
+    const CornerWeights cornerWeights = multilinearWeights(spec_, point);
+    for (int c = 0; c < cornerWeights.count; ++c)
+    {
+        const auto u = static_cast<std::size_t>(c);
+        accumulate(cornerWeights.node[u], share * cornerWeights.weight[u], parcelTotals);
+    }
+}
+
+void DensityGrid::depositPathWeights(const IndexBox& box, const std::array<double, nQuantities>& parcelTotals)
+{
     std::int64_t weighted = 0;
-    for (int k = box.lo[2]; k <= box.hi[2]; ++k)
-    {
-        for (int j = box.lo[1]; j <= box.hi[1]; ++j)
-        {
-            const std::size_t row = spec_.flatIndex(0, j, k);
-            for (int i = box.lo[0]; i <= box.hi[0]; ++i, ++n)
-            {
-                const double weight = pathWeights_[n];
-                if (weight > 0.0)
-                {
-                    accumulate(row + static_cast<std::size_t>(i), weight, parcelTotals);
-                    ++weighted;
-                }
-            }
-        }
-    }
+    forEachRow(box, spec_.nodes,
+               [&](const IndexRow& row)
+               {
+                   for (std::size_t i = 0; i < row.length; ++i)
+                   {
+                       const double weight = pathWeights_[row.offsetInBox + i];
+                       if (weight > 0.0)
+                       {
+                           accumulate(row.first + i, weight, parcelTotals);
+                           ++weighted;
+                       }
+                   }
+               });
     stepStatistics_.nodesWeighted += weighted;
 }
 
 void DensityGrid::commitStep()
 {
     window_.push(step_, stepBox_);
-    const IndexBox box = stepBox_;
-    if (!box.empty())
-    {
-        for (int k = box.lo[2]; k <= box.hi[2]; ++k)
-        {
-            for (int j = box.lo[1]; j <= box.hi[1]; ++j)
-            {
-                const std::size_t first = spec_.flatIndex(box.lo[0], j, k) * nQuantities;
-                const std::size_t last = spec_.flatIndex(box.hi[0], j, k) * nQuantities + nQuantities;
-                std::fill(step_.begin() + static_cast<std::ptrdiff_t>(first),
-                          step_.begin() + static_cast<std::ptrdiff_t>(last), 0.0);
-            }
-        }
-    }
+    forEachRow(stepBox_, spec_.nodes,
+               [&](const IndexRow& row)
+               {
+                   double* values = step_.data() + row.first * nQuantities;
+                   std::fill(values, values + row.length * nQuantities, 0.0);
+               });
     stepBox_ = IndexBox{};
     lastStepStatistics_ = stepStatistics_;
     stepStatistics_ = StepStatistics{};
@@ -492,20 +541,12 @@ std::vector<double> DensityGrid::packStep(const IndexBox& box) const
 
 void DensityGrid::packStep(const IndexBox& box, double* values) const
 {
-    if (box.empty())
-    {
-        return;
-    }
-    for (int k = box.lo[2]; k <= box.hi[2]; ++k)
-    {
-        for (int j = box.lo[1]; j <= box.hi[1]; ++j)
-        {
-            const std::size_t first = spec_.flatIndex(box.lo[0], j, k) * nQuantities;
-            const std::size_t last = spec_.flatIndex(box.hi[0], j, k) * nQuantities + nQuantities;
-            values = std::copy(step_.begin() + static_cast<std::ptrdiff_t>(first),
-                               step_.begin() + static_cast<std::ptrdiff_t>(last), values);
-        }
-    }
+    forEachRow(box, spec_.nodes,
+               [&](const IndexRow& row)
+               {
+                   const double* first = step_.data() + row.first * nQuantities;
+                   std::copy(first, first + row.length * nQuantities, values + row.offsetInBox * nQuantities);
+               });
 }
 
 void DensityGrid::unpackStep(const IndexBox& box, const std::vector<double>& values)
@@ -530,16 +571,12 @@ void DensityGrid::unpackStep(const IndexBox& box, const double* values, std::siz
     {
         throw std::invalid_argument("DensityGrid::unpackStep: value count does not match the box");
     }
-    const std::size_t rowValues = static_cast<std::size_t>(box.hi[0] - box.lo[0] + 1) * nQuantities;
-    for (int k = box.lo[2]; k <= box.hi[2]; ++k)
-    {
-        for (int j = box.lo[1]; j <= box.hi[1]; ++j)
-        {
-            const std::size_t first = spec_.flatIndex(box.lo[0], j, k) * nQuantities;
-            std::copy(values, values + rowValues, step_.begin() + static_cast<std::ptrdiff_t>(first));
-            values += rowValues;
-        }
-    }
+    forEachRow(box, spec_.nodes,
+               [&](const IndexRow& row)
+               {
+                   const double* first = values + row.offsetInBox * nQuantities;
+                   std::copy(first, first + row.length * nQuantities, step_.data() + row.first * nQuantities);
+               });
     stepBox_ = stepBox_.united(box);
 }
 

@@ -74,6 +74,7 @@
 #include "grid/GridSpec.hpp"
 #include "grid/Parcel.hpp"
 #include "grid/ParcelKernel.hpp"
+#include "grid/PathWeight.hpp"
 #include "grid/PathWeightBatch.hpp"
 #include "grid/StepStatistics.hpp"
 
@@ -150,14 +151,44 @@ public:
     double windowMassPerStep() const;
 
 private:
+    // The part of a parcel's path inside the grid box (deposit steps 1-2), on the node
+    // layer in flat directions; fraction: the share of the step spent inside the box.
+    struct ClippedPath
+    {
+        Eigen::Vector3d start{0.0, 0.0, 0.0};
+        Eigen::Vector3d displacement{0.0, 0.0, 0.0};
+        double fraction = 0.0;
+    };
+
     // Window sums S_q (any weights) -> field values.
     DropletFieldValue fieldFromSums(const std::array<double, nQuantities>& sums) const;
+
+    // --- deposit(), in the order of its steps (top of this file) ------------------------
+    // Steps 1-2: clips the parcel's path and books the mass outside the box; false when
+    // nothing of the parcel is to be deposited.
+    bool clipPath(const Parcel& parcel, double dt, double mass, ClippedPath& path);
     // Distance from the path beyond which a node's weight is below
     // KernelSettings::negligibleWeight times the parcel's largest (<= reach).
     double negligibleDistance(const ParcelKernel& kernel, double pathLength) const;
-    void accumulate(std::size_t node, double weight, const std::array<double, nQuantities>& parcelTotals);
+    // Step 4: the nodes within `reach` of the path (may be empty).
+    IndexBox nodeBox(const ClippedPath& path, double reach) const;
+    // Step 4: omega of every node of the box; the nodes with omega > 0 go to scratch_, in
+    // node order. Returns sum omega. Batched (AVX2 + FMA, moving parcels) or node by node.
+    double weighNodesBatched(const PathWeight& pathWeight, const Eigen::Vector3d& start, const IndexBox& box);
+    double weighNodesOneByOne(const PathWeight& pathWeight, const Eigen::Vector3d& start, const IndexBox& box);
+    // Steps 5 and 7: scratch_'s nodes get omega / sum omega of the parcel's totals.
+    void depositWeighted(double inverseSum, const std::array<double, nQuantities>& parcelTotals,
+                         const IndexBox& box);
+    // Step 6 (and unresolved kernels): cloud-in-cell weights along the path.
     void depositFallback(const Eigen::Vector3d& start, const Eigen::Vector3d& displacement,
                          const std::array<double, nQuantities>& parcelTotals);
+    // One point's share on the corners of its cell (paths across many cells).
+    void depositAtCorners(const Eigen::Vector3d& point, double share,
+                          const std::array<double, nQuantities>& parcelTotals);
+    // The path's weights summed per node of its cell box (pathWeights_) onto the grid.
+    void depositPathWeights(const IndexBox& box, const std::array<double, nQuantities>& parcelTotals);
+    // Step 7 for one node.
+    void accumulate(std::size_t node, double weight, const std::array<double, nQuantities>& parcelTotals);
 
     GridSpec spec_;
     KernelSettings kernelSettings_;

@@ -1,5 +1,6 @@
 // GridSpec: geometry of the regular density grid of MODEL.md sec. 4 (nodes, spacing,
-// node volume), and IndexBox, an inclusive box of node indices.
+// node volume), IndexBox, an inclusive box of node indices, and forEachRow, the one loop
+// over a box's nodes row by row.
 //
 // Nodes sit on the bounds: direction d has nodes[d] nodes at
 //     lower[d] + i * h[d],   h[d] = (upper[d] - lower[d]) / (nodes[d] - 1),
@@ -38,6 +39,47 @@ struct IndexBox
     bool operator!=(const IndexBox& other) const { return !(*this == other); }
 };
 
+// Flat index i + nx * (j + ny * k) of node (i, j, k) in a grid of `nodes` nodes per direction.
+inline std::size_t flatNodeIndex(const std::array<int, 3>& nodes, int i, int j, int k)
+{
+    return static_cast<std::size_t>(i)
+        + static_cast<std::size_t>(nodes[0])
+            * (static_cast<std::size_t>(j) + static_cast<std::size_t>(nodes[1]) * static_cast<std::size_t>(k));
+}
+
+// One row of an IndexBox: its nodes lo[0]..hi[0] at fixed (j, k), consecutive in the grid.
+struct IndexRow
+{
+    int j = 0;
+    int k = 0;
+    std::size_t first = 0;      // flat index of node (lo[0], j, k)
+    std::size_t length = 0;     // hi[0] - lo[0] + 1 nodes
+    std::size_t offsetInBox = 0; // position of its first node in the box, i fastest
+};
+
+// Calls f(row) for every row of the box, k outermost, then j: the nodes in flat order (i
+// fastest), so loops that sum over the box always add in the same order. Nothing for an
+// empty box. nodes: the grid's node counts per direction (GridSpec::nodes).
+template <class F>
+void forEachRow(const IndexBox& box, const std::array<int, 3>& nodes, F&& f)
+{
+    if (box.empty())
+    {
+        return;
+    }
+    IndexRow row;
+    row.length = static_cast<std::size_t>(box.hi[0] - box.lo[0] + 1);
+    for (row.k = box.lo[2]; row.k <= box.hi[2]; ++row.k)
+    {
+        for (row.j = box.lo[1]; row.j <= box.hi[1]; ++row.j)
+        {
+            row.first = flatNodeIndex(nodes, box.lo[0], row.j, row.k);
+            f(static_cast<const IndexRow&>(row));
+            row.offsetInBox += row.length;
+        }
+    }
+}
+
 struct GridSpec
 {
     Eigen::Vector3d lower{0.0, 0.0, 0.0};
@@ -60,12 +102,7 @@ struct GridSpec
 
     double nodeCoordinate(int d, int index) const;
     Eigen::Vector3d nodePosition(int i, int j, int k) const;
-    std::size_t flatIndex(int i, int j, int k) const
-    {
-        return static_cast<std::size_t>(i)
-            + static_cast<std::size_t>(nodes[0])
-                * (static_cast<std::size_t>(j) + static_cast<std::size_t>(nodes[1]) * static_cast<std::size_t>(k));
-    }
+    std::size_t flatIndex(int i, int j, int k) const { return flatNodeIndex(nodes, i, j, k); }
     // Closed box test; flat directions included (the slab of the 2D case).
     bool contains(const Eigen::Vector3d& point) const;
 };

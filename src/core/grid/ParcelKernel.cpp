@@ -92,10 +92,10 @@ void ParcelKernel::setShape(double gamma, double reach)
 
 double ParcelKernel::phi(double distance) const
 {
-    return phiSquared(distance * distance);
+    return phiOfSquaredDistance(distance * distance);
 }
 
-double ParcelKernel::phiSquared(double distanceSquared) const
+double ParcelKernel::phiOfSquaredDistance(double distanceSquared) const
 {
     const double reach2 = reach_ * reach_;
     if (!(distanceSquared < reach2))

@@ -85,7 +85,7 @@ public:
     // Eq. 12, accurate also near the edge of the support (no cancellation, see .cpp).
     double phi(double distance) const;
     // The same from the squared distance (what the grid loop has).
-    double phiSquared(double distanceSquared) const;
+    double phiOfSquaredDistance(double distanceSquared) const;
 
 private:
     ParcelKernel() = default;

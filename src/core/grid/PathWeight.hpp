@@ -52,7 +52,7 @@ public:
         if (stationary_)
         {
             const double dSquared = (offset - halfDisplacement_).squaredNorm();
-            return dSquared < cutoffSquared_ ? kernel_.phiSquared(dSquared) : 0.0;
+            return dSquared < cutoffSquared_ ? kernel_.phiOfSquaredDistance(dSquared) : 0.0;
         }
         const double lambdaM = direction_.dot(offset);
         const double d0Squared = (offset - lambdaM * direction_).squaredNorm();

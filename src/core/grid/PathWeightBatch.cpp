@@ -15,6 +15,7 @@
 
 #include "grid/BranchFreeErfc.hpp"
 #include "grid/BranchFreeExp.hpp"
+#include "grid/CodyErfcRationals.hpp" // DROPLETFIBER_ALWAYS_INLINE
 #include "grid/Lanes.hpp"
 #include "grid/PathIntegralClosedForm.hpp"
 
@@ -89,10 +90,55 @@ void erfcScaledPartsAt(const std::uint32_t* list, std::size_t count, const doubl
     }
 }
 
-// PathWeightBatch::omegas with its working memory: values 11 count doubles, indices
-// 8 count + laneCount.
-void omegasInLanes(const PathWeight& path, const double* lambdaM, const double* d0Squared, double* omega,
-                   std::size_t count, double* values, std::uint32_t* indices)
+// The stages of PathIntegralClosedForm as separate short loops, so that the processor
+// overlaps many nodes (the whole formula is a dependency chain of ~700 instructions, longer
+// than the reorder window), and so that the exponentials and rational functions are
+// evaluated only where needed:
+//  1. interval and regime of every node (lanes; classifyNodes);
+//  2. the nodes in the closed-form regime are packed to the front (no branch;
+//     packClosedFormNodes);
+//  3. their three Gaussians (lanes; exponentialsInPlace);
+//  4. their two ends sorted by the interval of the scaled erfc, each list evaluated with
+//     its own rational function (lanes; one rational per end instead of three;
+//     erfcScaledPartsOfEnds);
+//  5. the formula (lanes), written to the node's place (closedFormOmegas);
+//  6. the ~1 node per parcel in regime A or B with the per-node code (exactOmegas).
+// Each stage is force-inlined into omegasInLanes: one function as the batched loop was
+// written and measured.
+
+// The stages' working memory, carved from PathWeightBatch::omegas's values (11 count
+// doubles) and indices (8 count + laneCount).
+struct Stages
+{
+    std::size_t count;     // nodes, a multiple of laneCount
+    std::size_t ends;      // 2 count: x1 of every node, then x2
+    double* x;             // x1 of every node, then x2
+    double* exponents;     // exponent0, 1, 2; then exp of them in place
+    double* numerators;    // erfc parts of |x1|, then |x2|
+    double* denominators;
+    double* width;
+    double* status;
+    std::uint32_t* node;   // packed position -> node
+    std::uint32_t* lists;  // stage 4: the ends per interval of the scaled erfc
+};
+
+DROPLETFIBER_ALWAYS_INLINE Stages stagesIn(std::size_t count, double* values, std::uint32_t* indices)
+{
+    Stages s;
+    s.count = count;
+    s.ends = 2 * count;
+    s.x = values;
+    s.exponents = s.x + s.ends;
+    s.numerators = s.exponents + 3 * count;
+    s.denominators = s.numerators + s.ends;
+    s.width = s.denominators + s.ends;
+    s.status = s.width + count;
+    s.node = indices;
+    s.lists = s.node + count + laneCount;
+    return s;
+}
+
+DROPLETFIBER_ALWAYS_INLINE PathIntegralClosedForm closedFormOf(const PathWeight& path)
 {
     const ParcelKernel& kernel = path.kernel();
     PathIntegralClosedForm closedForm;
@@ -103,137 +149,173 @@ void omegasInLanes(const PathWeight& path, const double* lambdaM, const double* 
     closedForm.inverseSqrtGamma = 1.0 / closedForm.sqrtGamma;
     closedForm.edgeExponent = kernel.edgeExponent();
     closedForm.edgeValue = kernel.edgeValue();
-    const double inverseLength = 1.0 / path.length();
-    // The negligible-weight cut (PathWeight::limitTo): nodes at or beyond it get 0, as in
-    // omegaFromOffset; applied by moving them out of reach in stage 1 (a select, no branch).
-    const Lanes cutoffSquared = splat<Lanes>(path.cutoffSquared());
+    return closedForm;
+}
+
+// 1. Every node's interval and regime; omega set to 0. The negligible-weight cut
+// (PathWeight::limitTo): nodes at or beyond it get 0, as in omegaFromOffset; applied by
+// moving them out of reach (a select, no branch).
+DROPLETFIBER_ALWAYS_INLINE void classifyNodes(const PathIntegralClosedForm& closedForm, double pathCutoffSquared,
+                                              const double* lambdaM, const double* d0Squared, double* omega,
+                                              const Stages& s)
+{
+    const Lanes cutoffSquared = splat<Lanes>(pathCutoffSquared);
     const Lanes outOfReach = splat<Lanes>(2.0 * closedForm.reachSquared);
-
-    // The stages of PathIntegralClosedForm as separate short loops, so that the processor
-    // overlaps many nodes (the whole formula is a dependency chain of ~700 instructions,
-    // longer than the reorder window), and so that the exponentials and rational functions
-    // are evaluated only where needed:
-    //  1. interval and regime of every node (lanes);
-    //  2. the nodes in the closed-form regime are packed to the front (no branch);
-    //  3. their three Gaussians (lanes);
-    //  4. their two ends sorted by the interval of the scaled erfc, each list evaluated
-    //     with its own rational function (lanes; one rational per end instead of three);
-    //  5. the formula (lanes), written to the node's place;
-    //  6. the ~1 node per parcel in regime A or B with the per-node code.
-    const std::size_t ends = 2 * count;
-    double* x = values;                        // x1 of every node, then x2
-    double* exponents = x + ends;              // exponent0, 1, 2; then exp of them in place
-    double* numerators = exponents + 3 * count; // erfc parts of |x1|, then |x2|
-    double* denominators = numerators + ends;
-    double* width = denominators + ends;
-    double* status = width + count;
-    std::uint32_t* node = indices; // packed position -> node
-    std::uint32_t* lists = node + count + laneCount;
-
-    for (std::size_t n = 0; n < count; n += laneCount) // 1.
+    for (std::size_t n = 0; n < s.count; n += laneCount)
     {
         const Lanes d0 = loadLanes(d0Squared + n);
         const PathIntegralClosedForm::Interval<Lanes> interval
             = closedForm.interval(loadLanes(lambdaM + n), select(d0 < cutoffSquared, d0, outOfReach));
-        storeLanes(x + n, interval.x1);
-        storeLanes(x + count + n, interval.x2);
-        storeLanes(exponents + n, interval.exponent0);
-        storeLanes(exponents + count + n, interval.exponent1);
-        storeLanes(exponents + 2 * count + n, interval.exponent2);
-        storeLanes(width + n, interval.width);
-        storeLanes(status + n, interval.status);
+        storeLanes(s.x + n, interval.x1);
+        storeLanes(s.x + s.count + n, interval.x2);
+        storeLanes(s.exponents + n, interval.exponent0);
+        storeLanes(s.exponents + s.count + n, interval.exponent1);
+        storeLanes(s.exponents + 2 * s.count + n, interval.exponent2);
+        storeLanes(s.width + n, interval.width);
+        storeLanes(s.status + n, interval.status);
         storeLanes(omega + n, splat<Lanes>(0.0));
     }
-    std::size_t packed = 0; // 2. (in place: packed <= n)
-    for (std::size_t n = 0; n < count; ++n)
+}
+
+// Copies the stage values of node `from` to packed position `to`.
+DROPLETFIBER_ALWAYS_INLINE void copyNodeStages(const Stages& s, std::size_t from, std::size_t to)
+{
+    s.x[to] = s.x[from];
+    s.x[s.count + to] = s.x[s.count + from];
+    for (std::size_t i = 0; i < 3; ++i)
     {
-        x[packed] = x[n];
-        x[count + packed] = x[count + n];
-        exponents[packed] = exponents[n];
-        exponents[count + packed] = exponents[count + n];
-        exponents[2 * count + packed] = exponents[2 * count + n];
-        width[packed] = width[n];
-        node[packed] = static_cast<std::uint32_t>(n);
-        packed += status[n] > 0.0 ? 1 : 0;
+        s.exponents[i * s.count + to] = s.exponents[i * s.count + from];
     }
-    if (packed > 0)
+    s.width[to] = s.width[from];
+}
+
+// 2. The nodes in the closed-form regime packed to the front (in place: packed <= n),
+// padded to whole lanes by repeating the last one. Returns their padded count.
+DROPLETFIBER_ALWAYS_INLINE std::size_t packClosedFormNodes(const Stages& s)
+{
+    std::size_t packed = 0;
+    for (std::size_t n = 0; n < s.count; ++n)
     {
-        // Pad to whole lanes by repeating the last packed node (count is a multiple of
-        // laneCount, so the padding stays within the arrays).
-        const std::size_t last = packed - 1;
-        while (packed % laneCount != 0)
+        copyNodeStages(s, n, packed);
+        s.node[packed] = static_cast<std::uint32_t>(n);
+        packed += s.status[n] > 0.0 ? 1 : 0;
+    }
+    if (packed == 0)
+    {
+        return 0;
+    }
+    // count is a multiple of laneCount, so the padding stays within the arrays.
+    const std::size_t last = packed - 1;
+    for (; packed % laneCount != 0; ++packed)
+    {
+        copyNodeStages(s, last, packed);
+        s.node[packed] = s.node[last];
+    }
+    return packed;
+}
+
+// 3. The three Gaussians of the packed nodes, exp of the exponents in place.
+DROPLETFIBER_ALWAYS_INLINE void exponentialsInPlace(const Stages& s, std::size_t packed)
+{
+    for (std::size_t i = 0; i < 3; ++i)
+    {
+        double* block = s.exponents + i * s.count;
+        for (std::size_t p = 0; p < packed; p += laneCount)
         {
-            x[packed] = x[last];
-            x[count + packed] = x[count + last];
-            for (int i = 0; i < 3; ++i)
-            {
-                exponents[i * count + packed] = exponents[i * count + last];
-            }
-            width[packed] = width[last];
-            node[packed] = node[last];
-            ++packed;
-        }
-        for (int i = 0; i < 3; ++i) // 3.
-        {
-            double* block = exponents + i * count;
-            for (std::size_t p = 0; p < packed; p += laneCount)
-            {
-                storeLanes(block + p, branchFreeExp(loadLanes(block + p)));
-            }
-        }
-        std::size_t listLength[3] = {0, 0, 0}; // 4. (the list is chosen by index, not by a branch)
-        for (const std::size_t first : {std::size_t(0), count})
-        {
-            for (std::size_t end = first; end < first + packed; ++end)
-            {
-                const int interval = erfcScaledInterval(std::abs(x[end]));
-                lists[static_cast<std::size_t>(interval) * ends + listLength[interval]] = static_cast<std::uint32_t>(end);
-                ++listLength[interval];
-            }
-        }
-        for (int interval = 0; interval < 3; ++interval)
-        {
-            std::uint32_t* list = lists + interval * ends;
-            if (listLength[interval] == 0)
-            {
-                continue;
-            }
-            // ends is a multiple of laneCount: padding stays within this list's part.
-            const std::size_t length = padToLanes(list, listLength[interval]);
-            if (interval == 0)
-            {
-                erfcScaledPartsAt<0>(list, length, x, numerators, denominators);
-            }
-            else if (interval == 1)
-            {
-                erfcScaledPartsAt<1>(list, length, x, numerators, denominators);
-            }
-            else
-            {
-                erfcScaledPartsAt<2>(list, length, x, numerators, denominators);
-            }
-        }
-        for (std::size_t p = 0; p < packed; p += laneCount) // 5.
-        {
-            PathIntegralClosedForm::Interval<Lanes> interval;
-            interval.x1 = loadLanes(x + p);
-            interval.x2 = loadLanes(x + count + p);
-            interval.width = loadLanes(width + p);
-            interval.status = splat<Lanes>(1.0);
-            const FractionOf<Lanes> parts1{loadLanes(numerators + p), loadLanes(denominators + p)};
-            const FractionOf<Lanes> parts2{loadLanes(numerators + count + p), loadLanes(denominators + count + p)};
-            const Lanes integral = closedForm.integral(interval, loadLanes(exponents + p), loadLanes(exponents + count + p),
-                                                       loadLanes(exponents + 2 * count + p), parts1, parts2);
-            scatterLanes(omega, node + p, integral * inverseLength);
+            storeLanes(block + p, branchFreeExp(loadLanes(block + p)));
         }
     }
-    for (std::size_t n = 0; n < count; ++n) // 6. (status < 0 only within the cut)
+}
+
+// 4. The scaled erfc's numerator and denominator at both ends of the packed nodes: the
+// ends listed per interval of the scaled erfc (the list chosen by index, not by a
+// branch), each list evaluated with its own rational function.
+DROPLETFIBER_ALWAYS_INLINE void erfcScaledPartsOfEnds(const Stages& s, std::size_t packed)
+{
+    std::size_t listLength[3] = {0, 0, 0};
+    for (const std::size_t first : {std::size_t(0), s.count})
     {
-        if (status[n] < 0.0)
+        for (std::size_t end = first; end < first + packed; ++end)
+        {
+            const int interval = erfcScaledInterval(std::abs(s.x[end]));
+            s.lists[static_cast<std::size_t>(interval) * s.ends + listLength[interval]] = static_cast<std::uint32_t>(end);
+            ++listLength[interval];
+        }
+    }
+    for (int interval = 0; interval < 3; ++interval)
+    {
+        std::uint32_t* list = s.lists + interval * s.ends;
+        if (listLength[interval] == 0)
+        {
+            continue;
+        }
+        // ends is a multiple of laneCount: padding stays within this list's part.
+        const std::size_t length = padToLanes(list, listLength[interval]);
+        if (interval == 0)
+        {
+            erfcScaledPartsAt<0>(list, length, s.x, s.numerators, s.denominators);
+        }
+        else if (interval == 1)
+        {
+            erfcScaledPartsAt<1>(list, length, s.x, s.numerators, s.denominators);
+        }
+        else
+        {
+            erfcScaledPartsAt<2>(list, length, s.x, s.numerators, s.denominators);
+        }
+    }
+}
+
+// 5. The closed form of the packed nodes, omega written to each node's place.
+DROPLETFIBER_ALWAYS_INLINE void closedFormOmegas(const PathIntegralClosedForm& closedForm, double inverseLength,
+                                                 const Stages& s, std::size_t packed, double* omega)
+{
+    for (std::size_t p = 0; p < packed; p += laneCount)
+    {
+        PathIntegralClosedForm::Interval<Lanes> interval;
+        interval.x1 = loadLanes(s.x + p);
+        interval.x2 = loadLanes(s.x + s.count + p);
+        interval.width = loadLanes(s.width + p);
+        interval.status = splat<Lanes>(1.0);
+        const FractionOf<Lanes> parts1{loadLanes(s.numerators + p), loadLanes(s.denominators + p)};
+        const FractionOf<Lanes> parts2{loadLanes(s.numerators + s.count + p), loadLanes(s.denominators + s.count + p)};
+        const Lanes integral
+            = closedForm.integral(interval, loadLanes(s.exponents + p), loadLanes(s.exponents + s.count + p),
+                                  loadLanes(s.exponents + 2 * s.count + p), parts1, parts2);
+        scatterLanes(omega, s.node + p, integral * inverseLength);
+    }
+}
+
+// 6. The nodes in regime A or B (status < 0, only within the cut) with the per-node code.
+DROPLETFIBER_ALWAYS_INLINE void exactOmegas(const PathWeight& path, double inverseLength, const double* lambdaM,
+                                            const double* d0Squared, const Stages& s, double* omega)
+{
+    for (std::size_t n = 0; n < s.count; ++n)
+    {
+        if (s.status[n] < 0.0)
         {
             omega[n] = path.integralAlongPath(lambdaM[n], d0Squared[n]) * inverseLength;
         }
     }
+}
+
+// PathWeightBatch::omegas with its working memory: values 11 count doubles, indices
+// 8 count + laneCount.
+void omegasInLanes(const PathWeight& path, const double* lambdaM, const double* d0Squared, double* omega,
+                   std::size_t count, double* values, std::uint32_t* indices)
+{
+    const PathIntegralClosedForm closedForm = closedFormOf(path);
+    const double inverseLength = 1.0 / path.length();
+    const Stages stages = stagesIn(count, values, indices);
+    classifyNodes(closedForm, path.cutoffSquared(), lambdaM, d0Squared, omega, stages);
+    const std::size_t packed = packClosedFormNodes(stages);
+    if (packed > 0)
+    {
+        exponentialsInPlace(stages, packed);
+        erfcScaledPartsOfEnds(stages, packed);
+        closedFormOmegas(closedForm, inverseLength, stages, packed, omega);
+    }
+    exactOmegas(path, inverseLength, lambdaM, d0Squared, stages, omega);
 }
 
 // PathWeightBatch::boxOmegas's projection: lambdaM and d0Squared of every node of the box
