@@ -1,5 +1,5 @@
 // collisionBench: cost of the stochastic collision evaluation, collisionMass(grid, a, b, ...)
-// (MODEL.md eq. 9 with the grid's window fields interpolated at the segment), in segments
+// (docs/model.md eq. 9 with the grid's window fields interpolated at the segment), in segments
 // per second, on the 2D and 3D grids of depositionBench, for 1e3 to 1e6 segments per call
 // sweep (to show the cost is linear in the number of segments and independent of where the
 // segments lie), with 1 sample per segment (the paper) and with automatic sampling (one

@@ -1,4 +1,4 @@
-// depositionBench: cost of DensityGrid::deposit (MODEL.md sec. 4, eqs. 19-26), in parcels
+// depositionBench: cost of DensityGrid::deposit (docs/model.md sec. 4, eqs. 19-26), in parcels
 // per second and nanoseconds per grid node, on 2D and 3D grids, for kernel reaches of
 // about 1, 3 and 10 node spacings and 1e3 to 1e7 parcels per step; plus, in the same run,
 // the cost of the elementary functions the kernel needs (exp, expm1, erf, erfc, the core's

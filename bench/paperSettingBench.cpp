@@ -1,5 +1,5 @@
 // paperSettingBench: the stochastic grid method against the explicit geometric method in
-// the paper's evaluation setting (Schroeder et al. 2011, sec. 6; MODEL.md sec. 5): cost per
+// the paper's evaluation setting (Schroeder et al. 2011, sec. 6; docs/model.md sec. 5): cost per
 // time step and statistical error of the droplet mass hitting a circular fiber, and the
 // speed ratio at equal statistical error.
 //

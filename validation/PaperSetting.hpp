@@ -1,5 +1,5 @@
 // PaperSetting: every physical and numerical value of the validation against section 6 of
-// Schröder et al. 2011 (MODEL.md sec. 5), in one place. Values the paper states are marked
+// Schröder et al. 2011 (docs/model.md sec. 5), in one place. Values the paper states are marked
 // "paper"; the others are our choice, the reason given beside each.
 //
 // Geometry of the paper's 2D test (its figure 6): droplets fly in the x-y plane; the
@@ -76,7 +76,7 @@ struct PaperSetting
                                         1.2e-2, 1.3e-2, 1.4e-2};
     std::vector<int> fig10Grids{100, 250};
 
-    // --- radius question (MODEL.md note under eq. 10) -------------------------------------
+    // --- radius question (docs/model.md note under eq. 10) -------------------------------------
     // Fiber radii down to the droplet size, where the mean radius matters most.
     std::vector<double> radiusStudyFiberRadii{2e-5, 5e-5, 1e-4, 2e-4, 5e-4, 1e-3, 2e-3};
 

@@ -141,10 +141,10 @@ def main():
     P = out.append
     P("# Validation against the paper: its section 6, reproduced and improved on")
     P("")
-    P("Schröder et al. 2011, *Stochastic Droplet-Fiber Collisions*, sec. 6 (MODEL.md sec. 5): the")
+    P("Schröder et al. 2011, *Stochastic Droplet-Fiber Collisions*, sec. 6 ([docs/model.md](model.md) sec. 5): the")
     P("collision mass of eq. 9 with the true density (*formula*), with the density grid of sec. 5.1")
-    P("(*grid*) and an explicit count of droplets hitting the fiber (*geometric*), in the paper's 2D")
-    P("box, for its four experiments (figures 7-10); then the radius question of MODEL.md (note")
+    P("(*grid*, docs/model.md sec. 4) and an explicit count of droplets hitting the fiber (*geometric*), in the paper's 2D")
+    P("box, for its four experiments (figures 7-10); then the radius question of docs/model.md sec. 3 (note")
     P("under eq. 10) and a study of what limits the grid method, with a setting that brings it")
     P("below 1 %. Core only (no OpenFOAM): `src/core/grid` (DensityGrid) and `src/core/collision`")
     P("(collisionMass) are used as they are; the validation code is in `validation/`.")
@@ -363,7 +363,7 @@ def main():
       f"r_F = {rad['fiberRadius'][0] * 1e6:.0f} um, {apct(rad['formulaNumber'][1] / rad['fine'][1] - 1)} at "
       f"{rad['fiberRadius'][1] * 1e6:.0f} um and still")
     P(f"{apct(rad['formulaNumber'][-1] / rad['fine'][-1] - 1)} at {rad['fiberRadius'][-1] * 1e3:.0f} mm — many standard "
-      f"errors. The reason (MODEL.md, note under eq. 10): droplets of")
+      f"errors. The reason (docs/model.md, note under eq. 10): droplets of")
     P("radius r_i hit within r_F + r_i, so the expected mass is sum_i rho_i 2 (r_F + r_i) |l x v| dt =")
     P("2 rho (r_F + <r>_mass) |l x v| dt exactly. The project's default `RadiusAverage::Mass` is")
     P("**confirmed**. The difference matters where r_F is a few droplet radii; in the paper's range")

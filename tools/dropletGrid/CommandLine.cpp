@@ -62,7 +62,7 @@ int parseCount(const std::string& flag, const std::string& text, int minimum)
 
 std::string usage()
 {
-    return R"(dropletGrid - droplet density grid from parcels (MODEL.md sec. 4) and, optionally,
+    return R"(dropletGrid - droplet density grid from parcels (docs/model.md sec. 4) and, optionally,
 the stochastic collision mass of fiber segments (eq. 9). No OpenFOAM needed.
 
 Usage:

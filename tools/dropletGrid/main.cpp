@@ -1,4 +1,4 @@
-// dropletGrid: command-line front end of the density grid (MODEL.md sec. 4) and the
+// dropletGrid: command-line front end of the density grid (docs/model.md sec. 4) and the
 // collision mass (eq. 9), for validation and for parcel data from outside OpenFOAM.
 // Reads parcels (one time step) from CSV, deposits them, writes the node fields and,
 // optionally, the collision mass of fiber segments. See --help (CommandLine.cpp).

@@ -1,5 +1,5 @@
 // CollisionMass: expected droplet mass (and momentum) that hits one fiber segment during
-// a time step, from the droplet field of a DensityGrid (MODEL.md sec. 2-3, eqs. 4-10):
+// a time step, from the droplet field of a DensityGrid (docs/model.md sec. 2-3, eqs. 4-10):
 //     m_coll = 2 rho (r_F + <r>) |l x v_rel| dt              (eq. 9, with the identity
 //                                                              under eq. 5: no division)
 //     I      = m_coll * u_droplet                            (eq. 7, momentum carried)
@@ -8,7 +8,7 @@
 // CollisionOptions::samples > 1, at the midpoints of that many equal sub-segments whose
 // contributions add up (a segment that spans several grid cells).
 //
-// Radius average <r> (see the note under eq. 10 in MODEL.md):
+// Radius average <r> (see the note under eq. 10 in docs/model.md):
 //   Mass   - sum n_i m_i r_i / sum n_i m_i. For droplets of radii r_i with number
 //            densities n_i, the expected collected mass is
 //            sum_i n_i m_i 2 (r_F + r_i) |l x v| dt = 2 rho (r_F + <r>_mass) |l x v| dt

@@ -1,4 +1,4 @@
-// BendingJoints: the discrete bending energy of a line strip (MODEL.md eq. 2, the
+// BendingJoints: the discrete bending energy of a line strip (docs/model.md eq. 2, the
 // -S_b d_ssss x term) as a sum over joints,
 //     E_b = sum_k (S_b / l*_k) |b_k|^2 / 2,   b_k = e_k - e_{k-1},   e_j = (x_{j+1}-x_j)/l_j,
 // with dual length l*_k = (l_{k-1} + l_k)/2 (a Hencky bar chain: rotational springs

@@ -1,5 +1,5 @@
 // DragModel: air drag on a slender fiber, per unit length, split into a normal and a
-// tangential resistance (the f_air of MODEL.md eq. 2):
+// tangential resistance (the f_air of docs/model.md eq. 2):
 //     f = c_n (w - (w.t) t) + c_t (w.t) t,    w = u_air - v_fiber,  t = unit tangent.
 // Models:
 //   none               f = 0.

@@ -1,4 +1,4 @@
-// EndCondition: how one end of a fiber is held (MODEL.md sec. 1 boundary conditions).
+// EndCondition: how one end of a fiber is held (docs/model.md sec. 1 boundary conditions).
 //   free    - no force, no moment (natural conditions of the bending operator);
 //   pinned  - end point position held, free rotation (no end moment);
 //   clamped - end point position and tangent held. The tangent is held in the

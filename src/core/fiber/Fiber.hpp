@@ -1,4 +1,4 @@
-// Fiber: one inextensible elastic fiber as a line strip of points (MODEL.md sec. 1,
+// Fiber: one inextensible elastic fiber as a line strip of points (docs/model.md sec. 1,
 // the FIDYST model): positions, velocities, fixed segment lengths, lumped point
 // masses that grow with captured droplet mass, tension per segment, and a boundary
 // condition at each end. Any number of points >= 2.

@@ -1,5 +1,5 @@
 // FiberDiagnostics: energies, mass, momentum and constraint error of one fiber
-// (MODEL.md sec. 1 bookkeeping; summed into StepReport by the solver).
+// (docs/model.md sec. 1 bookkeeping; summed into StepReport by the solver).
 #pragma once
 
 #include "fiber/Fiber.hpp"

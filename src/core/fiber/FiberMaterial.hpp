@@ -1,5 +1,5 @@
 // FiberMaterial: the solid properties of one fiber (radius, density, Young's modulus)
-// and the line quantities the dynamics needs from them (MODEL.md sec. 1):
+// and the line quantities the dynamics needs from them (docs/model.md sec. 1):
 // base line density rho_F pi r_F^2 and bending stiffness S_b = E pi r_F^4 / 4.
 #pragma once
 

@@ -1,4 +1,4 @@
-// FiberSolver: advances all fibers by one CFD time step (MODEL.md sec. 1).
+// FiberSolver: advances all fibers by one CFD time step (docs/model.md sec. 1).
 // Per step, in this order:
 //   1. droplet capture (optional): each segment's captured mass joins its two end
 //      points (half each) with the droplets' momentum - an inelastic merge that

@@ -1,4 +1,4 @@
-// ImplicitFiberStep: one implicit (sub-)step of MODEL.md eqs. 2-3 for one fiber.
+// ImplicitFiberStep: one implicit (sub-)step of docs/model.md eqs. 2-3 for one fiber.
 //
 // Scheme (theta-method on the constrained equations of motion, theta = 1/2: implicit
 // midpoint), unknowns y = x_{n+1} and the tensions lambda_j:

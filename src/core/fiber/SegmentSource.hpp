@@ -1,5 +1,5 @@
 // SegmentSource: droplet mass and momentum captured by one fiber segment in one CFD
-// step (the f_contact of MODEL.md eq. 2, from the collision model of sec. 3, eq. 7-9).
+// step (the f_contact of docs/model.md eq. 2, from the collision model of sec. 3, eq. 7-9).
 // The capture is inelastic: the mass joins the segment (half to each end point) and
 // its momentum is added, so fiber + droplet momentum is conserved.
 #pragma once

@@ -1,5 +1,5 @@
 // DensityGrid: droplet mass density, mean radius and mean velocity on a regular grid,
-// from parcels (MODEL.md sec. 4, eqs. 19-26). Per time step:
+// from parcels (docs/model.md sec. 4, eqs. 19-26). Per time step:
 //     for each parcel: deposit(parcel, dt)     -> the step's accumulator
 //     commitStep()                              -> the step enters the averaging window
 //     nodeValue(i, j, k), sample(point)         -> fields averaged over the window

@@ -1,4 +1,4 @@
-// GridSpec: geometry of the regular density grid of MODEL.md sec. 4 (nodes, spacing,
+// GridSpec: geometry of the regular density grid of docs/model.md sec. 4 (nodes, spacing,
 // node volume), IndexBox, an inclusive box of node indices, and forEachRow, the one loop
 // over a box's nodes row by row.
 //

@@ -1,5 +1,5 @@
 // MultilinearWeights: bilinear (2D) / trilinear (3D) interpolation weights of a point on
-// the grid (MODEL.md sec. 4, between nodes), also used as the mass-conserving fallback
+// the grid (docs/model.md sec. 4, between nodes), also used as the mass-conserving fallback
 // for a parcel whose kernel reaches no node (cloud-in-cell weights).
 //
 // Flat directions do not count: a 2D grid interpolates in its plane and ignores the

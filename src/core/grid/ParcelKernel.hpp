@@ -1,5 +1,5 @@
 // ParcelKernel: the truncated Gaussian by which one parcel spreads over the density grid
-// (MODEL.md sec. 4, eqs. 11-18): range of influence r_max (eq. 13), packing radius r_min
+// (docs/model.md sec. 4, eqs. 11-18): range of influence r_max (eq. 13), packing radius r_min
 // (eqs. 14-15, 2D or 3D), shape alpha (eq. 18) and phi(d) (eq. 12).
 //
 // Optional cap on the influence radius (KernelSettings::rMaxCap): r_max = r_p n grows

@@ -11,7 +11,7 @@
 // ends, erfc range) depend on the node and were mispredicted ~2.7 times per node, a third
 // of the time (docs/performance.md). Here every lane evaluates every candidate and selects.
 //
-// Formulas (MODEL.md eqs. 19-23; see PathWeight.hpp for lambda, lambda_m, d_0): the node is
+// Formulas (docs/model.md eqs. 19-23; see PathWeight.hpp for lambda, lambda_m, d_0): the node is
 // within reach for lambda in (lambda_m - h, lambda_m + h), h^2 = reach^2 - d_0^2; the
 // interval [lambda_1, lambda_2] is that chord clipped to the path [0, L]; u_i = lambda_i -
 // lambda_m, x_i = sqrt(gamma) u_i, g_i = exp(-gamma (d_0^2 + u_i^2)) (the kernel's Gaussian at

@@ -115,7 +115,7 @@ double grazingIntegral(double gamma, double edgeValue, double halfChord, double 
     return edgeValue * half * sum;
 }
 
-// Regime C: exp(-gamma d0^2) int_{x1}^{x2} exp(-x^2) dx in the closed form of MODEL.md,
+// Regime C: exp(-gamma d0^2) int_{x1}^{x2} exp(-x^2) dx in the closed form of docs/model.md sec. 4,
 // written with the kernel's Gaussians at the interval's ends, g_i = exp(-gamma (d0^2 + u_i^2))
 // (exp(-a) where the end is on the reach circle), and erfcScaled(x) = exp(x^2) erfc(x):
 //   0 <= x1 < x2:  sqrt(pi)/2 [g1 erfcScaled(x1) - g2 erfcScaled(x2)]
@@ -199,7 +199,7 @@ double PathWeight::integralAlongPath(double lambdaM, double d0Squared) const
         return gaussian - edgeValue * width;
     }
 
-    // Regime C: the closed form of MODEL.md.
+    // Regime C: the closed form of docs/model.md sec. 4.
     const double g1 = chord.clipped1 ? edgeValue : std::exp(-gamma * (d0Squared + u1 * u1));
     const double g2 = chord.clipped2 ? edgeValue : std::exp(-gamma * (d0Squared + u2 * u2));
     const double gaussian = closedFormGaussian(gamma, d0Squared, sqrtGamma_ * u1, sqrtGamma_ * u2, g1, g2);

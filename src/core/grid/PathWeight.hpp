@@ -1,11 +1,11 @@
 // PathWeight: the path-integrated kernel weight omega_g of one grid node for a parcel
-// that moves along a straight path during the step (MODEL.md eqs. 19-23):
+// that moves along a straight path during the step (docs/model.md eqs. 19-23):
 //     omega_g = integral_{tau_1}^{tau_2} phi(|p + tau v dt - g|) dtau,
 // tau in [0, 1] along the path, [tau_1, tau_2] = where the node is within the kernel's
 // reach, clipped to [0, 1] (so nodes whose nearest path point lies beyond an end of the
 // path, and paths that end inside the support, are handled by the same formula).
 //
-// Closed form (MODEL.md): with the along-path coordinate lambda = tau L (L = |v dt|),
+// Closed form (docs/model.md sec. 4): with the along-path coordinate lambda = tau L (L = |v dt|),
 // lambda_m = the node's projection on the path line, d_0 = the distance of the node from
 // that line, x = sqrt(gamma) (lambda - lambda_m):
 //     omega_g = [ exp(-gamma d_0^2) / sqrt(gamma) * int_{x_1}^{x_2} exp(-x^2) dx

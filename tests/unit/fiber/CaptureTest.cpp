@@ -1,4 +1,4 @@
-// Droplet capture (f_contact, MODEL.md sec. 1 and eq. 7): captured mass joins the
+// Droplet capture (f_contact, docs/model.md sec. 1 and eq. 7): captured mass joins the
 // segment and its momentum is added inelastically, so the momentum of fiber plus
 // captured droplets is conserved, and sigma (mass per length) grows.
 #include "FiberTestSupport.hpp"

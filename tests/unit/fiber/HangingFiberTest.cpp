@@ -1,5 +1,5 @@
 // A fiber pinned at its top hangs at rest: the multiplier of each segment is its
-// tension, which must equal g times the mass below it (MODEL.md eq. 2, T as the
+// tension, which must equal g times the mass below it (docs/model.md eq. 2, T as the
 // Lagrange multiplier of eq. 3). With lumped masses the mass below segment j is that
 // of points j+1..n-1, i.e. sigma (L - s_mid), the continuum tension at mid-segment.
 #include "FiberTestSupport.hpp"

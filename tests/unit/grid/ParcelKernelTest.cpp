@@ -1,4 +1,4 @@
-// Eqs. 12-18: the figure-4 check values of the paper (MODEL.md), and the defining
+// Eqs. 12-18: the figure-4 check values of the paper (docs/model.md sec. 4), and the defining
 // identities of r_min (packing, eqs. 14-15) and alpha (inflection point, eqs. 16-17)
 // checked from their definitions rather than from the formulas the code uses.
 #include "grid/ParcelKernel.hpp"
@@ -24,7 +24,7 @@ KernelSettings settings2D()
 TEST(ParcelKernel, Figure4CheckValues)
 {
     // Paper, figure 4: n = 1000, r_p = 1e-5 m, 2D, beta = 2.5 %. Values as printed
-    // (MODEL.md): r_max = 1e-2 m, r_min = 3.32e-4 m, alpha = 151.9, phi(0) = 1,
+    // (docs/model.md sec. 4): r_max = 1e-2 m, r_min = 3.32e-4 m, alpha = 151.9, phi(0) = 1,
     // phi(1 mm) = 0.219, phi(2 mm) = 0.0023. Tolerances = half a unit of the last digit.
     const ParcelKernel kernel(1e-5, 1000.0, settings2D(), 2);
     EXPECT_NEAR(kernel.rMax(), 1e-2, 1e-15);
