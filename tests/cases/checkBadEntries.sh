@@ -78,6 +78,26 @@ else
     grep -B2 -A4 "radiusAverage" log.oldPlace | head -20
 fi
 
+# A grid box that misses the fiber (at x = 0.05): the run goes on, warned
+# once that its 6 segments' collision samples lie outside the grid
+cp system/controlDict.good system/controlDict
+foamDictionary system/controlDict -entry "$fo/grid/lower" -set "(0.06 0 0)" > /dev/null
+foamDictionary system/controlDict -entry endTime -set 0.006 > /dev/null
+pimpleFoam > log.outside 2>&1
+status=$?
+if [ $status -eq 0 ] \
+    && grep -q "dropletFiber: 6 collision sample points of fiber segments lie outside the grid box at time 0.002" log.outside \
+    && grep -q "Enlarge grid lower (0.06 0 0)" log.outside \
+    && [ "$(grep -c "lie outside the grid box" log.outside)" -eq 1 ]
+then
+    passed=$((passed+1))
+    echo "ok: grid/lower = (0.06 0 0) -> warned once: $(grep -m1 "lie outside the grid box" log.outside)"
+else
+    failed=$((failed+1))
+    echo "FAILED: grid/lower = (0.06 0 0) (exit $status): no single warning about samples outside the grid; log:"
+    grep -A3 "outside the grid" log.outside | head -10
+fi
+
 cp system/controlDict.good system/controlDict
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
