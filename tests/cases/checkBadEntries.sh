@@ -10,9 +10,10 @@ passed=0; failed=0
 fo=functions/dropletFiber
 
 # expectError ENTRY VALUE PATTERN: set ENTRY to VALUE, run, expect PATTERN
+# (in a copy of $base, the good controlDict unless set)
 expectError() {
     local entry="$1" value="$2" pattern="$3"
-    cp system/controlDict.good system/controlDict
+    cp "${base:-system/controlDict.good}" system/controlDict
     if [ "$value" = "REMOVE" ]; then
         foamDictionary system/controlDict -entry "$fo/$entry" -remove > /dev/null
     else
@@ -44,6 +45,7 @@ expectError grid/vectorised 2 "Entry 'vectorised' is '2': allowed are true or fa
 expectError writeVtk 2 "Entry 'writeVtk' is '2': allowed are true or false"
 expectError gather fast "Entry 'gather' is 'fast': allowed are"
 expectError grid/radiusAverage median "Entry 'radiusAverage' is 'median': allowed are"
+expectError collision "{ radiusAverage median; }" "Entry 'radiusAverage' is 'median': allowed are"
 expectError fibers/maxSubSteps 0 "Entry 'maxSubSteps' is 0"
 expectError fibers/drag stokes "Entry 'drag' is 'stokes': allowed are"
 expectError collision "{ sampling everywhere; }" "Entry 'sampling' is 'everywhere'"
@@ -51,6 +53,51 @@ expectError air "{ rho -1.2; }" "Entry 'rho' is -1.2"
 expectError air "{ mu noSuchField; }" "Entry 'mu' names field 'noSuchField'"
 expectError fibers/fixed/across/points "((0.05 0.01 0.005))" "Entry 'points' has 1 points"
 expectError fibers/fixed/across/hold glued "Entry 'hold' is 'glued'"
+
+# radiusAverage, a collision option, in both places: stops
+cp system/controlDict.good system/controlDict.collisionMass
+foamDictionary system/controlDict.collisionMass -entry "$fo/collision" -set "{ radiusAverage mass; }" > /dev/null
+base=system/controlDict.collisionMass \
+    expectError grid/radiusAverage mass "Entry 'radiusAverage' is given in both 'grid' and 'collision'"
+
+# radiusAverage in its old place, grid: read, with a warning to move it
+cp system/controlDict.good system/controlDict
+foamDictionary system/controlDict -entry "$fo/grid/radiusAverage" -set number > /dev/null
+foamDictionary system/controlDict -entry endTime -set 0.004 > /dev/null
+pimpleFoam > log.oldPlace 2>&1
+status=$?
+if [ $status -eq 0 ] \
+    && grep -q "Entry 'radiusAverage' in 'grid' is read from its old place" log.oldPlace \
+    && grep -q "radiusAverage number" log.oldPlace
+then
+    passed=$((passed+1))
+    echo "ok: grid/radiusAverage = number -> read (radiusAverage number), with a warning to move it"
+else
+    failed=$((failed+1))
+    echo "FAILED: grid/radiusAverage = number (exit $status): no warning, or not read; log:"
+    grep -B2 -A4 "radiusAverage" log.oldPlace | head -20
+fi
+
+# A grid box that misses the fiber (at x = 0.05): the run goes on, warned
+# once that its 6 segments' collision samples lie outside the grid
+cp system/controlDict.good system/controlDict
+foamDictionary system/controlDict -entry "$fo/grid/lower" -set "(0.06 0 0)" > /dev/null
+foamDictionary system/controlDict -entry endTime -set 0.006 > /dev/null
+pimpleFoam > log.outside 2>&1
+status=$?
+if [ $status -eq 0 ] \
+    && grep -q "dropletFiber: 6 collision sample points of fiber segments lie outside the grid box at time 0.002" log.outside \
+    && grep -q "Enlarge grid lower (0.06 0 0)" log.outside \
+    && [ "$(grep -c "lie outside the grid box" log.outside)" -eq 1 ]
+then
+    passed=$((passed+1))
+    echo "ok: grid/lower = (0.06 0 0) -> warned once: $(grep -m1 "lie outside the grid box" log.outside)"
+else
+    failed=$((failed+1))
+    echo "FAILED: grid/lower = (0.06 0 0) (exit $status): no single warning about samples outside the grid; log:"
+    grep -A3 "outside the grid" log.outside | head -10
+fi
+
 cp system/controlDict.good system/controlDict
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

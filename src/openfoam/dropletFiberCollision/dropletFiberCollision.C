@@ -11,6 +11,7 @@ Description
 
 #include "dropletFiberCollision.H"
 #include "dictionaryChecks.H"
+#include "collisionSettings.H"
 #include "fiberStateIO.H"
 #include "fiberDistribution.H"
 #include "cloud.H"
@@ -39,141 +40,84 @@ namespace functionObjects
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::functionObjects::dropletFiberCollision::readGrid
+void Foam::functionObjects::dropletFiberCollision::readOutputAndClouds
 (
     const dictionary& dict
 )
 {
-    using namespace dropletFiber;
-    const dictionary gridDict = dict.subOrEmptyDict("grid");
-    const boundBox meshBox = mesh_.bounds();
+    // More digits than OpenFOAM's default: the table is compared across runs
+    dictionary fileDict(dict);
+    if (!fileDict.found("writePrecision"))
+    {
+        fileDict.add("writePrecision", 10);
+    }
+    writeFile::read(fileDict);
+    writeVtk_ = dropletFiber::getSwitch(dict, "writeVtk", true);
+    writeGridVtk_ = dropletFiber::getSwitch(dict, "writeGridVtk", true);
 
-    const vector lower = gridDict.lookupOrDefault<vector>("lower", meshBox.min());
-    const vector upper = gridDict.lookupOrDefault<vector>("upper", meshBox.max());
-    for (direction d = 0; d < vector::nComponents; ++d)
-    {
-        if (!(upper[d] > lower[d]))
-        {
-            FatalIOErrorInFunction(gridDict)
-                << "Entries 'lower' " << lower << " and 'upper' " << upper
-                << ": upper must be greater than lower in every direction "
-                << "(a flat direction of a 2D grid still needs its thickness)."
-                << exit(FatalIOError);
-        }
-    }
-
-    // A 2D mesh's empty direction is flat (one node layer) unless given
-    const Vector<label> geometricD = mesh_.geometricD();
-    Vector<label> nodes(50, 50, 50);
-    for (direction d = 0; d < vector::nComponents; ++d)
-    {
-        if (geometricD[d] < 0)
-        {
-            nodes[d] = 1;
-        }
-    }
-    if (gridDict.found("nodes") && gridDict.found("spacing"))
-    {
-        FatalIOErrorInFunction(gridDict)
-            << "Entries 'nodes' and 'spacing' are both given: give one."
-            << exit(FatalIOError);
-    }
-    if (gridDict.found("nodes"))
-    {
-        nodes = gridDict.get<Vector<label>>("nodes");
-    }
-    else if (gridDict.found("spacing"))
-    {
-        const scalar h = getPositive(gridDict, "spacing");
-        for (direction d = 0; d < vector::nComponents; ++d)
-        {
-            if (nodes[d] != 1)
-            {
-                nodes[d] = max(2, label(std::round((upper[d] - lower[d])/h)) + 1);
-            }
-        }
-    }
-    for (direction d = 0; d < vector::nComponents; ++d)
-    {
-        if (nodes[d] < 1)
-        {
-            FatalIOErrorInFunction(gridDict)
-                << "Entry 'nodes' is " << nodes
-                << ": allowed are at least 1 node per direction (1: a flat "
-                << "direction), and at least 2 directions with 2 or more."
-                << exit(FatalIOError);
-        }
-    }
-
-    gridSpec_.lower = dropletFiber::toEigen(lower);
-    gridSpec_.upper = dropletFiber::toEigen(upper);
-    gridSpec_.nodes = {{int(nodes.x()), int(nodes.y()), int(nodes.z())}};
-    checkedCoreCall(gridDict, [this]() { gridSpec_.validate(); });
-
-    averagingSteps_ = getLabelInRange(gridDict, "averagingSteps", 1, 1, 100000);
-    const scalar defaultBeta = 0.025;   // the paper's value
-    kernel_.beta =
-        getCheckedScalar
+    cloudNames_ = dict.lookupOrDefault<wordList>("clouds", wordList());
+    // direct: the kinematic parcel types read parcel by parcel, others through
+    // cloud::writeObjects; writeObjects: every cloud that way (the same values)
+    gatherWriteObjects_ =
+        dropletFiber::getChoice
         (
-            gridDict, "beta", &defaultBeta,
-            [](scalar b) { return b > 0 && b <= 1; },
-            "in (0, 1] (eq. 18; the paper uses 0.025)"
-        );
-    kernel_.rMaxCap = getNonNegative(gridDict, "rMaxCap", 0);
-    // Better than the paper (docs/validation.md): parcels whose kernel the grid
-    // cannot resolve are deposited with cloud-in-cell weights; 0 = the paper
-    kernel_.cloudInCellBelow = getNonNegative(gridDict, "cloudInCellBelow", 0.5);
-    // Nodes whose weight would be below this fraction of the parcel's largest
-    // are not evaluated (round-off level by default; 0 = exact tails)
-    const scalar defaultNegligible = 1e-17;
-    kernel_.negligibleWeight =
-        getCheckedScalar
-        (
-            gridDict, "negligibleWeight", &defaultNegligible,
-            [](scalar e) { return e >= 0 && e <= 1e-6; },
-            "in [0, 1e-6] (0: every node within reach is evaluated)"
-        );
-    // Node weights with the batched AVX2 + FMA loop where the CPU has it; false:
-    // node by node, the same results to the bit on every CPU (src/core/grid/KernelBuild.hpp)
-    kernel_.vectorised = getSwitch(gridDict, "vectorised", true);
-    const word dim =
-        getChoice(gridDict, "dimension", "automatic", {"automatic", "2", "3"});
-    kernel_.dimension =
-        dim == "2" ? ::dropletFiber::KernelDimension::TwoD
-      : dim == "3" ? ::dropletFiber::KernelDimension::ThreeD
-      : ::dropletFiber::KernelDimension::Automatic;
-    checkedCoreCall(gridDict, [this]() { kernel_.validate(); });
-
-    const word radius =
-        getChoice(gridDict, "radiusAverage", "mass", {"number", "mass"});
-    collision_.radiusAverage =
-        radius == "number"
-      ? ::dropletFiber::RadiusAverage::Number
-      : ::dropletFiber::RadiusAverage::Mass;
+            dict, "gather", "direct", {"direct", "writeObjects"}
+        ) == "writeObjects";
 }
 
 
-void Foam::functionObjects::dropletFiberCollision::readCollision
+void Foam::functionObjects::dropletFiberCollision::buildStatefulParts
 (
     const dictionary& dict
 )
 {
-    using namespace dropletFiber;
-    const dictionary collisionDict = dict.subOrEmptyDict("collision");
-    const word sampling =
-        getChoice(collisionDict, "sampling", "midpoint", {"midpoint", "integrated"});
-    // midpoint: one sample (the paper); integrated: samplesPerSegment equal
-    // sub-segments, 0 = one per grid spacing the segment spans
-    collision_.samples =
-        sampling == "midpoint"
-      ? 1
-      : int(getLabelInRange(collisionDict, "samplesPerSegment", 0, 0, 1000));
+    grid_.reset
+    (
+        dropletFiber::checkedCoreCall
+        (
+            dict,
+            [this]()
+            {
+                return new ::dropletFiber::DensityGrid
+                (
+                    gridSettings_.spec,
+                    gridSettings_.kernel,
+                    int(gridSettings_.averagingSteps)
+                );
+            }
+        )
+    );
+    const dictionary fibersDict = dict.subOrEmptyDict("fibers");
+    for (const auto& spec : dropletFiber::readFiberInjectors(fibersDict))
+    {
+        injectors_.emplace_back(spec);
+    }
+}
+
+
+void Foam::functionObjects::dropletFiberCollision::checkStatefulPartsUnchanged
+(
+    const dictionary& dict,
+    const dropletFiber::gridSettings& grid
+) const
+{
+    dropletFiber::checkGridUnchanged
+    (
+        gridSettings_, grid, dict.subOrEmptyDict("grid")
+    );
+    // dict_ is the dictionary in force: any earlier edit of these entries
+    // would have stopped the run
+    dropletFiber::checkFiberSourcesUnchanged
+    (
+        dict_.subOrEmptyDict("fibers"), dict.subOrEmptyDict("fibers")
+    );
 }
 
 
 void Foam::functionObjects::dropletFiberCollision::reportSettings() const
 {
-    const auto& g = gridSpec_;
+    const auto& g = gridSettings_.spec;
+    const auto& kernel = gridSettings_.kernel;
     Info<< type() << " " << name() << ":" << nl
         << "    clouds: ";
     if (cloudNames_.empty())
@@ -192,24 +136,22 @@ void Foam::functionObjects::dropletFiberCollision::reportSettings() const
     Info<< "    grid: (" << g.lower.x() << ' ' << g.lower.y() << ' ' << g.lower.z()
         << ") to (" << g.upper.x() << ' ' << g.upper.y() << ' ' << g.upper.z()
         << "), nodes (" << g.nodes[0] << ' ' << g.nodes[1] << ' ' << g.nodes[2]
-        << "), averagingSteps " << averagingSteps_
-        << ", beta " << kernel_.beta
-        << ", rMaxCap " << kernel_.rMaxCap
-        << ", cloudInCellBelow " << kernel_.cloudInCellBelow
-        << ", negligibleWeight " << kernel_.negligibleWeight
-        << ", vectorised " << Switch(kernel_.vectorised).c_str()
+        << "), averagingSteps " << gridSettings_.averagingSteps
+        << ", beta " << kernel.beta
+        << ", rMaxCap " << kernel.rMaxCap
+        << ", cloudInCellBelow " << kernel.cloudInCellBelow
+        << ", negligibleWeight " << kernel.negligibleWeight
+        << ", vectorised " << Switch(kernel.vectorised).c_str()
         << (
                grid_->batchedKernel()
              ? " (node weights: batched AVX2 + FMA)"
-             : kernel_.vectorised
+             : kernel.vectorised
              ? " (node weights: per node, this CPU has no AVX2 + FMA)"
              : " (node weights: per node)"
-           )
-        << ", radiusAverage "
-        << (collision_.radiusAverage == ::dropletFiber::RadiusAverage::Number
-            ? "number" : "mass") << nl
+           ) << nl
         << "    collision: samples per segment " << collision_.samples
-        << " (1: midpoint, 0: one per grid spacing)" << nl;
+        << " (1: midpoint, 0: one per grid spacing), radiusAverage "
+        << dropletFiber::radiusAverageName(collision_.radiusAverage) << nl;
     // Each rank asks its own CPU: on a cluster of mixed CPUs the ranks would
     // weight nodes with the two kernels, which agree to ~1e-14, not to the bit
     const bool batchedHere = grid_->batchedKernel();
@@ -232,8 +174,8 @@ void Foam::functionObjects::dropletFiberCollision::reportSettings() const
         << ::dropletFiber::dragModelName(s.drag.model).c_str()
         << ", theta " << s.theta << ", injectors " << label(injectors_.size())
         << ", fibers now " << label(fibers_.size()) << nl
-        << "    output: writeVtk " << writeVtk_ << ", writeGridVtk "
-        << writeGridVtk_ << nl << endl;
+        << "    output: writeVtk " << Switch(writeVtk_).c_str()
+        << ", writeGridVtk " << Switch(writeGridVtk_).c_str() << nl << endl;
 }
 
 
@@ -283,6 +225,21 @@ void Foam::functionObjects::dropletFiberCollision::gatherParcels()
 ::dropletFiber::StepStatistics
 Foam::functionObjects::dropletFiberCollision::depositParcels(const scalar dt)
 {
+    depositLocalParcels(dt);
+    sumStepAcrossProcessors();
+    const ::dropletFiber::StepStatistics local = grid_->stepStatistics();
+    grid_->commitStep();
+    const ::dropletFiber::StepStatistics stats = summedOverProcessors(local);
+    countCappedParcels(label(stats.parcelsCapped));
+    return stats;
+}
+
+
+void Foam::functionObjects::dropletFiberCollision::depositLocalParcels
+(
+    const scalar dt
+)
+{
     ::dropletFiber::DensityGrid& grid = *grid_;
     for (label i = 0; i < parcels_.size(); ++i)
     {
@@ -305,55 +262,67 @@ Foam::functionObjects::dropletFiberCollision::depositParcels(const scalar dt)
                 << e.what() << exit(FatalError);
         }
     }
+}
 
-    // Sum the step's accumulation across processors, over the union of the
-    // boxes of nodes the processors touched only
-    if (Pstream::parRun())
+
+::dropletFiber::IndexBox
+Foam::functionObjects::dropletFiberCollision::stepBoxOfAllProcessors() const
+{
+    // One reduction: max of (-lo, hi) (an empty box contributes nothing)
+    ::dropletFiber::IndexBox box = grid_->stepBox();
+    List<label> bounds(6, labelMin);
+    if (!box.empty())
     {
-        // The union of the processors' boxes in one reduction: max of
-        // (-lo, hi) (an empty box contributes nothing)
-        ::dropletFiber::IndexBox box = grid.stepBox();
-        List<label> bounds(6, labelMin);
-        if (!box.empty())
+        for (label d = 0; d < 3; ++d)
         {
-            for (label d = 0; d < 3; ++d)
-            {
-                bounds[d] = -box.lo[d];
-                bounds[3 + d] = box.hi[d];
-            }
-        }
-        Pstream::listCombineGather(bounds, maxEqOp<label>());
-        Pstream::listCombineScatter(bounds);
-        if (bounds[0] == labelMin)
-        {
-            box = ::dropletFiber::IndexBox{};
-        }
-        else
-        {
-            for (label d = 0; d < 3; ++d)
-            {
-                box.lo[d] = -bounds[d];
-                box.hi[d] = bounds[3 + d];
-            }
-        }
-        if (!box.empty())
-        {
-            // Packed straight into the message and read back from it
-            List<scalar> values
-            (
-                label(box.nodeCount()*::dropletFiber::nQuantities)
-            );
-            grid.packStep(box, values.data());
-            Pstream::listCombineGather(values, plusEqOp<scalar>());
-            Pstream::listCombineScatter(values);
-            grid.unpackStep(box, values.cdata(), std::size_t(values.size()));
+            bounds[d] = -box.lo[d];
+            bounds[3 + d] = box.hi[d];
         }
     }
+    Pstream::listCombineGather(bounds, maxEqOp<label>());
+    Pstream::listCombineScatter(bounds);
+    if (bounds[0] == labelMin)
+    {
+        return ::dropletFiber::IndexBox{};
+    }
+    for (label d = 0; d < 3; ++d)
+    {
+        box.lo[d] = -bounds[d];
+        box.hi[d] = bounds[3 + d];
+    }
+    return box;
+}
 
-    // This step's statistics, summed over processors (every member is a sum)
-    ::dropletFiber::StepStatistics stats = grid.stepStatistics();
-    grid.commitStep();
-    // One reduction for the four sums (the count is exact in a double)
+
+void Foam::functionObjects::dropletFiberCollision::sumStepAcrossProcessors()
+{
+    // Over the union of the boxes of nodes the processors touched only
+    if (!Pstream::parRun())
+    {
+        return;
+    }
+    const ::dropletFiber::IndexBox box = stepBoxOfAllProcessors();
+    if (box.empty())
+    {
+        return;
+    }
+    // Packed straight into the message and read back from it
+    List<scalar> values(label(box.nodeCount()*::dropletFiber::nQuantities));
+    grid_->packStep(box, values.data());
+    Pstream::listCombineGather(values, plusEqOp<scalar>());
+    Pstream::listCombineScatter(values);
+    grid_->unpackStep(box, values.cdata(), std::size_t(values.size()));
+}
+
+
+::dropletFiber::StepStatistics
+Foam::functionObjects::dropletFiberCollision::summedOverProcessors
+(
+    ::dropletFiber::StepStatistics stats
+)
+{
+    // One reduction for the four sums the function object uses (the count
+    // is exact in a double)
     List<scalar> sums(4);
     sums[0] = stats.massIn;
     sums[1] = stats.massDeposited;
@@ -364,19 +333,26 @@ Foam::functionObjects::dropletFiberCollision::depositParcels(const scalar dt)
     stats.massIn = sums[0];
     stats.massDeposited = sums[1];
     stats.massOutside = sums[2];
-    const label capped = label(sums[3]);
-    stats.parcelsCapped = capped;
+    stats.parcelsCapped = label(sums[3]);
+    return stats;
+}
 
+
+void Foam::functionObjects::dropletFiberCollision::countCappedParcels
+(
+    const label capped
+)
+{
     if (capped > 0 && totals_.parcelsCapped == 0)
     {
         WarningInFunction
             << type() << " " << name() << ": the influence radius of "
-            << capped << " parcels was capped at rMaxCap = " << kernel_.rMaxCap
+            << capped << " parcels was capped at rMaxCap = "
+            << gridSettings_.kernel.rMaxCap
             << " m at time " << time_.timeName() << nl
             << "    (warned once; the count is reported at write times)" << endl;
     }
     totals_.parcelsCapped += capped;
-    return stats;
 }
 
 
@@ -395,9 +371,10 @@ void Foam::functionObjects::dropletFiberCollision::injectFibers(const scalar t)
 
 
 ::dropletFiber::CaptureSources
-Foam::functionObjects::dropletFiberCollision::collide(const scalar dt) const
+Foam::functionObjects::dropletFiberCollision::collide(const scalar dt)
 {
     ::dropletFiber::CaptureSources capture(fibers_.size());
+    label samplesOutside = 0;
     for (std::size_t f = 0; f < fibers_.size(); ++f)
     {
         const ::dropletFiber::Fiber& fiber = fibers_[f];
@@ -426,9 +403,40 @@ Foam::functionObjects::dropletFiberCollision::collide(const scalar dt) const
                 );
             capture[f][j].mass = c.mass;
             capture[f][j].momentum = c.momentum;
+            samplesOutside += c.samplesOutside;
         }
     }
+    warnSamplesOutside(samplesOutside);
     return capture;
+}
+
+
+void Foam::functionObjects::dropletFiberCollision::warnSamplesOutside
+(
+    const label samplesOutside
+)
+{
+    // Once warned, no more reductions (the flag is the same on every
+    // processor: it follows a reduced count)
+    if (warnedSamplesOutside_)
+    {
+        return;
+    }
+    const label total = returnReduce(samplesOutside, sumOp<label>());
+    if (total > 0)
+    {
+        const auto& g = gridSettings_.spec;
+        WarningInFunction
+            << type() << " " << name() << ": " << total
+            << " collision sample points of fiber segments lie outside the"
+            << " grid box at time " << time_.timeName()
+            << ": those segments see no droplets there." << nl
+            << "    Enlarge grid lower (" << g.lower.x() << ' ' << g.lower.y()
+            << ' ' << g.lower.z() << ") / upper (" << g.upper.x() << ' '
+            << g.upper.y() << ' ' << g.upper.z() << ") to cover the fibers"
+            << " (warned once)." << endl;
+        warnedSamplesOutside_ = true;
+    }
 }
 
 
@@ -475,6 +483,23 @@ Foam::scalar Foam::functionObjects::dropletFiberCollision::fiberMass() const
 }
 
 
+Foam::scalar Foam::functionObjects::dropletFiberCollision::capturedMass
+(
+    const ::dropletFiber::CaptureSources& capture
+)
+{
+    scalar m = 0;
+    for (const auto& fiberCapture : capture)
+    {
+        for (const auto& segment : fiberCapture)
+        {
+            m += segment.mass;
+        }
+    }
+    return m;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::functionObjects::dropletFiberCollision::dropletFiberCollision
@@ -491,7 +516,7 @@ Foam::functionObjects::dropletFiberCollision::dropletFiberCollision
     gatherWriteObjects_(false),
     lastTimeIndex_(-1),
     parcels_(),
-    averagingSteps_(1),
+    warnedSamplesOutside_(false),
     writeVtk_(true),
     writeGridVtk_(true)
 {
@@ -535,60 +560,36 @@ Foam::functionObjects::dropletFiberCollision::~dropletFiberCollision() = default
 
 bool Foam::functionObjects::dropletFiberCollision::read(const dictionary& dict)
 {
+    // Called at construction, and again whenever the dictionary was edited
+    // during the run (runTimeModifiable): what carries no state is applied,
+    // an edit of what does stops the run (checkStatefulPartsUnchanged)
+    const bool running = bool(grid_);
     fvMeshFunctionObject::read(dict);
-    // More digits than OpenFOAM's default: the table is compared across runs
-    dictionary fileDict(dict);
-    if (!fileDict.found("writePrecision"))
-    {
-        fileDict.add("writePrecision", 10);
-    }
-    writeFile::read(fileDict);
-    dict_ = dict;
-
-    cloudNames_ = dict.lookupOrDefault<wordList>("clouds", wordList());
-    // direct: the kinematic parcel types read parcel by parcel, others through
-    // cloud::writeObjects; writeObjects: every cloud that way (the same values)
-    gatherWriteObjects_ =
-        dropletFiber::getChoice
-        (
-            dict, "gather", "direct", {"direct", "writeObjects"}
-        ) == "writeObjects";
-    readGrid(dict);
-    readCollision(dict);
+    readOutputAndClouds(dict);
+    const dropletFiber::gridSettings grid =
+        dropletFiber::readGridSettings(dict.subOrEmptyDict("grid"), mesh_);
+    collision_ = dropletFiber::readCollisionSettings(dict);
     air_.reset
     (
         new dropletFiber::airSampler(mesh_, dict.subOrEmptyDict("air"))
     );
-
-    const dictionary fibersDict = dict.subOrEmptyDict("fibers");
-    solverSettings_ = dropletFiber::readFiberSolverSettings(fibersDict, time_);
+    solverSettings_ =
+        dropletFiber::readFiberSolverSettings(dict.subOrEmptyDict("fibers"), time_);
     solver_.reset(new ::dropletFiber::FiberSolver(solverSettings_));
 
-    writeVtk_ = dropletFiber::getSwitch(dict, "writeVtk", true);
-    writeGridVtk_ = dropletFiber::getSwitch(dict, "writeGridVtk", true);
-
-    // The grid and the injectors carry state: built once (a change of these
-    // settings needs a new run)
-    if (!grid_)
+    if (running)
     {
-        grid_.reset
-        (
-            dropletFiber::checkedCoreCall
-            (
-                dict,
-                [this]()
-                {
-                    return new ::dropletFiber::DensityGrid
-                    (
-                        gridSpec_, kernel_, int(averagingSteps_)
-                    );
-                }
-            )
-        );
-        for (const auto& spec : dropletFiber::readFiberInjectors(fibersDict))
-        {
-            injectors_.emplace_back(spec);
-        }
+        checkStatefulPartsUnchanged(dict, grid);
+        dict_ = dict;
+        Info<< type() << " " << name() << ": settings re-read at time "
+            << time_.timeName() << nl;
+        reportSettings();
+    }
+    else
+    {
+        gridSettings_ = grid;
+        dict_ = dict;
+        buildStatefulParts(dict);
     }
     return true;
 }
@@ -604,19 +605,20 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
     lastTimeIndex_ = time_.timeIndex();
     const scalar t = time_.value();
     const scalar dt = time_.deltaTValue();
+    stepSummary step;
 
     // 1. The parcels of this step, on this processor
     clockValue depositionStart(true);
     gatherParcels();
-    const label nParcels = returnReduce(parcels_.size(), sumOp<label>());
-    const scalar nDroplets = returnReduce(parcels_.nDroplets(), sumOp<scalar>());
+    step.parcels = returnReduce(parcels_.size(), sumOp<label>());
+    step.droplets = returnReduce(parcels_.nDroplets(), sumOp<scalar>());
 
     // 2. Onto the grid; summed across processors; averaged over the window
-    const ::dropletFiber::StepStatistics deposit = depositParcels(dt);
-    totals_.parcelMass += deposit.massIn;
-    totals_.deposited += deposit.massDeposited;
-    totals_.outside += deposit.massOutside;
-    const scalar depositionTime = depositionStart.elapsed();
+    step.deposit = depositParcels(dt);
+    totals_.parcelMass += step.deposit.massIn;
+    totals_.deposited += step.deposit.massDeposited;
+    totals_.outside += step.deposit.massOutside;
+    step.depositionTime = depositionStart.elapsed();
 
     // 3. New fibers
     clockValue fiberStart(true);
@@ -629,67 +631,22 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
     // 5. Advance the fibers: capture, air drag, bending, inextensibility;
     //    afterwards every processor holds every fiber and its capture
     const ::dropletFiber::StepReport report = advanceFibers(dt, capture);
-    scalar capturedStep = 0;
-    for (const auto& fiberCapture : capture)
-    {
-        for (const auto& segment : fiberCapture)
-        {
-            capturedStep += segment.mass;
-        }
-    }
-    totals_.captured += capturedStep;
+    step.capturedStep = capturedMass(capture);
+    step.maxSegmentLengthError = report.maxSegmentLengthError;
+    step.subSteps = report.subSteps;
+    totals_.captured += step.capturedStep;
 
     // 6. Fibers that left
     removeLostFibers();
-    const scalar fiberTime = fiberStart.elapsed();
+    step.fiberTime = fiberStart.elapsed();
 
-    // 7. Report
-    Log << type() << " " << name() << ": parcels " << nParcels
-        << ", fibers " << label(fibers_.size())
-        << ", captured " << capturedStep << " kg (total " << totals_.captured
-        << " kg), segment-length error " << report.maxSegmentLengthError
-        << ", sub-steps " << report.subSteps << endl;
-
-    if (writeToFile())
-    {
-        OFstream& os = file();
-        writeCurrentTime(os);
-        os  << tab << label(fibers_.size())
-            << tab << nParcels
-            << tab << nDroplets
-            << tab << deposit.massIn
-            << tab << deposit.massDeposited
-            << tab << deposit.massOutside
-            << tab << capturedStep
-            << tab << totals_.captured
-            << tab << fiberMass()
-            << tab << report.maxSegmentLengthError
-            << tab << depositionTime
-            << tab << fiberTime
-            << endl;
-    }
-
+    // 7. Report; at write times the restart state and the mass balances
+    reportStep(step);
     if (time_.writeTime())
     {
         writeState();
-        const scalar balance =
-            totals_.fiberMassAdded + totals_.captured
-          - totals_.fiberMassRemoved - fiberMass();
-        Info<< type() << " " << name() << " conservation at time "
-            << time_.timeName() << ", summed over all steps so far:" << nl
-            << "    parcel mass " << totals_.parcelMass << " kg = on grid "
-            << totals_.deposited << " + outside it " << totals_.outside
-            << " (balance "
-            << totals_.parcelMass - totals_.deposited - totals_.outside
-            << " kg)" << nl
-            << "    fiber mass " << fiberMass() << " kg = added "
-            << totals_.fiberMassAdded << " + captured " << totals_.captured
-            << " - removed " << totals_.fiberMassRemoved
-            << " (balance " << balance << " kg)" << nl
-            << "    parcel-steps with the influence radius capped at rMaxCap: "
-            << totals_.parcelsCapped << nl << endl;
+        reportConservation();
     }
-
     return true;
 }
 

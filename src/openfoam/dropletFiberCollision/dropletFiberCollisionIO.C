@@ -41,6 +41,60 @@ void Foam::functionObjects::dropletFiberCollision::writeFileHeader
 }
 
 
+void Foam::functionObjects::dropletFiberCollision::reportStep
+(
+    const stepSummary& step
+)
+{
+    Log << type() << " " << name() << ": parcels " << step.parcels
+        << ", fibers " << label(fibers_.size())
+        << ", captured " << step.capturedStep << " kg (total "
+        << totals_.captured << " kg), segment-length error "
+        << step.maxSegmentLengthError << ", sub-steps " << step.subSteps
+        << endl;
+
+    if (writeToFile())
+    {
+        OFstream& os = file();
+        writeCurrentTime(os);
+        os  << tab << label(fibers_.size())
+            << tab << step.parcels
+            << tab << step.droplets
+            << tab << step.deposit.massIn
+            << tab << step.deposit.massDeposited
+            << tab << step.deposit.massOutside
+            << tab << step.capturedStep
+            << tab << totals_.captured
+            << tab << fiberMass()
+            << tab << step.maxSegmentLengthError
+            << tab << step.depositionTime
+            << tab << step.fiberTime
+            << endl;
+    }
+}
+
+
+void Foam::functionObjects::dropletFiberCollision::reportConservation() const
+{
+    const scalar balance =
+        totals_.fiberMassAdded + totals_.captured
+      - totals_.fiberMassRemoved - fiberMass();
+    Info<< type() << " " << name() << " conservation at time "
+        << time_.timeName() << ", summed over all steps so far:" << nl
+        << "    parcel mass " << totals_.parcelMass << " kg = on grid "
+        << totals_.deposited << " + outside it " << totals_.outside
+        << " (balance "
+        << totals_.parcelMass - totals_.deposited - totals_.outside
+        << " kg)" << nl
+        << "    fiber mass " << fiberMass() << " kg = added "
+        << totals_.fiberMassAdded << " + captured " << totals_.captured
+        << " - removed " << totals_.fiberMassRemoved
+        << " (balance " << balance << " kg)" << nl
+        << "    parcel-steps with the influence radius capped at rMaxCap: "
+        << totals_.parcelsCapped << nl << endl;
+}
+
+
 Foam::fileName Foam::functionObjects::dropletFiberCollision::statePath
 (
     const word& timeName
@@ -226,85 +280,104 @@ void Foam::functionObjects::dropletFiberCollision::writeVtkFiles()
 
     if (writeVtk_)
     {
-        // Fibers: points of all fibers one after another, a polyline each
-        std::vector<Eigen::Vector3d> points;
-        std::vector<std::size_t> offsets;
-        ::dropletFiber::VtkField velocity{"velocity", 3, {}};
-        ::dropletFiber::VtkField sigma{"sigma", 1, {}};
-        ::dropletFiber::VtkField captured{"capturedMass", 1, {}};
-        ::dropletFiber::VtkField fiberId{"fiberId", 1, {}};
-        ::dropletFiber::VtkField tension{"tension", 1, {}};
-        ::dropletFiber::VtkField segmentCaptured{"segmentCapturedMass", 1, {}};
-        for (std::size_t f = 0; f < fibers_.size(); ++f)
-        {
-            const auto& fiber = fibers_[f];
-            offsets.push_back(points.size());
-            const Eigen::VectorXd lineDensity = fiber.lineDensityAtPoints();
-            const Eigen::VectorXd& segCaptured = fiber.capturedMassPerSegment();
-            for (Eigen::Index i = 0; i < fiber.pointCount(); ++i)
-            {
-                points.push_back(fiber.positions().col(i));
-                for (int c = 0; c < 3; ++c)
-                {
-                    velocity.values.push_back(fiber.velocities()(c, i));
-                }
-                sigma.values.push_back(lineDensity(i));
-                // captured mass a point stands for: half of each neighbour segment
-                const double left = i > 0 ? 0.5*segCaptured(i - 1) : 0.0;
-                const double right =
-                    i < fiber.segmentCount() ? 0.5*segCaptured(i) : 0.0;
-                captured.values.push_back(left + right);
-                fiberId.values.push_back(double(f));
-            }
-            for (Eigen::Index j = 0; j < fiber.segmentCount(); ++j)
-            {
-                tension.values.push_back(fiber.tension()(j));
-                segmentCaptured.values.push_back(segCaptured(j));
-            }
-        }
-        const word file = "fibers_" + time_.timeName() + ".vtp";
-        ::dropletFiber::writePolylines
-        (
-            dir/file, t, points, offsets,
-            {velocity, sigma, captured, fiberId},
-            {tension, segmentCaptured}
-        );
-        fibersSeries_->add(file, t);
+        writeFibersVtk(dir, t);
     }
-
     if (writeGridVtk_)
     {
-        const ::dropletFiber::DensityGrid& grid = *grid_;
-        const auto& g = gridSpec_;
-        const std::size_t n = g.nodeCount();
-        ::dropletFiber::VtkField rho{"rho", 1, std::vector<double>(n)};
-        ::dropletFiber::VtkField rNumber{"rMeanNumber", 1, std::vector<double>(n)};
-        ::dropletFiber::VtkField rMass{"rMeanMass", 1, std::vector<double>(n)};
-        ::dropletFiber::VtkField U{"U", 3, std::vector<double>(3*n)};
-        for (std::size_t k = 0; k < n; ++k)
+        writeGridVtk(dir, t);
+    }
+}
+
+
+void Foam::functionObjects::dropletFiberCollision::writeFibersVtk
+(
+    const fileName& dir,
+    const scalar t
+)
+{
+    // Fibers: points of all fibers one after another, a polyline each
+    std::vector<Eigen::Vector3d> points;
+    std::vector<std::size_t> offsets;
+    ::dropletFiber::VtkField velocity{"velocity", 3, {}};
+    ::dropletFiber::VtkField sigma{"sigma", 1, {}};
+    ::dropletFiber::VtkField captured{"capturedMass", 1, {}};
+    ::dropletFiber::VtkField fiberId{"fiberId", 1, {}};
+    ::dropletFiber::VtkField tension{"tension", 1, {}};
+    ::dropletFiber::VtkField segmentCaptured{"segmentCapturedMass", 1, {}};
+    for (std::size_t f = 0; f < fibers_.size(); ++f)
+    {
+        const auto& fiber = fibers_[f];
+        offsets.push_back(points.size());
+        const Eigen::VectorXd lineDensity = fiber.lineDensityAtPoints();
+        const Eigen::VectorXd& segCaptured = fiber.capturedMassPerSegment();
+        for (Eigen::Index i = 0; i < fiber.pointCount(); ++i)
         {
-            const ::dropletFiber::DropletFieldValue v = grid.nodeValue(k);
-            rho.values[k] = v.rho;
-            rNumber.values[k] = v.rMeanNumber;
-            rMass.values[k] = v.rMeanMass;
+            points.push_back(fiber.positions().col(i));
             for (int c = 0; c < 3; ++c)
             {
-                U.values[3*k + c] = v.velocity(c);
+                velocity.values.push_back(fiber.velocities()(c, i));
             }
+            sigma.values.push_back(lineDensity(i));
+            // captured mass a point stands for: half of each neighbour segment
+            const double left = i > 0 ? 0.5*segCaptured(i - 1) : 0.0;
+            const double right =
+                i < fiber.segmentCount() ? 0.5*segCaptured(i) : 0.0;
+            captured.values.push_back(left + right);
+            fiberId.values.push_back(double(f));
         }
-        Eigen::Vector3d origin, spacing;
-        for (int d = 0; d < 3; ++d)
+        for (Eigen::Index j = 0; j < fiber.segmentCount(); ++j)
         {
-            origin(d) = g.nodeCoordinate(d, 0);
-            spacing(d) = g.spacing(d);  // a flat direction: its thickness
+            tension.values.push_back(fiber.tension()(j));
+            segmentCaptured.values.push_back(segCaptured(j));
         }
-        const word file = "grid_" + time_.timeName() + ".vti";
-        ::dropletFiber::writeImageData
-        (
-            dir/file, t, origin, spacing, g.nodes, {rho, rNumber, rMass, U}
-        );
-        gridSeries_->add(file, t);
     }
+    const word file = "fibers_" + time_.timeName() + ".vtp";
+    ::dropletFiber::writePolylines
+    (
+        dir/file, t, points, offsets,
+        {velocity, sigma, captured, fiberId},
+        {tension, segmentCaptured}
+    );
+    fibersSeries_->add(file, t);
+}
+
+
+void Foam::functionObjects::dropletFiberCollision::writeGridVtk
+(
+    const fileName& dir,
+    const scalar t
+)
+{
+    const ::dropletFiber::DensityGrid& grid = *grid_;
+    const auto& g = gridSettings_.spec;
+    const std::size_t n = g.nodeCount();
+    ::dropletFiber::VtkField rho{"rho", 1, std::vector<double>(n)};
+    ::dropletFiber::VtkField rNumber{"rMeanNumber", 1, std::vector<double>(n)};
+    ::dropletFiber::VtkField rMass{"rMeanMass", 1, std::vector<double>(n)};
+    ::dropletFiber::VtkField U{"U", 3, std::vector<double>(3*n)};
+    for (std::size_t k = 0; k < n; ++k)
+    {
+        const ::dropletFiber::DropletFieldValue v = grid.nodeValue(k);
+        rho.values[k] = v.rho;
+        rNumber.values[k] = v.rMeanNumber;
+        rMass.values[k] = v.rMeanMass;
+        for (int c = 0; c < 3; ++c)
+        {
+            U.values[3*k + c] = v.velocity(c);
+        }
+    }
+    Eigen::Vector3d origin, spacing;
+    for (int d = 0; d < 3; ++d)
+    {
+        origin(d) = g.nodeCoordinate(d, 0);
+        spacing(d) = g.spacing(d);  // a flat direction: its thickness
+    }
+    const word file = "grid_" + time_.timeName() + ".vti";
+    ::dropletFiber::writeImageData
+    (
+        dir/file, t, origin, spacing, g.nodes, {rho, rNumber, rMass, U}
+    );
+    gridSeries_->add(file, t);
 }
 
 // ************************************************************************* //

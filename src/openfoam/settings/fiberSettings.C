@@ -9,6 +9,7 @@
 #include "IOobject.H"
 #include "IFstream.H"
 #include "vectorList.H"
+#include "OStringStream.H"
 
 // * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * //
 
@@ -207,5 +208,52 @@ Foam::dropletFiber::readFixedFibers(const dictionary& fibersDict)
     }
     return fibers;
 }
+
+
+void Foam::dropletFiber::checkFiberSourcesUnchanged
+(
+    const dictionary& runningFibersDict,
+    const dictionary& editedFibersDict
+)
+{
+    // Compared as written (tokens, not layout or comments)
+    auto entryText = [](const dictionary& dict, const word& key) -> string
+    {
+        const entry* e = dict.findEntry(key, keyType::LITERAL);
+        if (!e)
+        {
+            return "no entry";
+        }
+        OStringStream os;
+        if (e->isDict())
+        {
+            os << e->dict();
+        }
+        else
+        {
+            os << e->stream().toString();
+        }
+        return os.str();
+    };
+    for
+    (
+        const word key
+      : {"radius", "density", "youngsModulus", "points", "injectors", "fixed"}
+    )
+    {
+        const string running = entryText(runningFibersDict, key);
+        const string edited = entryText(editedFibersDict, key);
+        if (running != edited)
+        {
+            stopEditedEntry
+            (
+                editedFibersDict, key, running, edited,
+                "The injectors count the fibers they gave and the fibers"
+                " carry their material"
+            );
+        }
+    }
+}
+
 
 // ************************************************************************* //

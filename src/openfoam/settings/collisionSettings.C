@@ -1,0 +1,101 @@
+/*---------------------------------------------------------------------------*\
+  dropletFiber: stochastic droplet-fiber coupling for OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "collisionSettings.H"
+#include "dictionaryChecks.H"
+
+// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
+
+namespace
+{
+
+using namespace Foam;
+
+//- Sample points per segment: midpoint 1 (the paper); integrated:
+//  samplesPerSegment equal sub-segments, 0 = one per grid spacing spanned
+int readSamples(const dictionary& collisionDict)
+{
+    const word sampling =
+        Foam::dropletFiber::getChoice
+        (
+            collisionDict, "sampling", "midpoint", {"midpoint", "integrated"}
+        );
+    return
+        sampling == "midpoint"
+      ? 1
+      : int
+        (
+            Foam::dropletFiber::getLabelInRange
+            (
+                collisionDict, "samplesPerSegment", 0, 0, 1000
+            )
+        );
+}
+
+
+//- The dictionary radiusAverage is read from: collision, or grid (its old
+//  place, with a warning); both stop the run
+const dictionary& radiusAverageDict
+(
+    const dictionary& collisionDict,
+    const dictionary& gridDict
+)
+{
+    const bool inCollision = collisionDict.found("radiusAverage");
+    const bool inGrid = gridDict.found("radiusAverage");
+    if (inCollision && inGrid)
+    {
+        FatalIOErrorInFunction(gridDict)
+            << "Entry 'radiusAverage' is given in both 'grid' and "
+            << "'collision': give it in 'collision' only (a collision "
+            << "option, the mean radius of eq. 9)." << exit(FatalIOError);
+    }
+    if (inGrid)
+    {
+        IOWarningInFunction(gridDict)
+            << "Entry 'radiusAverage' in 'grid' is read from its old place:"
+            << " move it to the 'collision' sub-dictionary (a collision"
+            << " option, the mean radius of eq. 9)." << endl;
+        return gridDict;
+    }
+    return collisionDict;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * //
+
+::dropletFiber::CollisionOptions Foam::dropletFiber::readCollisionSettings
+(
+    const dictionary& dict
+)
+{
+    const dictionary collisionDict = dict.subOrEmptyDict("collision");
+    const dictionary gridDict = dict.subOrEmptyDict("grid");
+    ::dropletFiber::CollisionOptions options;
+    options.samples = readSamples(collisionDict);
+    const word radius =
+        getChoice
+        (
+            radiusAverageDict(collisionDict, gridDict),
+            "radiusAverage", "mass", {"number", "mass"}
+        );
+    options.radiusAverage =
+        radius == "number"
+      ? ::dropletFiber::RadiusAverage::Number
+      : ::dropletFiber::RadiusAverage::Mass;
+    return options;
+}
+
+
+Foam::word Foam::dropletFiber::radiusAverageName
+(
+    const ::dropletFiber::RadiusAverage average
+)
+{
+    return average == ::dropletFiber::RadiusAverage::Number ? "number" : "mass";
+}
+
+// ************************************************************************* //
