@@ -31,7 +31,8 @@ struct Clock
     using time_point = double;
     static bool wall()
     {
-        static const bool useWall = [] {
+        static const bool useWall = []
+        {
             const char* v = std::getenv("BENCH_CLOCK");
             return v != nullptr && std::string(v) == "wall";
         }();
@@ -53,8 +54,8 @@ inline double secondsSince(Clock::time_point start)
 
 struct Timing
 {
-    double best = 0.0;   // s
-    double worst = 0.0;  // s
+    double best = 0.0;  // s
+    double worst = 0.0; // s
     int repeats = 0;
     double spreadPercent() const { return best > 0.0 ? 100.0 * (worst - best) / best : 0.0; }
 };
@@ -81,7 +82,8 @@ Timing timeRepeated(int repeats, Setup&& setup, Work&& work)
 template <class Work>
 Timing timeRepeated(int repeats, Work&& work)
 {
-    return timeRepeated(repeats, [] {}, work);
+    return timeRepeated(
+        repeats, [] {}, work);
 }
 
 // splitmix64: fast, deterministic, good enough for positions and directions.

@@ -266,8 +266,8 @@ public:
                             continue;
                         }
                         stamp_[k] = queryId_;
-                        const ClosestPoints cp
-                            = closestPointsSegmentSegment(start, displacement, segments_.start[k], segments_.vector[k]);
+                        const ClosestPoints cp = closestPointsSegmentSegment(
+                            start, displacement, segments_.start[k], segments_.vector[k]);
                         if (cp.distanceSquared < reachSquared)
                         {
                             if (!any)
@@ -295,13 +295,16 @@ private:
     {
         for (int d = 0; d < 3; ++d)
         {
-            lo[d] = std::clamp(static_cast<int>(std::floor((low[d] - lower_[d]) * inverseCell_)), 0, dims_[d] - 1);
-            hi[d] = std::clamp(static_cast<int>(std::floor((high[d] - lower_[d]) * inverseCell_)), 0, dims_[d] - 1);
+            lo[d] = std::clamp(static_cast<int>(std::floor((low[d] - lower_[d]) * inverseCell_)), 0,
+                               dims_[d] - 1);
+            hi[d] = std::clamp(static_cast<int>(std::floor((high[d] - lower_[d]) * inverseCell_)), 0,
+                               dims_[d] - 1);
         }
     }
     std::size_t flat(int x, int y, int z) const
     {
-        return static_cast<std::size_t>(x) + static_cast<std::size_t>(dims_[0]) * (y + static_cast<std::size_t>(dims_[1]) * z);
+        return static_cast<std::size_t>(x)
+            + static_cast<std::size_t>(dims_[0]) * (y + static_cast<std::size_t>(dims_[1]) * z);
     }
 
     const FiberSegments& segments_;

@@ -56,8 +56,8 @@ int main(int argc, char** argv)
     const Eigen::Vector3d segmentVelocity(0.1, 0.0, 0.0);
 
     std::printf("== collisionBench: collisionMass(grid, segment) per segment ==\n");
-    std::printf("%3s %8s %8s %8s | %11s %9s %7s | %6s %5s\n", "dim", "samples", "len/h", "segments", "Msegment/s",
-                "ns/seg", "lin", "spread", "reps");
+    std::printf("%3s %8s %8s %8s | %11s %9s %7s | %6s %5s\n", "dim", "samples", "len/h", "segments",
+                "Msegment/s", "ns/seg", "lin", "spread", "reps");
     for (int dimension : {2, 3})
     {
         const GridSpec spec = makeSpec(dimension);
@@ -102,13 +102,15 @@ int main(int argc, char** argv)
                         direction = Eigen::Vector3d(rng.uniform(-1, 1), rng.uniform(-1, 1),
                                                     dimension == 3 ? rng.uniform(-1, 1) : 0.0);
                     }
-                    direction += 0.3 * Eigen::Vector3d(rng.uniform(-1, 1), rng.uniform(-1, 1),
-                                                       dimension == 3 ? rng.uniform(-1, 1) : 0.0);
+                    direction += 0.3
+                        * Eigen::Vector3d(rng.uniform(-1, 1), rng.uniform(-1, 1),
+                                          dimension == 3 ? rng.uniform(-1, 1) : 0.0);
                     direction.normalize();
                     Eigen::Vector3d next = point + length * direction;
                     for (int d = 0; d < 3; ++d)
                     {
-                        if (!spec.flat(d) && (next[d] < spec.lower[d] + length || next[d] > spec.upper[d] - length))
+                        if (!spec.flat(d)
+                            && (next[d] < spec.lower[d] + length || next[d] > spec.upper[d] - length))
                         {
                             direction[d] = -direction[d]; // turn back at the walls
                         }
@@ -125,18 +127,22 @@ int main(int argc, char** argv)
                 const int inner = static_cast<int>(std::max(1.0, 2e5 / count));
                 double totalMass = 0.0;
                 long totalSamples = 0;
-                const bench::Timing t = bench::timeRepeated(repeats, [&] {
-                    for (int r = 0; r < inner; ++r)
-                    {
-                        for (const Segment& s : segments)
-                        {
-                            const SegmentCollision c
-                                = collisionMass(grid, s.a, s.b, fiberRadius, segmentVelocity, dt, options);
-                            totalMass += c.mass;
-                            totalSamples += c.samples;
-                        }
-                    }
-                });
+                const bench::Timing t
+                    = bench::timeRepeated(repeats,
+                                          [&]
+                                          {
+                                              for (int r = 0; r < inner; ++r)
+                                              {
+                                                  for (const Segment& s : segments)
+                                                  {
+                                                      const SegmentCollision c
+                                                          = collisionMass(grid, s.a, s.b, fiberRadius,
+                                                                          segmentVelocity, dt, options);
+                                                      totalMass += c.mass;
+                                                      totalSamples += c.samples;
+                                                  }
+                                              }
+                                          });
                 bench::sink(totalMass);
                 const double ns = t.best / (count * inner) * 1e9;
                 if (count == 1e3)
@@ -144,8 +150,8 @@ int main(int argc, char** argv)
                     baseline = ns;
                 }
                 std::printf("%3d %8s %8.1f %8s | %11.2f %9.1f %7.2f | %5.1f%% %5d\n", dimension,
-                            mode == 0 ? "1" : "auto", length / 5e-4, bench::formatCount(count).c_str(), 1e3 / ns, ns,
-                            ns / baseline, t.spreadPercent(), t.repeats);
+                            mode == 0 ? "1" : "auto", length / 5e-4, bench::formatCount(count).c_str(),
+                            1e3 / ns, ns, ns / baseline, t.spreadPercent(), t.repeats);
                 if (mode == 1 && count == 1e3)
                 {
                     std::printf("    (auto: %.2f samples per segment)\n",

@@ -58,29 +58,33 @@ ElementaryCost measureFunction(const char* name, const std::vector<double>& inpu
     const std::size_t n = inputs.size();
     const int rounds = 400;
     // throughput: independent calls, results summed
-    const bench::Timing through = bench::timeRepeated(5, [&] {
-        double s = 0.0;
-        for (int r = 0; r < rounds; ++r)
-        {
-            for (std::size_t i = 0; i < n; ++i)
-            {
-                s += f(inputs[i]);
-            }
-        }
-        bench::sink(s);
-    });
+    const bench::Timing through = bench::timeRepeated(5,
+                                                      [&]
+                                                      {
+                                                          double s = 0.0;
+                                                          for (int r = 0; r < rounds; ++r)
+                                                          {
+                                                              for (std::size_t i = 0; i < n; ++i)
+                                                              {
+                                                                  s += f(inputs[i]);
+                                                              }
+                                                          }
+                                                          bench::sink(s);
+                                                      });
     // latency: the next argument depends on the previous result (tiny perturbation)
-    const bench::Timing latency = bench::timeRepeated(5, [&] {
-        double carry = 0.0;
-        for (int r = 0; r < rounds; ++r)
-        {
-            for (std::size_t i = 0; i < n; ++i)
-            {
-                carry = f(inputs[i] + feedScale * carry);
-            }
-        }
-        bench::sink(carry);
-    });
+    const bench::Timing latency = bench::timeRepeated(5,
+                                                      [&]
+                                                      {
+                                                          double carry = 0.0;
+                                                          for (int r = 0; r < rounds; ++r)
+                                                          {
+                                                              for (std::size_t i = 0; i < n; ++i)
+                                                              {
+                                                                  carry = f(inputs[i] + feedScale * carry);
+                                                              }
+                                                          }
+                                                          bench::sink(carry);
+                                                      });
     const double calls = static_cast<double>(rounds) * static_cast<double>(n);
     return {name, through.best / calls * 1e9, latency.best / calls * 1e9};
 }
@@ -100,21 +104,30 @@ std::vector<ElementaryCost> measureElementary()
         x = rng.uniform(0.0, 0.25); // expm1 of regime A
     }
     std::vector<ElementaryCost> costs;
-    costs.push_back(measureFunction("add (loop overhead)", kernelArgs, [](double x) { return x; }, 1e-300));
-    costs.push_back(measureFunction("std::exp", kernelArgs, [](double x) { return std::exp(x); }, 1e-300));
-    costs.push_back(measureFunction("std::expm1", smallArgs, [](double x) { return std::expm1(x); }, 1e-300));
-    costs.push_back(measureFunction("std::erf", erfArgs, [](double x) { return std::erf(x); }, 1e-300));
-    costs.push_back(measureFunction("std::erfc", erfArgs, [](double x) { return std::erfc(x); }, 1e-300));
-    costs.push_back(measureFunction("erfcScaledFraction (core)", erfArgs,
-                                    [](double x) {
-                                        const Fraction f = erfcScaledFraction(x);
-                                        return f.numerator + f.denominator;
-                                    },
-                                    1e-300));
-    costs.push_back(measureFunction("erfcScaled = num/den (core)", erfArgs, [](double x) { return erfcScaled(x); },
-                                    1e-300));
-    costs.push_back(measureFunction("division 1/x", erfArgs, [](double x) { return 1.0 / (x + 1.0); }, 1e-300));
-    costs.push_back(measureFunction("std::sqrt", erfArgs, [](double x) { return std::sqrt(x); }, 1e-300));
+    costs.push_back(measureFunction(
+        "add (loop overhead)", kernelArgs, [](double x) { return x; }, 1e-300));
+    costs.push_back(measureFunction(
+        "std::exp", kernelArgs, [](double x) { return std::exp(x); }, 1e-300));
+    costs.push_back(measureFunction(
+        "std::expm1", smallArgs, [](double x) { return std::expm1(x); }, 1e-300));
+    costs.push_back(measureFunction(
+        "std::erf", erfArgs, [](double x) { return std::erf(x); }, 1e-300));
+    costs.push_back(measureFunction(
+        "std::erfc", erfArgs, [](double x) { return std::erfc(x); }, 1e-300));
+    costs.push_back(measureFunction(
+        "erfcScaledFraction (core)", erfArgs,
+        [](double x)
+        {
+            const Fraction f = erfcScaledFraction(x);
+            return f.numerator + f.denominator;
+        },
+        1e-300));
+    costs.push_back(measureFunction(
+        "erfcScaled = num/den (core)", erfArgs, [](double x) { return erfcScaled(x); }, 1e-300));
+    costs.push_back(measureFunction(
+        "division 1/x", erfArgs, [](double x) { return 1.0 / (x + 1.0); }, 1e-300));
+    costs.push_back(measureFunction(
+        "std::sqrt", erfArgs, [](double x) { return std::sqrt(x); }, 1e-300));
     return costs;
 }
 
@@ -132,18 +145,20 @@ Bandwidth measureBandwidth(std::size_t bytes)
 {
     std::vector<double> a(bytes / sizeof(double), 1.0);
     const std::size_t sweeps = std::max<std::size_t>(1, (std::size_t(1) << 31) / bytes);
-    const bench::Timing t = bench::timeRepeated(3, [&] {
-        for (std::size_t s = 0; s < sweeps; ++s)
-        {
-            double* p = a.data();
-            const std::size_t n = a.size();
-            for (std::size_t i = 0; i < n; ++i)
-            {
-                p[i] = p[i] * 0.999 + 1e-3;
-            }
-        }
-        bench::sink(a[a.size() / 2]);
-    });
+    const bench::Timing t = bench::timeRepeated(3,
+                                                [&]
+                                                {
+                                                    for (std::size_t s = 0; s < sweeps; ++s)
+                                                    {
+                                                        double* p = a.data();
+                                                        const std::size_t n = a.size();
+                                                        for (std::size_t i = 0; i < n; ++i)
+                                                        {
+                                                            p[i] = p[i] * 0.999 + 1e-3;
+                                                        }
+                                                    }
+                                                    bench::sink(a[a.size() / 2]);
+                                                });
     return {bytes, 2.0 * static_cast<double>(bytes) * static_cast<double>(sweeps) / t.best / 1e9};
 }
 
@@ -151,7 +166,7 @@ Bandwidth measureBandwidth(std::size_t bytes)
 // Deposition
 // ---------------------------------------------------------------------------------------
 
-constexpr double spacing = 5e-4;      // h, m
+constexpr double spacing = 5e-4;       // h, m
 constexpr double dropletRadius = 1e-5; // r_p, m
 constexpr double dt = 1e-4;            // s
 
@@ -186,7 +201,8 @@ std::vector<Parcel> makeParcels(const GridSpec& spec, int dimension, double reac
         Eigen::Vector3d direction;
         do
         {
-            direction = Eigen::Vector3d(rng.uniform(-1, 1), rng.uniform(-1, 1), dimension == 3 ? rng.uniform(-1, 1) : 0.0);
+            direction = Eigen::Vector3d(rng.uniform(-1, 1), rng.uniform(-1, 1),
+                                        dimension == 3 ? rng.uniform(-1, 1) : 0.0);
         } while (direction.squaredNorm() > 1.0 || direction.squaredNorm() < 1e-4);
         direction.normalize();
         for (int d = 0; d < 3; ++d)
@@ -212,7 +228,8 @@ std::vector<Parcel> makeParcels(const GridSpec& spec, int dimension, double reac
 // Lagrangian cloud): better cache locality of the grid updates.
 void sortByNode(const GridSpec& spec, std::vector<Parcel>& parcels)
 {
-    auto key = [&](const Parcel& p) {
+    auto key = [&](const Parcel& p)
+    {
         std::array<int, 3> idx{{0, 0, 0}};
         for (int d = 0; d < 3; ++d)
         {
@@ -223,16 +240,17 @@ void sortByNode(const GridSpec& spec, std::vector<Parcel>& parcels)
         }
         return spec.flatIndex(idx[0], idx[1], idx[2]);
     };
-    std::sort(parcels.begin(), parcels.end(), [&](const Parcel& a, const Parcel& b) { return key(a) < key(b); });
+    std::sort(parcels.begin(), parcels.end(),
+              [&](const Parcel& a, const Parcel& b) { return key(a) < key(b); });
 }
 
 struct DepositionResult
 {
     bool skipped = false;
     double estimateSeconds = 0.0;
-    double depositSeconds = 0.0;  // best, per step
-    double commitSeconds = 0.0;   // best, per step
-    double spreadPercent = 0.0;   // of the deposit time
+    double depositSeconds = 0.0; // best, per step
+    double commitSeconds = 0.0;  // best, per step
+    double spreadPercent = 0.0;  // of the deposit time
     int repeats = 0;
     double visitedPerParcel = 0.0;
     double weightedPerParcel = 0.0;
@@ -241,7 +259,8 @@ struct DepositionResult
     double touchedBoxFraction = 0.0; // stepBox nodes / grid nodes
 };
 
-DepositionResult runDeposition(DensityGrid& grid, const std::vector<Parcel>& pool, std::size_t parcels, int repeats)
+DepositionResult runDeposition(DensityGrid& grid, const std::vector<Parcel>& pool, std::size_t parcels,
+                               int repeats)
 {
     DepositionResult result;
     result.repeats = repeats;
@@ -268,9 +287,12 @@ DepositionResult runDeposition(DensityGrid& grid, const std::vector<Parcel>& poo
             if (s == 0 && r == 0)
             {
                 const StepStatistics& st = grid.stepStatistics();
-                result.visitedPerParcel = static_cast<double>(st.nodesVisited) / static_cast<double>(st.parcels);
-                result.weightedPerParcel = static_cast<double>(st.nodesWeighted) / static_cast<double>(st.parcels);
-                result.fallbackFraction = static_cast<double>(st.parcelsFallback) / static_cast<double>(st.parcels);
+                result.visitedPerParcel
+                    = static_cast<double>(st.nodesVisited) / static_cast<double>(st.parcels);
+                result.weightedPerParcel
+                    = static_cast<double>(st.nodesWeighted) / static_cast<double>(st.parcels);
+                result.fallbackFraction
+                    = static_cast<double>(st.parcelsFallback) / static_cast<double>(st.parcels);
                 result.cloudInCellFraction
                     = static_cast<double>(st.parcelsCloudInCell) / static_cast<double>(st.parcels);
                 result.touchedBoxFraction = static_cast<double>(grid.stepBox().nodeCount())
@@ -284,7 +306,8 @@ DepositionResult runDeposition(DensityGrid& grid, const std::vector<Parcel>& poo
         commitTime /= inner;
         if (r == 0)
         {
-            inner = static_cast<int>(std::min(1000.0, std::max(1.0, std::ceil(0.05 / std::max(depositTime, 1e-9)))));
+            inner = static_cast<int>(
+                std::min(1000.0, std::max(1.0, std::ceil(0.05 / std::max(depositTime, 1e-9)))));
             continue;
         }
         best = std::min(best, depositTime);
@@ -299,9 +322,9 @@ DepositionResult runDeposition(DensityGrid& grid, const std::vector<Parcel>& poo
 
 void printHeader()
 {
-    std::printf("%3s %5s %6s %8s | %8s %8s %6s | %10s %9s %9s %8s %8s | %8s %6s %5s\n", "dim", "reach", "order",
-                "parcels", "visit/p", "wght/p", "fallb", "Mparcel/s", "ns/parcel", "commit ms", "ns/visit",
-                "ns/wght", "lin", "spread", "reps");
+    std::printf("%3s %5s %6s %8s | %8s %8s %6s | %10s %9s %9s %8s %8s | %8s %6s %5s\n", "dim", "reach",
+                "order", "parcels", "visit/p", "wght/p", "fallb", "Mparcel/s", "ns/parcel", "commit ms",
+                "ns/visit", "ns/wght", "lin", "spread", "reps");
 }
 
 } // namespace
@@ -363,11 +386,12 @@ int main(int argc, char** argv)
         const DepositionResult r = runDeposition(grid, pool, count, repeats);
         printHeader();
         const double ns = r.depositSeconds / onlyCount * 1e9;
-        std::printf("%3d %5.0f %6s %8s | %8.1f %8.1f %5.1f%% | %10.3f %9.1f %9.2f %8.2f %8.2f | %8s %5.1f%% %5d\n",
-                    onlyDimension, onlyReach, "random", bench::formatCount(onlyCount).c_str(), r.visitedPerParcel,
-                    r.weightedPerParcel, 100.0 * r.fallbackFraction, onlyCount / r.depositSeconds / 1e6, ns,
-                    1e3 * r.commitSeconds, ns / r.visitedPerParcel, ns / r.weightedPerParcel, "-", r.spreadPercent,
-                    r.repeats);
+        std::printf(
+            "%3d %5.0f %6s %8s | %8.1f %8.1f %5.1f%% | %10.3f %9.1f %9.2f %8.2f %8.2f | %8s %5.1f%% %5d\n",
+            onlyDimension, onlyReach, "random", bench::formatCount(onlyCount).c_str(), r.visitedPerParcel,
+            r.weightedPerParcel, 100.0 * r.fallbackFraction, onlyCount / r.depositSeconds / 1e6, ns,
+            1e3 * r.commitSeconds, ns / r.visitedPerParcel, ns / r.weightedPerParcel, "-", r.spreadPercent,
+            r.repeats);
         return 0;
     }
     std::printf("== depositionBench ==\n\n");
@@ -380,18 +404,23 @@ int main(int argc, char** argv)
     }
 
     std::printf("\n-- memory: read-modify-write sweep bandwidth (bytes read + written; best of 3) --\n");
-    for (std::size_t bytes : {std::size_t(797496), std::size_t(32) << 20, std::size_t(80) << 20, std::size_t(1) << 30})
+    for (std::size_t bytes :
+         {std::size_t(797496), std::size_t(32) << 20, std::size_t(80) << 20, std::size_t(1) << 30})
     {
         const Bandwidth b = measureBandwidth(bytes);
-        std::printf("  array %9.1f MB: %7.1f GB/s\n", static_cast<double>(b.bytes) / 1048576.0, b.gbPerSecond);
+        std::printf("  array %9.1f MB: %7.1f GB/s\n", static_cast<double>(b.bytes) / 1048576.0,
+                    b.gbPerSecond);
     }
-    std::printf("  (2D grid step accumulator: 101 x 141 nodes x 7 doubles = 0.76 MB; 3D: 101 x 141 x 101 = 76 MB)\n");
+    std::printf(
+        "  (2D grid step accumulator: 101 x 141 nodes x 7 doubles = 0.76 MB; 3D: 101 x 141 x 101 = 76 MB)\n");
 
-    std::printf("\n-- deposition: one step = deposit() of every parcel + commitStep(); random parcel order unless "
-                "'sorted';\n"
-                "   Mparcel/s and ns/parcel from the deposit loop only, commit separately; ns/visit = per node in the\n"
-                "   bounding boxes (StepStatistics::nodesVisited), ns/wght = per node that received mass;\n"
-                "   lin = ns/parcel relative to the 1e5-parcel row of the same dim/reach (1.00 = linear) --\n");
+    std::printf(
+        "\n-- deposition: one step = deposit() of every parcel + commitStep(); random parcel order unless "
+        "'sorted';\n"
+        "   Mparcel/s and ns/parcel from the deposit loop only, commit separately; ns/visit = per node in "
+        "the\n"
+        "   bounding boxes (StepStatistics::nodesVisited), ns/wght = per node that received mass;\n"
+        "   lin = ns/parcel relative to the 1e5-parcel row of the same dim/reach (1.00 = linear) --\n");
     printHeader();
 
     const std::vector<double> reaches{1.0, 3.0, 10.0};
@@ -407,18 +436,20 @@ int main(int argc, char** argv)
         {
             DensityGrid grid(spec, kernelSettings, 1);
             const std::size_t poolSize = static_cast<std::size_t>(std::min(counts.back(), 1e6));
-            std::vector<Parcel> pool = makeParcels(spec, dimension, reach, poolSize, 1234 + dimension * 10 + static_cast<int>(reach));
-            double nsPerParcel = 0.0;   // from the last row run, for the estimate
-            double baseline = 0.0;      // ns/parcel at 1e5
+            std::vector<Parcel> pool = makeParcels(spec, dimension, reach, poolSize,
+                                                   1234 + dimension * 10 + static_cast<int>(reach));
+            double nsPerParcel = 0.0; // from the last row run, for the estimate
+            double baseline = 0.0;    // ns/parcel at 1e5
             for (double count : counts)
             {
                 const std::size_t parcels = static_cast<std::size_t>(count);
                 const double estimate = nsPerParcel * 1e-9 * count * (repeats + 1);
                 if (nsPerParcel > 0.0 && estimate > budget)
                 {
-                    std::printf("%3d %5.0f %6s %8s | skipped: estimated %.0f s for %d+1 runs > budget %.0f s\n",
-                                dimension, reach, "random", bench::formatCount(count).c_str(), estimate, repeats,
-                                budget);
+                    std::printf(
+                        "%3d %5.0f %6s %8s | skipped: estimated %.0f s for %d+1 runs > budget %.0f s\n",
+                        dimension, reach, "random", bench::formatCount(count).c_str(), estimate, repeats,
+                        budget);
                     continue;
                 }
                 const int reps = (nsPerParcel * 1e-9 * count > 5.0) ? std::max(2, repeats - 1) : repeats;
@@ -429,27 +460,32 @@ int main(int argc, char** argv)
                     baseline = nsPerParcel;
                 }
                 const double lin = baseline > 0.0 ? nsPerParcel / baseline : 0.0;
-                std::printf("%3d %5.0f %6s %8s | %8.1f %8.1f %5.1f%% | %10.3f %9.1f %9.2f %8.2f %8.2f | %8s %5.1f%% %5d\n",
+                std::printf("%3d %5.0f %6s %8s | %8.1f %8.1f %5.1f%% | %10.3f %9.1f %9.2f %8.2f %8.2f | %8s "
+                            "%5.1f%% %5d\n",
                             dimension, reach, "random", bench::formatCount(count).c_str(), r.visitedPerParcel,
                             r.weightedPerParcel, 100.0 * r.fallbackFraction, count / r.depositSeconds / 1e6,
                             nsPerParcel, 1e3 * r.commitSeconds, nsPerParcel / r.visitedPerParcel,
                             nsPerParcel / r.weightedPerParcel,
-                            lin > 0.0 ? (std::to_string(lin).substr(0, 4)).c_str() : "-", r.spreadPercent, r.repeats);
+                            lin > 0.0 ? (std::to_string(lin).substr(0, 4)).c_str() : "-", r.spreadPercent,
+                            r.repeats);
                 std::fflush(stdout);
             }
             // Locality: the 1e6 (quick: 1e5) pool sorted by node
             const std::size_t sortedCount = quick ? std::min<std::size_t>(poolSize, 100000) : poolSize;
             if (nsPerParcel * 1e-9 * static_cast<double>(sortedCount) * (repeats + 1) <= budget)
             {
-                std::vector<Parcel> sorted(pool.begin(), pool.begin() + static_cast<std::ptrdiff_t>(sortedCount));
+                std::vector<Parcel> sorted(pool.begin(),
+                                           pool.begin() + static_cast<std::ptrdiff_t>(sortedCount));
                 sortByNode(spec, sorted);
                 const DepositionResult r = runDeposition(grid, sorted, sortedCount, repeats);
                 const double ns = r.depositSeconds / static_cast<double>(sortedCount) * 1e9;
-                std::printf("%3d %5.0f %6s %8s | %8.1f %8.1f %5.1f%% | %10.3f %9.1f %9.2f %8.2f %8.2f | %8s %5.1f%% %5d\n",
-                            dimension, reach, "sorted", bench::formatCount(static_cast<double>(sortedCount)).c_str(),
-                            r.visitedPerParcel, r.weightedPerParcel, 100.0 * r.fallbackFraction,
-                            static_cast<double>(sortedCount) / r.depositSeconds / 1e6, ns, 1e3 * r.commitSeconds,
-                            ns / r.visitedPerParcel, ns / r.weightedPerParcel,
+                std::printf("%3d %5.0f %6s %8s | %8.1f %8.1f %5.1f%% | %10.3f %9.1f %9.2f %8.2f %8.2f | %8s "
+                            "%5.1f%% %5d\n",
+                            dimension, reach, "sorted",
+                            bench::formatCount(static_cast<double>(sortedCount)).c_str(), r.visitedPerParcel,
+                            r.weightedPerParcel, 100.0 * r.fallbackFraction,
+                            static_cast<double>(sortedCount) / r.depositSeconds / 1e6, ns,
+                            1e3 * r.commitSeconds, ns / r.visitedPerParcel, ns / r.weightedPerParcel,
                             baseline > 0.0 ? std::to_string(ns / baseline).substr(0, 4).c_str() : "-",
                             r.spreadPercent, r.repeats);
                 std::fflush(stdout);
@@ -457,10 +493,12 @@ int main(int argc, char** argv)
         }
     }
     // The function object's default: cloudInCellBelow = 0.5 (KernelSettings::cloudInCellBelow)
-    std::printf("\n-- the same parcels with cloudInCellBelow = 0.5 (the function object's default): a parcel whose kernel\n"
-                "   width r_max / sqrt(2 alpha) is below h / 2 is deposited with cloud-in-cell weights along its path --\n");
-    std::printf("%3s %5s %8s %8s | %6s %8s %8s | %10s %9s | %6s %5s\n", "dim", "reach", "width/h", "parcels", "cic",
-                "visit/p", "wght/p", "Mparcel/s", "ns/parcel", "spread", "reps");
+    std::printf("\n-- the same parcels with cloudInCellBelow = 0.5 (the function object's default): a parcel "
+                "whose kernel\n"
+                "   width r_max / sqrt(2 alpha) is below h / 2 is deposited with cloud-in-cell weights along "
+                "its path --\n");
+    std::printf("%3s %5s %8s %8s | %6s %8s %8s | %10s %9s | %6s %5s\n", "dim", "reach", "width/h", "parcels",
+                "cic", "visit/p", "wght/p", "Mparcel/s", "ns/parcel", "spread", "reps");
     for (int dimension : {2, 3})
     {
         const GridSpec spec = makeSpec(dimension);
@@ -472,14 +510,15 @@ int main(int argc, char** argv)
             const ParcelKernel kernel(dropletRadius, nParticle, settings, dimension);
             const double count = quick ? 1e4 : (dimension == 3 && reach >= 10.0 ? 1e3 : 1e5);
             DensityGrid grid(spec, settings, 1);
-            const std::vector<Parcel> pool = makeParcels(spec, dimension, reach, static_cast<std::size_t>(count),
-                                                         1234 + dimension * 10 + static_cast<int>(reach));
+            const std::vector<Parcel> pool
+                = makeParcels(spec, dimension, reach, static_cast<std::size_t>(count),
+                              1234 + dimension * 10 + static_cast<int>(reach));
             const DepositionResult r = runDeposition(grid, pool, pool.size(), repeats);
             const double ns = r.depositSeconds / count * 1e9;
-            std::printf("%3d %5.0f %8.2f %8s | %5.0f%% %8.1f %8.1f | %10.3f %9.1f | %5.1f%% %5d\n", dimension, reach,
-                        kernel.width() / spacing, bench::formatCount(count).c_str(), 100.0 * r.cloudInCellFraction,
-                        r.visitedPerParcel, r.weightedPerParcel, count / r.depositSeconds / 1e6, ns, r.spreadPercent,
-                        r.repeats);
+            std::printf("%3d %5.0f %8.2f %8s | %5.0f%% %8.1f %8.1f | %10.3f %9.1f | %5.1f%% %5d\n", dimension,
+                        reach, kernel.width() / spacing, bench::formatCount(count).c_str(),
+                        100.0 * r.cloudInCellFraction, r.visitedPerParcel, r.weightedPerParcel,
+                        count / r.depositSeconds / 1e6, ns, r.spreadPercent, r.repeats);
             std::fflush(stdout);
         }
     }

@@ -41,7 +41,8 @@ std::vector<Fiber> makeFibers(int fiberCount, int pointCount)
         for (int i = 0; i < pointCount; ++i)
         {
             const double s = static_cast<double>(i) / segments;
-            points.col(i) = start + 0.01 * s * direction.normalized() + Eigen::Vector3d(0.0, 0.0, 5e-4 * std::sin(M_PI * s));
+            points.col(i) = start + 0.01 * s * direction.normalized()
+                + Eigen::Vector3d(0.0, 0.0, 5e-4 * std::sin(M_PI * s));
         }
         const EndCondition startEnd = f % 3 == 0 ? EndCondition::pinnedEnd() : EndCondition::freeEnd();
         fibers.emplace_back(points, glass, startEnd, EndCondition::freeEnd());
@@ -71,8 +72,8 @@ int main(int argc, char** argv)
     const double dt = 1e-3;
 
     std::printf("== fiberScalingBench: FiberSolver::step, dt = %g s ==\n", dt);
-    std::printf("%7s %7s %9s | %9s %13s %12s %6s | %9s %8s | %6s %5s\n", "fibers", "points", "total pts", "s/step",
-                "Mpoint-step/s", "ns/pt-step", "lin", "sub/fiber", "Newton", "spread", "reps");
+    std::printf("%7s %7s %9s | %9s %13s %12s %6s | %9s %8s | %6s %5s\n", "fibers", "points", "total pts",
+                "s/step", "Mpoint-step/s", "ns/pt-step", "lin", "sub/fiber", "Newton", "spread", "reps");
     std::vector<int> fiberCounts;
     for (int f = 1; f <= maxFibers; f *= 10)
     {
@@ -95,26 +96,29 @@ int main(int argc, char** argv)
             const int inner = static_cast<int>(std::max(1.0, std::ceil(0.2 / std::max(warmSeconds, 1e-6))));
             const int reps = warmSeconds * repeats > 40.0 ? 2 : repeats;
             long subSteps = 0, newton = 0, steps = 0;
-            const bench::Timing t = bench::timeRepeated(reps, [&] {
-                for (int k = 0; k < inner; ++k)
-                {
-                    const StepReport report = solver.step(fibers, dt, air);
-                    subSteps += report.subSteps;
-                    newton += report.newtonIterations;
-                    ++steps;
-                }
-            });
+            const bench::Timing t = bench::timeRepeated(reps,
+                                                        [&]
+                                                        {
+                                                            for (int k = 0; k < inner; ++k)
+                                                            {
+                                                                const StepReport report
+                                                                    = solver.step(fibers, dt, air);
+                                                                subSteps += report.subSteps;
+                                                                newton += report.newtonIterations;
+                                                                ++steps;
+                                                            }
+                                                        });
             const double perStep = t.best / inner;
             const double ns = perStep / totalPoints * 1e9;
             if (baseline == 0.0)
             {
                 baseline = ns;
             }
-            std::printf("%7d %7d %9.0f | %9.4f %13.3f %12.1f %6.2f | %9.2f %8.2f | %5.1f%% %5d\n", fibersN, pointsN,
-                        totalPoints, perStep, totalPoints / perStep / 1e6, ns, ns / baseline,
+            std::printf("%7d %7d %9.0f | %9.4f %13.3f %12.1f %6.2f | %9.2f %8.2f | %5.1f%% %5d\n", fibersN,
+                        pointsN, totalPoints, perStep, totalPoints / perStep / 1e6, ns, ns / baseline,
                         static_cast<double>(subSteps) / steps / fibersN,
-                        static_cast<double>(newton) / static_cast<double>(std::max(1L, subSteps)), t.spreadPercent(),
-                        t.repeats);
+                        static_cast<double>(newton) / static_cast<double>(std::max(1L, subSteps)),
+                        t.spreadPercent(), t.repeats);
             std::fflush(stdout);
         }
     }

@@ -14,25 +14,28 @@
 
 using namespace dropletFiber;
 
-namespace {
+namespace
+{
 
 std::vector<Fiber> makeFibers(int fiberCount, int pointCount)
 {
     std::vector<Fiber> fibers;
     fibers.reserve(static_cast<std::size_t>(fiberCount));
     const FiberMaterial glass{5e-6, 2500.0, 7e10};
-    for (int f = 0; f < fiberCount; ++f) {
+    for (int f = 0; f < fiberCount; ++f)
+    {
         // Deterministic spread of positions and orientations.
         const double a = 0.7 * f, b = 0.3 * f;
         const Eigen::Vector3d start(0.02 * std::cos(a), 0.02 * std::sin(a), 0.001 * f);
         const Eigen::Vector3d direction(std::cos(b), std::sin(b), 0.3 * std::sin(a));
         Eigen::Matrix3Xd points(3, pointCount);
         const int segments = pointCount - 1;
-        for (int i = 0; i < pointCount; ++i) {
+        for (int i = 0; i < pointCount; ++i)
+        {
             // a gentle bend so bending is active from the start
             const double s = static_cast<double>(i) / segments;
-            points.col(i) = start + 0.01 * s * direction.normalized() +
-                            Eigen::Vector3d(0.0, 0.0, 5e-4 * std::sin(M_PI * s));
+            points.col(i) = start + 0.01 * s * direction.normalized()
+                + Eigen::Vector3d(0.0, 0.0, 5e-4 * std::sin(M_PI * s));
         }
         const EndCondition startEnd = f % 3 == 0 ? EndCondition::pinnedEnd() : EndCondition::freeEnd();
         fibers.emplace_back(points, glass, startEnd, EndCondition::freeEnd());
@@ -40,7 +43,7 @@ std::vector<Fiber> makeFibers(int fiberCount, int pointCount)
     return fibers;
 }
 
-}  // namespace
+} // namespace
 
 int main()
 {
@@ -51,42 +54,50 @@ int main()
     const std::vector<int> pointCounts{20, 50, 100, 200};
 
     std::printf("fiberStepBench: FiberSolver::step cost per point per step (dt = %g s)\n", dt);
-    std::printf("%7s %7s %9s %6s %11s %13s %10s %11s %8s\n", "fibers", "points", "total pts", "steps", "ms/step",
-                "ns/point/step", "sub/fiber", "Newton/sub", "loose");
+    std::printf("%7s %7s %9s %6s %11s %13s %10s %11s %8s\n", "fibers", "points", "total pts", "steps",
+                "ms/step", "ns/point/step", "sub/fiber", "Newton/sub", "loose");
     std::vector<std::vector<double>> costs(fiberCounts.size(), std::vector<double>(pointCounts.size(), 0.0));
-    for (std::size_t a = 0; a < fiberCounts.size(); ++a) {
-        for (std::size_t b = 0; b < pointCounts.size(); ++b) {
+    for (std::size_t a = 0; a < fiberCounts.size(); ++a)
+    {
+        for (std::size_t b = 0; b < pointCounts.size(); ++b)
+        {
             const int fibersN = fiberCounts[a], pointsN = pointCounts[b];
             const long totalPoints = static_cast<long>(fibersN) * pointsN;
             std::vector<Fiber> fibers = makeFibers(fibersN, pointsN);
             const AirSample air = uniformAir(fibers, Eigen::Vector3d(0.5, 0.2, 0.0), 1.2, 1.8e-5);
             FiberSolver solver(settings);
-            solver.step(fibers, dt, air);  // warm-up (first-touch allocations)
+            solver.step(fibers, dt, air); // warm-up (first-touch allocations)
             // about 4e5 point-steps per configuration, at least 3 steps
             const int steps = static_cast<int>(std::max(3L, 400000L / totalPoints));
             long subSteps = 0, newton = 0, loose = 0;
             const auto t0 = std::chrono::steady_clock::now();
-            for (int k = 0; k < steps; ++k) {
+            for (int k = 0; k < steps; ++k)
+            {
                 const StepReport report = solver.step(fibers, dt, air);
                 subSteps += report.subSteps;
                 newton += report.newtonIterations;
                 loose += report.looseConvergences;
             }
-            const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+            const double seconds
+                = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
             const double perPoint = seconds / steps / static_cast<double>(totalPoints) * 1e9;
             costs[a][b] = perPoint;
             std::printf("%7d %7d %9ld %6d %11.3f %13.1f %10.2f %11.2f %8ld\n", fibersN, pointsN, totalPoints,
-                        steps, 1e3 * seconds / steps, perPoint, static_cast<double>(subSteps) / steps / fibersN,
+                        steps, 1e3 * seconds / steps, perPoint,
+                        static_cast<double>(subSteps) / steps / fibersN,
                         static_cast<double>(newton) / static_cast<double>(subSteps), loose);
         }
     }
     std::printf("\nlinearity: cost per point per step relative to 1 fiber x 20 points (1.00 = linear)\n");
     std::printf("%7s", "fibers");
-    for (int p : pointCounts) std::printf(" %8d pts", p);
+    for (int p : pointCounts)
+        std::printf(" %8d pts", p);
     std::printf("\n");
-    for (std::size_t a = 0; a < fiberCounts.size(); ++a) {
+    for (std::size_t a = 0; a < fiberCounts.size(); ++a)
+    {
         std::printf("%7d", fiberCounts[a]);
-        for (std::size_t b = 0; b < pointCounts.size(); ++b) std::printf(" %12.2f", costs[a][b] / costs[0][0]);
+        for (std::size_t b = 0; b < pointCounts.size(); ++b)
+            std::printf(" %12.2f", costs[a][b] / costs[0][0]);
         std::printf("\n");
     }
     std::printf("\ntotal-cost ratios: 10x the points -> cost x (linear = 10)\n");

@@ -33,17 +33,16 @@ std::vector<Fiber> tutorialFibers()
     const FiberMaterial glass{3e-6, 2500.0, 7e10};
     const int points = 21;
     const double length = 0.01;
-    const Eigen::Vector3d injector[3] = {
-        {0.003, 0.147, 0.005}, {0.010, 0.147, 0.005}, {0.018, 0.147, 0.005}};
-    const Eigen::Vector3d direction[3] = {
-        Eigen::Vector3d(1.0, 0.0, 0.0), Eigen::Vector3d(1.0, -0.3, 0.0).normalized(),
-        Eigen::Vector3d(1.0, 0.3, 0.0).normalized()};
+    const Eigen::Vector3d injector[3] = {{0.003, 0.147, 0.005}, {0.010, 0.147, 0.005}, {0.018, 0.147, 0.005}};
+    const Eigen::Vector3d direction[3]
+        = {Eigen::Vector3d(1.0, 0.0, 0.0), Eigen::Vector3d(1.0, -0.3, 0.0).normalized(),
+           Eigen::Vector3d(1.0, 0.3, 0.0).normalized()};
     const Eigen::Vector3d velocity(0.0, -2.0, 0.0);
     std::vector<Fiber> fibers;
     for (int f = 0; f < 10; ++f)
     {
         const int stream = f % 3;
-        const double age = 0.02 * f;  // the streams' rate is 50 per second
+        const double age = 0.02 * f; // the streams' rate is 50 per second
         const Eigen::Vector3d start = injector[stream] + velocity * age;
         Eigen::Matrix3Xd x(3, points);
         for (int i = 0; i < points; ++i)
@@ -83,9 +82,12 @@ int main(int argc, char** argv)
     const char* dump = nullptr;
     for (int a = 1; a < argc; ++a)
     {
-        if (!std::strcmp(argv[a], "--steps") && a + 1 < argc) steps = std::max(1, std::atoi(argv[++a]));
-        else if (!std::strcmp(argv[a], "--repeats") && a + 1 < argc) repeats = std::max(1, std::atoi(argv[++a]));
-        else if (!std::strcmp(argv[a], "--dump") && a + 1 < argc) dump = argv[++a];
+        if (!std::strcmp(argv[a], "--steps") && a + 1 < argc)
+            steps = std::max(1, std::atoi(argv[++a]));
+        else if (!std::strcmp(argv[a], "--repeats") && a + 1 < argc)
+            repeats = std::max(1, std::atoi(argv[++a]));
+        else if (!std::strcmp(argv[a], "--dump") && a + 1 < argc)
+            dump = argv[++a];
     }
     FiberSolverSettings settings;
     settings.gravity = Eigen::Vector3d(0.0, -9.81, 0.0);
@@ -94,14 +96,21 @@ int main(int argc, char** argv)
 
     const std::vector<Fiber> initial = tutorialFibers();
     long pointCount = 0;
-    for (const Fiber& fiber : initial) pointCount += fiber.pointCount();
+    for (const Fiber& fiber : initial)
+        pointCount += fiber.pointCount();
 
     std::vector<Fiber> fibers;
     long subSteps = 0, newton = 0, fiberSteps = 0, loose = 0, rejected = 0;
     FiberSolver solver(settings);
     const bench::Timing t = bench::timeRepeated(
-        repeats, [&] { fibers = initial; subSteps = newton = fiberSteps = loose = rejected = 0; },
-        [&] {
+        repeats,
+        [&]
+        {
+            fibers = initial;
+            subSteps = newton = fiberSteps = loose = rejected = 0;
+        },
+        [&]
+        {
             for (int k = 0; k < steps; ++k)
             {
                 const StepReport report = solver.step(fibers, dt, tutorialAir(airSamplePoints(fibers)));
@@ -124,22 +133,27 @@ int main(int argc, char** argv)
                 fibers.size(), pointCount, dt, steps, repeats, bench::Clock::name());
     std::printf("  us/point-step %.3f  (ms/step %.4f, spread %.1f%%)\n", perPointStep, 1e3 * t.best / steps,
                 t.spreadPercent());
-    std::printf("  Newton/sub-step %.3f  Newton/fiber-step %.3f  sub-steps/fiber-step %.3f  loose %ld  rejected %ld\n",
+    std::printf("  Newton/sub-step %.3f  Newton/fiber-step %.3f  sub-steps/fiber-step %.3f  loose %ld  "
+                "rejected %ld\n",
                 static_cast<double>(newton) / subSteps, static_cast<double>(newton) / fiberSteps,
                 static_cast<double>(subSteps) / fiberSteps, loose, rejected);
     std::printf("  checksum %.17g  tension sum %.17g\n", checksum, tension);
     if (dump != nullptr)
     {
         std::FILE* out = std::fopen(dump, "w");
-        if (out == nullptr) return 1;
+        if (out == nullptr)
+            return 1;
         for (const Fiber& fiber : fibers)
         {
             for (Eigen::Index i = 0; i < fiber.pointCount(); ++i)
             {
-                for (int a = 0; a < 3; ++a) std::fprintf(out, "%.17g\n", fiber.positions()(a, i));
-                for (int a = 0; a < 3; ++a) std::fprintf(out, "%.17g\n", fiber.velocities()(a, i));
+                for (int a = 0; a < 3; ++a)
+                    std::fprintf(out, "%.17g\n", fiber.positions()(a, i));
+                for (int a = 0; a < 3; ++a)
+                    std::fprintf(out, "%.17g\n", fiber.velocities()(a, i));
             }
-            for (Eigen::Index j = 0; j < fiber.segmentCount(); ++j) std::fprintf(out, "%.17g\n", fiber.tension()(j));
+            for (Eigen::Index j = 0; j < fiber.segmentCount(); ++j)
+                std::fprintf(out, "%.17g\n", fiber.tension()(j));
         }
         std::fclose(out);
     }

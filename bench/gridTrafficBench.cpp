@@ -64,7 +64,8 @@ std::vector<Parcel> readParcels(const std::string& path)
     return parcels;
 }
 
-GridSpec specFromSpacing(const Eigen::Vector3d& lower, const Eigen::Vector3d& upper, double spacing, int flat = -1)
+GridSpec specFromSpacing(const Eigen::Vector3d& lower, const Eigen::Vector3d& upper, double spacing,
+                         int flat = -1)
 {
     GridSpec spec;
     spec.lower = lower;
@@ -73,7 +74,8 @@ GridSpec specFromSpacing(const Eigen::Vector3d& lower, const Eigen::Vector3d& up
     {
         const double extent = upper[d] - lower[d];
         // a direction thinner than two spacings is flat (the 2D case's depth)
-        spec.nodes[d] = (d == flat || extent < 2.0 * spacing) ? 1 : static_cast<int>(std::lround(extent / spacing)) + 1;
+        spec.nodes[d]
+            = (d == flat || extent < 2.0 * spacing) ? 1 : static_cast<int>(std::lround(extent / spacing)) + 1;
     }
     return spec;
 }
@@ -87,10 +89,10 @@ struct TrafficRow
     std::vector<std::size_t> rankBoxNodes;
     std::size_t unionNodes = 0;
     std::size_t touchedNodes = 0; // nodes with mass on any rank: what a sparse exchange would move
-    double packSeconds = 0.0;   // packStep + unpackStep of the union box on one rank
+    double packSeconds = 0.0;     // packStep + unpackStep of the union box on one rank
     double visitedPerParcel = 0.0;
     double weightedPerParcel = 0.0;
-    double nsPerParcel = 0.0;   // serial deposit cost of all parcels on one grid
+    double nsPerParcel = 0.0; // serial deposit cost of all parcels on one grid
     double cappedFraction = 0.0;
 };
 
@@ -130,7 +132,8 @@ TrafficRow measure(const std::string& label, const GridSpec& spec, const KernelS
     DensityGrid grid(spec, kernel, 1);
     const bench::Timing t = bench::timeRepeated(
         5, [&] { grid.commitStep(); },
-        [&] {
+        [&]
+        {
             for (const Parcel& p : all)
             {
                 grid.deposit(p, dt);
@@ -144,10 +147,13 @@ TrafficRow measure(const std::string& label, const GridSpec& spec, const KernelS
     row.nsPerParcel = t.best / n * 1e9;
     if (!unionBox.empty())
     {
-        const bench::Timing pack = bench::timeRepeated(5, [&] {
-            std::vector<double> values = grid.packStep(unionBox);
-            grid.unpackStep(unionBox, values);
-        });
+        const bench::Timing pack = bench::timeRepeated(5,
+                                                       [&]
+                                                       {
+                                                           std::vector<double> values
+                                                               = grid.packStep(unionBox);
+                                                           grid.unpackStep(unionBox, values);
+                                                       });
         row.packSeconds = pack.best;
     }
     return row;
@@ -155,9 +161,9 @@ TrafficRow measure(const std::string& label, const GridSpec& spec, const KernelS
 
 void printHeader()
 {
-    std::printf("%-34s %5s %7s %9s %10s | %-23s %9s %10s %9s | %8s %9s | %9s | %8s %7s %7s %6s\n", "spray", "ranks",
-                "parcels", "nodes", "full MB", "rank boxes (% of grid)", "union %", "msg MB", "MB/step", "saved",
-                "pack ms", "touched %", "ns/parc", "visit/p", "wght/p", "capped");
+    std::printf("%-34s %5s %7s %9s %10s | %-23s %9s %10s %9s | %8s %9s | %9s | %8s %7s %7s %6s\n", "spray",
+                "ranks", "parcels", "nodes", "full MB", "rank boxes (% of grid)", "union %", "msg MB",
+                "MB/step", "saved", "pack ms", "touched %", "ns/parc", "visit/p", "wght/p", "capped");
 }
 
 void printRow(const TrafficRow& r)
@@ -173,7 +179,8 @@ void printRow(const TrafficRow& r)
                       100.0 * static_cast<double>(b) / static_cast<double>(r.gridNodes));
         boxes += buffer;
     }
-    std::printf("%-34s %5d %7zu %9zu %10.3f | %-23s %8.1f%% %10.3f %9.3f | %7.1f%% %9.3f | %8.1f%% | %8.0f %7.1f %7.1f "
+    std::printf("%-34s %5d %7zu %9zu %10.3f | %-23s %8.1f%% %10.3f %9.3f | %7.1f%% %9.3f | %8.1f%% | %8.0f "
+                "%7.1f %7.1f "
                 "%5.0f%%\n",
                 r.label.c_str(), r.ranks, r.parcels, r.gridNodes, fullMB, boxes.c_str(),
                 100.0 * static_cast<double>(r.unionNodes) / static_cast<double>(r.gridNodes), msgMB,
@@ -278,7 +285,8 @@ int main(int argc, char** argv)
         }
         else
         {
-            std::fprintf(stderr, "gridTrafficBench: unknown argument %s (see the header of the source)\n", argv[a]);
+            std::fprintf(stderr, "gridTrafficBench: unknown argument %s (see the header of the source)\n",
+                         argv[a]);
             return 2;
         }
     }
@@ -287,7 +295,8 @@ int main(int argc, char** argv)
     kernel.cloudInCellBelow = cic;
     if (synthetic)
     {
-        const GridSpec spec = specFromSpacing(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0.1, 0.15, 0.1), 0.002);
+        const GridSpec spec
+            = specFromSpacing(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0.1, 0.15, 0.1), 0.002);
         kernel.rMaxCap = 0.006;
         const std::vector<Parcel> cone = makeCone(20000);
         // 2 ranks: upper/lower half (like the tutorial's simple (1 2 1)); 4 ranks: 2 x 2 in x, z

@@ -70,7 +70,10 @@ constexpr double dropletsPerStep = 1e4;
 constexpr double circleRadius = 0.01, circleY = 0.03;
 constexpr int circleSegments = 100;
 
-double dropletMassOf() { return rhoDroplet * 4.0 / 3.0 * pi * std::pow(dropletRadius, 3); }
+double dropletMassOf()
+{
+    return rhoDroplet * 4.0 / 3.0 * pi * std::pow(dropletRadius, 3);
+}
 
 // The droplet population (end-of-step positions, structure of arrays), all with velocity
 // (0, -speed, 0) and n droplets per parcel.
@@ -130,7 +133,8 @@ FiberSegments makeCircle()
     {
         const double a0 = 2.0 * pi * k / circleSegments, a1 = 2.0 * pi * (k + 1) / circleSegments;
         segments.add(Eigen::Vector3d(circleRadius * std::cos(a0), circleY + circleRadius * std::sin(a0), 0.0),
-                     Eigen::Vector3d(circleRadius * std::cos(a1), circleY + circleRadius * std::sin(a1), 0.0), 0);
+                     Eigen::Vector3d(circleRadius * std::cos(a1), circleY + circleRadius * std::sin(a1), 0.0),
+                     0);
     }
     return segments;
 }
@@ -147,7 +151,8 @@ struct ErrorStats
         sumSquares += e * e;
         ++steps;
     }
-    void addSegments(const std::vector<double>& estimate, const std::vector<double>& reference, double meanReference)
+    void addSegments(const std::vector<double>& estimate, const std::vector<double>& reference,
+                     double meanReference)
     {
         for (std::size_t s = 0; s < estimate.size(); ++s)
         {
@@ -182,12 +187,12 @@ struct MethodCost
 struct RunResult
 {
     double n = 0.0;
-    double parcels = 0.0; // in the box, mean
+    double parcels = 0.0;                            // in the box, mean
     std::array<MethodCost, 2> gridCost, gridDeposit; // per grid variant
-    std::array<ErrorStats, 2> explicitStats; // per fiber radius
+    std::array<ErrorStats, 2> explicitStats;         // per fiber radius
     std::array<MethodCost, 2> hashCost;
     std::array<double, 2> bruteBest{{0.0, 0.0}};
-    std::array<double, 2> meanHits{{0.0, 0.0}}; // parcel hits per step
+    std::array<double, 2> meanHits{{0.0, 0.0}};            // parcel hits per step
     std::array<std::array<ErrorStats, 2>, 2> gridByRadius; // [variant][fiber radius]
     std::array<double, 2> cloudInCellFraction{{0.0, 0.0}};
     bool bruteChecked = true;
@@ -197,7 +202,8 @@ const std::array<double, 2> fiberRadii{{2e-4, 5e-6}};
 // Grid variants: KernelSettings::cloudInCellBelow = 0 (the kernel for every parcel, the
 // paper) and 0.5 (the function object's default: kernels narrower than h/2 -> cloud-in-cell).
 const std::array<double, 2> cloudInCellBelow{{0.0, 0.5}};
-const std::array<const char*, 2> variantName{{"kernel (paper, cloudInCellBelow 0)", "cloudInCellBelow 0.5 (function object default)"}};
+const std::array<const char*, 2> variantName{
+    {"kernel (paper, cloudInCellBelow 0)", "cloudInCellBelow 0.5 (function object default)"}};
 
 RunResult run(double n, int steps, bool withBrute, bool withGrid)
 {
@@ -272,9 +278,9 @@ RunResult run(double n, int steps, bool withBrute, bool withGrid)
                 double total = 0.0;
                 for (std::size_t k = 0; k < circle.size(); ++k)
                 {
-                    const SegmentCollision c = collisionMass(grid, circle.start[k], circle.start[k] + circle.vector[k],
-                                                             fiberRadii[static_cast<std::size_t>(r)],
-                                                             Eigen::Vector3d::Zero(), dt);
+                    const SegmentCollision c
+                        = collisionMass(grid, circle.start[k], circle.start[k] + circle.vector[k],
+                                        fiberRadii[static_cast<std::size_t>(r)], Eigen::Vector3d::Zero(), dt);
                     segmentMass[k] = c.mass;
                     total += c.mass;
                 }
@@ -286,7 +292,8 @@ RunResult run(double n, int steps, bool withBrute, bool withGrid)
                 ErrorStats& stats = result.gridByRadius[v][static_cast<std::size_t>(r)];
                 stats.add(total, referenceTotal[static_cast<std::size_t>(r)]);
                 stats.addSegments(segmentMass, reference[static_cast<std::size_t>(r)],
-                                  referenceTotal[static_cast<std::size_t>(r)] / static_cast<double>(circle.size()));
+                                  referenceTotal[static_cast<std::size_t>(r)]
+                                      / static_cast<double>(circle.size()));
             }
         }
         // --- explicit method, hashed (every step) and brute force (a few steps, checked equal)
@@ -299,10 +306,12 @@ RunResult run(double n, int steps, bool withBrute, bool withGrid)
             for (std::size_t i = 0; i < spray.size(); ++i)
             {
                 const Eigen::Vector3d end(spray.x[i], spray.y[i], spray.z[i]);
-                hash.query(end - displacement, displacement, reach, [&](int segment) {
-                    ++hits;
-                    segmentMass[static_cast<std::size_t>(segment)] += n * m;
-                });
+                hash.query(end - displacement, displacement, reach,
+                           [&](int segment)
+                           {
+                               ++hits;
+                               segmentMass[static_cast<std::size_t>(segment)] += n * m;
+                           });
             }
             result.hashCost[static_cast<std::size_t>(r)].add(bench::secondsSince(start));
             double total = 0.0;
@@ -310,7 +319,8 @@ RunResult run(double n, int steps, bool withBrute, bool withGrid)
             {
                 total += s;
             }
-            result.explicitStats[static_cast<std::size_t>(r)].add(total, referenceTotal[static_cast<std::size_t>(r)]);
+            result.explicitStats[static_cast<std::size_t>(r)].add(
+                total, referenceTotal[static_cast<std::size_t>(r)]);
             result.explicitStats[static_cast<std::size_t>(r)].addSegments(
                 segmentMass, reference[static_cast<std::size_t>(r)],
                 referenceTotal[static_cast<std::size_t>(r)] / static_cast<double>(circle.size()));
@@ -363,12 +373,16 @@ int main(int argc, char** argv)
     }
     const double m = dropletMassOf();
     const double numberDensity = dropletsPerStep / (2.0 * injectHalf * pathLength * depth);
-    std::printf("== paperSettingBench: grid method vs explicit geometric method, paper's sec. 6 setting ==\n");
-    std::printf("box 5 x 7 cm x depth %.0f mm, circle R = 1 cm (100 segments), droplets r_p = 10 um at 1 m/s down,\n"
-                "dt = %.2g s, %.0f droplets per step (%.3g kg/s), droplet number density %.3g /m^3, %d steps per row\n\n",
-                depth * 1e3, dt, dropletsPerStep, dropletsPerStep * m / dt, numberDensity, steps);
+    std::printf(
+        "== paperSettingBench: grid method vs explicit geometric method, paper's sec. 6 setting ==\n");
+    std::printf(
+        "box 5 x 7 cm x depth %.0f mm, circle R = 1 cm (100 segments), droplets r_p = 10 um at 1 m/s down,\n"
+        "dt = %.2g s, %.0f droplets per step (%.3g kg/s), droplet number density %.3g /m^3, %d steps per "
+        "row\n\n",
+        depth * 1e3, dt, dropletsPerStep, dropletsPerStep * m / dt, numberDensity, steps);
 
-    std::vector<double> ns = quick ? std::vector<double>{1, 10, 100} : std::vector<double>{1, 10, 30, 100, 300, 1000};
+    std::vector<double> ns
+        = quick ? std::vector<double>{1, 10, 100} : std::vector<double>{1, 10, 30, 100, 300, 1000};
     std::vector<RunResult> results;
     for (double n : ns)
     {
@@ -379,11 +393,13 @@ int main(int argc, char** argv)
         std::fprintf(stderr, "  n = %g done (%.0f parcels)\n", n, r.parcels);
     }
 
-    std::printf("-- cost per step (best over the steps; ms) and per parcel (ns); grid = deposit + commit + collision of\n"
-                "   the 100 segments, variant K = kernel for every parcel (paper), C = cloudInCellBelow 0.5 --\n");
-    std::printf("%6s %9s | %9s %9s %6s | %9s %9s %6s | %10s %10s %9s | %10s %9s | %s\n", "n", "parcels", "grid K ms",
-                "ns/parcel", "", "grid C ms", "ns/parcel", "cic", "hash ms rF1", "hash ms rF2", "ns/parcel", "brute ms",
-                "ns/pair", "brute=hash");
+    std::printf(
+        "-- cost per step (best over the steps; ms) and per parcel (ns); grid = deposit + commit + collision "
+        "of\n"
+        "   the 100 segments, variant K = kernel for every parcel (paper), C = cloudInCellBelow 0.5 --\n");
+    std::printf("%6s %9s | %9s %9s %6s | %9s %9s %6s | %10s %10s %9s | %10s %9s | %s\n", "n", "parcels",
+                "grid K ms", "ns/parcel", "", "grid C ms", "ns/parcel", "cic", "hash ms rF1", "hash ms rF2",
+                "ns/parcel", "brute ms", "ns/pair", "brute=hash");
     for (RunResult& r : results)
     {
         for (std::size_t v = 0; v < 2; ++v)
@@ -393,12 +409,13 @@ int main(int argc, char** argv)
                 r.gridCost[v].best = r.gridDeposit[v].best = 0.0;
             }
         }
-        std::printf("%6.0f %9.0f | %9.2f %9.1f %6s | %9.2f %9.1f %5.0f%% | %10.2f %10.2f %9.1f | %10.1f %9.2f | %s\n", r.n,
-                    r.parcels, 1e3 * r.gridCost[0].best, r.gridCost[0].best / r.parcels * 1e9, "",
-                    1e3 * r.gridCost[1].best, r.gridCost[1].best / r.parcels * 1e9, 100.0 * r.cloudInCellFraction[1],
-                    1e3 * r.hashCost[0].best, 1e3 * r.hashCost[1].best, r.hashCost[0].best / r.parcels * 1e9,
-                    1e3 * r.bruteBest[0], r.bruteBest[0] / (r.parcels * circleSegments) * 1e9,
-                    r.bruteChecked ? "yes" : "NO");
+        std::printf(
+            "%6.0f %9.0f | %9.2f %9.1f %6s | %9.2f %9.1f %5.0f%% | %10.2f %10.2f %9.1f | %10.1f %9.2f | %s\n",
+            r.n, r.parcels, 1e3 * r.gridCost[0].best, r.gridCost[0].best / r.parcels * 1e9, "",
+            1e3 * r.gridCost[1].best, r.gridCost[1].best / r.parcels * 1e9, 100.0 * r.cloudInCellFraction[1],
+            1e3 * r.hashCost[0].best, 1e3 * r.hashCost[1].best, r.hashCost[0].best / r.parcels * 1e9,
+            1e3 * r.bruteBest[0], r.bruteBest[0] / (r.parcels * circleSegments) * 1e9,
+            r.bruteChecked ? "yes" : "NO");
     }
 
     for (int rIndex = 0; rIndex < 2; ++rIndex)
@@ -416,10 +433,12 @@ int main(int argc, char** argv)
             }
         }
         const double lambda = refTotal / m;
-        std::printf("\n-- errors, fiber radius r_F = %g m: reference %.4g kg per step = %.1f droplet hits per step --\n",
+        std::printf("\n-- errors, fiber radius r_F = %g m: reference %.4g kg per step = %.1f droplet hits "
+                    "per step --\n",
                     rF, refTotal, lambda);
-        std::printf("%6s | %8s %8s %8s | %8s %8s %8s | %8s %8s %8s %8s %10s\n", "n", "K bias", "noise", "seg rms",
-                    "C bias", "noise", "seg rms", "expl bias", "noise", "Poisson", "seg rms", "hits/step");
+        std::printf("%6s | %8s %8s %8s | %8s %8s %8s | %8s %8s %8s %8s %10s\n", "n", "K bias", "noise",
+                    "seg rms", "C bias", "noise", "seg rms", "expl bias", "noise", "Poisson", "seg rms",
+                    "hits/step");
         for (RunResult& r : results)
         {
             const ErrorStats& e = r.explicitStats[ri];
@@ -436,26 +455,31 @@ int main(int argc, char** argv)
                     std::printf(" %8.4f %8.4f %8.3f |", g.bias(), g.noise(), g.segmentRms());
                 }
             }
-            std::printf(" %8.4f %8.4f %8.4f %8.3f %10.2f\n", e.bias(), e.noise(), std::sqrt(r.n / lambda), e.segmentRms(),
-                        r.meanHits[ri]);
+            std::printf(" %8.4f %8.4f %8.4f %8.3f %10.2f\n", e.bias(), e.noise(), std::sqrt(r.n / lambda),
+                        e.segmentRms(), r.meanHits[ri]);
         }
         // equal statistical error
         const RunResult& ones = results.front(); // n = 1: cost per parcel of the explicit method
         const double hashPerParcel = ones.hashCost[ri].best / ones.parcels;
         const double brutePerParcel = ones.bruteBest[ri] > 0.0 ? ones.bruteBest[ri] / ones.parcels : 0.0;
         const double noiseOne = ones.explicitStats[ri].noise(); // measured explicit noise at n = 1
-        std::printf("\n   equal statistical error (r_F = %g m): grid method with n_g droplets per parcel against the\n"
-                    "   explicit method with n_e = noise_g^2 * lambda droplets per parcel (D / n_e parcels per step).\n"
-                    "   n_e < 1 cannot be tracked (every droplet is its own parcel at n = 1); then\n"
-                    "     A = explicit at n = 1 (still noisier than the grid: a lower bound of its cost), and\n"
-                    "     B = explicit at n = 1 averaged over K = noise_e(1)^2 / noise_g^2 independent evaluations\n"
-                    "         (steps or replicas), the cost of actually reaching the grid's noise (= A when n_e >= 1).\n",
-                    rF);
+        std::printf(
+            "\n   equal statistical error (r_F = %g m): grid method with n_g droplets per parcel against "
+            "the\n"
+            "   explicit method with n_e = noise_g^2 * lambda droplets per parcel (D / n_e parcels per "
+            "step).\n"
+            "   n_e < 1 cannot be tracked (every droplet is its own parcel at n = 1); then\n"
+            "     A = explicit at n = 1 (still noisier than the grid: a lower bound of its cost), and\n"
+            "     B = explicit at n = 1 averaged over K = noise_e(1)^2 / noise_g^2 independent evaluations\n"
+            "         (steps or replicas), the cost of actually reaching the grid's noise (= A when n_e >= "
+            "1).\n",
+            rF);
         for (std::size_t v = 0; v < 2; ++v)
         {
             std::printf("   grid variant: %s\n", variantName[v]);
-            std::printf("%6s %9s %9s | %9s %9s %10s | %10s %8s %8s | %10s %8s %8s\n", "n_g", "noise_g", "grid ms", "n_e",
-                        "K", "parcels_e", "hash ms B", "ratio A", "ratio B", "brute ms B", "ratio A", "ratio B");
+            std::printf("%6s %9s %9s | %9s %9s %10s | %10s %8s %8s | %10s %8s %8s\n", "n_g", "noise_g",
+                        "grid ms", "n_e", "K", "parcels_e", "hash ms B", "ratio A", "ratio B", "brute ms B",
+                        "ratio A", "ratio B");
             for (RunResult& r : results)
             {
                 if (r.gridCost[v].all.empty())
@@ -470,14 +494,16 @@ int main(int argc, char** argv)
                 const double hashA = 1e3 * hashPerParcel * parcelsE;
                 const double bruteA = 1e3 * brutePerParcel * parcelsE;
                 const double gridMs = 1e3 * r.gridCost[v].best;
-                std::printf("%6.0f %9.4f %9.2f | %9.3f %9.1f %10.0f | %10.2f %7.1fx %7.1fx | %10.0f %7.0fx %7.0fx\n", r.n,
-                            noise, gridMs, nEqual, k, parcelsE, k * hashA, hashA / gridMs, k * hashA / gridMs,
-                            k * bruteA, bruteA / gridMs, k * bruteA / gridMs);
+                std::printf(
+                    "%6.0f %9.4f %9.2f | %9.3f %9.1f %10.0f | %10.2f %7.1fx %7.1fx | %10.0f %7.0fx %7.0fx\n",
+                    r.n, noise, gridMs, nEqual, k, parcelsE, k * hashA, hashA / gridMs, k * hashA / gridMs,
+                    k * bruteA, bruteA / gridMs, k * bruteA / gridMs);
             }
         }
     }
-    std::printf("\nratio = explicit cost / grid cost per step at equal statistical error (> 1: grid method faster).\n"
-                "Explicit costs count only the collision test, not the Lagrangian tracking of the n_g / n_e times\n"
-                "more parcels it needs.\n");
+    std::printf(
+        "\nratio = explicit cost / grid cost per step at equal statistical error (> 1: grid method faster).\n"
+        "Explicit costs count only the collision test, not the Lagrangian tracking of the n_g / n_e times\n"
+        "more parcels it needs.\n");
     return 0;
 }

@@ -96,14 +96,15 @@ double formulaFromCount(const PaperSetting& setting, const SprayStreams& spray, 
     const MeasuredField field = measureField(spray, setting.depth, -setting.injectionHalfWidth,
                                              setting.injectionHalfWidth, 0.01, 0.06, formulaSteps);
     const double meanRadius = average == RadiusAverage::Mass ? field.rMeanMass : field.rMeanNumber;
-    return formulaCollisionMass(field.rho, meanRadius, fiber, setting.depth, setting.speed * downward, setting.dt);
+    return formulaCollisionMass(field.rho, meanRadius, fiber, setting.depth, setting.speed * downward,
+                                setting.dt);
 }
 
 namespace
 {
 // The methods every figure shares, appended to `values` in the order of `referenceColumns`.
-const std::vector<std::string> referenceColumns{"truth",  "formula", "geometric", "spread",
-                                                "spreadSE", "fine",   "fineSE"};
+const std::vector<std::string> referenceColumns{"truth",    "formula", "geometric", "spread",
+                                                "spreadSE", "fine",    "fineSE"};
 
 // fineSteps: steps per seed of the fine reference (0: as many as the spread count).
 void addReferences(const PaperSetting& setting, const SprayDefinition& spray, const FiberCircle& fiber,
@@ -112,16 +113,18 @@ void addReferences(const PaperSetting& setting, const SprayDefinition& spray, co
     const SprayStreams streams(spray);
     values.push_back(analyticCollisionMass(streams, fiber));
     values.push_back(formulaFromCount(setting, streams, fiber, RadiusAverage::Mass));
-    values.push_back(geometricMass(spray, fiber, DropletPlacement::ParcelPoint, 1, setting.spreadStepsPerSeed).mean);
-    const MeanAndError spread
-        = geometricMass(spray, fiber, DropletPlacement::Spread, setting.spreadSeeds, setting.spreadStepsPerSeed);
+    values.push_back(
+        geometricMass(spray, fiber, DropletPlacement::ParcelPoint, 1, setting.spreadStepsPerSeed).mean);
+    const MeanAndError spread = geometricMass(spray, fiber, DropletPlacement::Spread, setting.spreadSeeds,
+                                              setting.spreadStepsPerSeed);
     values.push_back(spread.mean);
     values.push_back(spread.standardError);
     SprayDefinition jittered = spray;
     jittered.jitter = true;
     const MeanAndError fine = fineSteps > 0
         ? geometricMass(jittered, fiber, DropletPlacement::Spread, setting.fineSeeds, fineSteps)
-        : geometricMass(jittered, fiber, DropletPlacement::Spread, setting.spreadSeeds, setting.spreadStepsPerSeed);
+        : geometricMass(jittered, fiber, DropletPlacement::Spread, setting.spreadSeeds,
+                        setting.spreadStepsPerSeed);
     values.push_back(fine.mean);
     values.push_back(fine.standardError);
 }
@@ -180,9 +183,9 @@ Table figure7(const PaperSetting& setting)
 
 Table figure8(const PaperSetting& setting)
 {
-    const std::vector<GridMethod> methods{
-        paperGridMethod(setting, setting.fig8Grid), improvedGridMethod(setting, setting.fig8Grid),
-        paperGridMethod(setting, 250), improvedGridMethod(setting, 250)};
+    const std::vector<GridMethod> methods{paperGridMethod(setting, setting.fig8Grid),
+                                          improvedGridMethod(setting, setting.fig8Grid),
+                                          paperGridMethod(setting, 250), improvedGridMethod(setting, 250)};
     Table t;
     t.name = "figure8";
     t.columns = columnsWith({"streams", "dropletsPerParcel"}, methods);
@@ -262,8 +265,8 @@ Table radiusStudy(const PaperSetting& setting)
 {
     Table t;
     t.name = "radius";
-    t.columns = {"fiberRadius", "fine",         "fineSE",       "formulaMass", "formulaNumber",
-                 "gridMass",    "gridNumber",   "rMeanMass",    "rMeanNumber", "fineSteps"};
+    t.columns = {"fiberRadius", "fine",       "fineSE",    "formulaMass", "formulaNumber",
+                 "gridMass",    "gridNumber", "rMeanMass", "rMeanNumber", "fineSteps"};
     const SprayDefinition spray = polydisperseSpray(setting, setting.fig9Streams);
     const SprayStreams streams(spray);
     const double rho = streams.analyticDensity(setting.depth);
@@ -278,7 +281,8 @@ Table radiusStudy(const PaperSetting& setting)
         // cost more per step: fewer steps for them.
         const int steps = std::max(setting.fineSteps / 20,
                                    static_cast<int>(setting.fineSteps * std::min(1.0, 1e-4 / radius)));
-        const MeanAndError fine = geometricMass(jittered, fiber, DropletPlacement::Spread, setting.fineSeeds, steps);
+        const MeanAndError fine
+            = geometricMass(jittered, fiber, DropletPlacement::Spread, setting.fineSeeds, steps);
         const Eigen::Vector3d velocity = setting.speed * downward;
         GridMethod grid = improvedGridMethod(setting, setting.fig9Grid, polyWindow);
         const double gridMass = runGridMethod(setting, spray, fiber, grid).mass;
@@ -287,8 +291,8 @@ Table radiusStudy(const PaperSetting& setting)
         t.add("r_F " + std::to_string(radius * 1e6) + " um",
               {radius, fine.mean, fine.standardError,
                formulaCollisionMass(rho, rMass, fiber, setting.depth, velocity, setting.dt),
-               formulaCollisionMass(rho, rNumber, fiber, setting.depth, velocity, setting.dt), gridMass, gridNumber,
-               rMass, rNumber, static_cast<double>(steps) * setting.fineSeeds});
+               formulaCollisionMass(rho, rNumber, fiber, setting.depth, velocity, setting.dt), gridMass,
+               gridNumber, rMass, rNumber, static_cast<double>(steps) * setting.fineSeeds});
     }
     return t;
 }
@@ -347,7 +351,8 @@ Table accuracyStudy(const PaperSetting& setting)
         GridMethod m = paperGridMethod(setting, nodes);
         m.cloudInCellBelow = below;
         char label[64];
-        std::snprintf(label, sizeof label, "cloud-in-cell below %.3g h%s", below, below == 0.5 ? " (improved)" : "");
+        std::snprintf(label, sizeof label, "cloud-in-cell below %.3g h%s", below,
+                      below == 0.5 ? " (improved)" : "");
         add(label, m);
     }
     GridMethod improvedAxis = improvedGridMethod(setting, nodes);
@@ -358,9 +363,12 @@ Table accuracyStudy(const PaperSetting& setting)
     {
         for (int streams : setting.fig7Streams)
         {
-            const SprayDefinition spray = monodisperseSpray(setting, streams, setting.fig7DropletsPerStep / streams);
+            const SprayDefinition spray
+                = monodisperseSpray(setting, streams, setting.fig7DropletsPerStep / streams);
             const double truth = analyticCollisionMass(SprayStreams(spray), fiber);
-            t.add(v.label, {7.0, static_cast<double>(streams), runGridMethod(setting, spray, fiber, v.method).mass / truth - 1.0});
+            t.add(v.label,
+                  {7.0, static_cast<double>(streams),
+                   runGridMethod(setting, spray, fiber, v.method).mass / truth - 1.0});
         }
         for (double n : setting.fig8DropletsPerParcel)
         {

@@ -44,10 +44,10 @@ GridMethod improvedGridMethod(const PaperSetting& setting, int nodes, int window
 double formulaFromCount(const PaperSetting& setting, const SprayStreams& spray, const FiberCircle& fiber,
                         RadiusAverage average);
 
-Table figure7(const PaperSetting& setting);   // x: streams (fixed flow rate)
-Table figure8(const PaperSetting& setting);   // x: droplets per parcel
-Table figure9(const PaperSetting& setting);   // x: fiber radius, polydisperse
-Table figure10(const PaperSetting& setting);  // x: fiber radius up to 14 mm, grids 100 and 250
+Table figure7(const PaperSetting& setting);  // x: streams (fixed flow rate)
+Table figure8(const PaperSetting& setting);  // x: droplets per parcel
+Table figure9(const PaperSetting& setting);  // x: fiber radius, polydisperse
+Table figure10(const PaperSetting& setting); // x: fiber radius up to 14 mm, grids 100 and 250
 Table radiusStudy(const PaperSetting& setting);
 // The geometric count against the flow-rate expectation as the fiber radius sweeps across
 // the stream lattice (100 streams, r_F 9-11 mm): the staircase behind the geometric error.

@@ -23,8 +23,8 @@ double formulaCollisionMass(double rho, double meanRadius, const FiberCircle& fi
     return collisionMass(rho, meanRadius, fiber.radius, Eigen::Vector3d(0.0, 0.0, depth), velocity, dt);
 }
 
-double gridCollisionMass(const DensityGrid& grid, const FiberCircle& fiber, double depth, double zMid, double dt,
-                         const Eigen::Vector3d& flowDirection, const Eq9Options& options)
+double gridCollisionMass(const DensityGrid& grid, const FiberCircle& fiber, double depth, double zMid,
+                         double dt, const Eigen::Vector3d& flowDirection, const Eq9Options& options)
 {
     CollisionOptions collision;
     collision.radiusAverage = options.radiusAverage;
@@ -33,8 +33,8 @@ double gridCollisionMass(const DensityGrid& grid, const FiberCircle& fiber, doub
     if (options.sampling == Eq9Sampling::Axis)
     {
         const Eigen::Vector3d centre(fiber.x, fiber.y, zMid);
-        return collisionMass(grid, centre - halfAxis, centre + halfAxis, fiber.radius, Eigen::Vector3d::Zero(), dt,
-                             collision)
+        return collisionMass(grid, centre - halfAxis, centre + halfAxis, fiber.radius,
+                             Eigen::Vector3d::Zero(), dt, collision)
             .mass;
     }
     if (options.outlineSegments < 3 || !(options.maxSegmentInSpacings > 0.0))
@@ -59,8 +59,10 @@ double gridCollisionMass(const DensityGrid& grid, const FiberCircle& fiber, doub
     for (int k = 0; k < n; ++k)
     {
         const double a0 = 2.0 * pi * k / n, a1 = 2.0 * pi * (k + 1) / n;
-        const Eigen::Vector3d p0(fiber.x + fiber.radius * std::cos(a0), fiber.y + fiber.radius * std::sin(a0), zMid);
-        const Eigen::Vector3d p1(fiber.x + fiber.radius * std::cos(a1), fiber.y + fiber.radius * std::sin(a1), zMid);
+        const Eigen::Vector3d p0(fiber.x + fiber.radius * std::cos(a0), fiber.y + fiber.radius * std::sin(a0),
+                                 zMid);
+        const Eigen::Vector3d p1(fiber.x + fiber.radius * std::cos(a1), fiber.y + fiber.radius * std::sin(a1),
+                                 zMid);
         const double w = (p1 - p0).cross(u).norm(); // projected width normal to the flow
         weights[static_cast<std::size_t>(k)] = w;
         midpoints[static_cast<std::size_t>(k)] = 0.5 * (p0 + p1);
@@ -70,8 +72,9 @@ double gridCollisionMass(const DensityGrid& grid, const FiberCircle& fiber, doub
     for (int k = 0; k < n; ++k)
     {
         const Eigen::Vector3d& m = midpoints[static_cast<std::size_t>(k)];
-        const double segmentMass
-            = collisionMass(grid, m - halfAxis, m + halfAxis, fiber.radius, Eigen::Vector3d::Zero(), dt, collision).mass;
+        const double segmentMass = collisionMass(grid, m - halfAxis, m + halfAxis, fiber.radius,
+                                                 Eigen::Vector3d::Zero(), dt, collision)
+                                       .mass;
         mass += weights[static_cast<std::size_t>(k)] / weightSum * segmentMass;
     }
     return mass;

@@ -40,15 +40,15 @@ enum class Eq9Sampling
 
 struct FiberCircle
 {
-    double x = 0.0, y = 0.03;   // centre, m
-    double radius = 0.01;       // r_F, m
+    double x = 0.0, y = 0.03; // centre, m
+    double radius = 0.01;     // r_F, m
 };
 
 struct Eq9Options
 {
     Eq9Sampling sampling = Eq9Sampling::Outline;
-    int outlineSegments = 256;            // at least this many segments...
-    double maxSegmentInSpacings = 0.25;   // ...and none longer than this many node spacings
+    int outlineSegments = 256;          // at least this many segments...
+    double maxSegmentInSpacings = 0.25; // ...and none longer than this many node spacings
     RadiusAverage radiusAverage = RadiusAverage::Mass;
 };
 
@@ -58,8 +58,8 @@ double formulaCollisionMass(double rho, double meanRadius, const FiberCircle& fi
 
 // Eq. 9 with rho, <r> and droplet velocity from the grid's current window. zMid: the slab
 // centre; flowDirection: the spray's direction (outline weights).
-double gridCollisionMass(const DensityGrid& grid, const FiberCircle& fiber, double depth, double zMid, double dt,
-                         const Eigen::Vector3d& flowDirection, const Eq9Options& options);
+double gridCollisionMass(const DensityGrid& grid, const FiberCircle& fiber, double depth, double zMid,
+                         double dt, const Eigen::Vector3d& flowDirection, const Eq9Options& options);
 
 } // namespace validation
 } // namespace dropletFiber

@@ -113,7 +113,8 @@ MeanAndError geometricMass(const SprayDefinition& spray, const FiberCircle& fibe
     }
     double rMinBound = 0.0, radiusBound = 0.0;
     sprayBounds(spray, rMinBound, radiusBound);
-    const double reach = fiber.radius + radiusBound + (placement == DropletPlacement::Spread ? rMinBound : 0.0);
+    const double reach
+        = fiber.radius + radiusBound + (placement == DropletPlacement::Spread ? rMinBound : 0.0);
     const double flight = spray.speed * spray.dt;
     std::vector<double> seedMeans;
     for (int s = 0; s < seeds; ++s)
@@ -124,8 +125,8 @@ MeanAndError geometricMass(const SprayDefinition& spray, const FiberCircle& fibe
         double sum = 0.0;
         for (int step = 0; step < steps; ++step)
         {
-            const std::vector<SprayParcel> parcels = streams.parcels(step, fiber.x - reach, fiber.x + reach,
-                                                                     fiber.y - reach, fiber.y + reach + flight);
+            const std::vector<SprayParcel> parcels = streams.parcels(
+                step, fiber.x - reach, fiber.x + reach, fiber.y - reach, fiber.y + reach + flight);
             sum += geometricStepMass(parcels, fiber, spray.dt, placement, seeded.seed);
         }
         seedMeans.push_back(sum / steps);

@@ -21,7 +21,8 @@ GridSpec gridSpecFor(const PaperSetting& setting, const GridMethod& method)
     const int extraX = static_cast<int>(std::ceil(method.margin / hx - 1e-9));
     const int extraY = static_cast<int>(std::ceil(method.margin / hy - 1e-9));
     GridSpec spec;
-    spec.lower = Eigen::Vector3d(setting.xMin - extraX * hx, setting.yMin - extraY * hy, -0.5 * setting.depth);
+    spec.lower
+        = Eigen::Vector3d(setting.xMin - extraX * hx, setting.yMin - extraY * hy, -0.5 * setting.depth);
     spec.upper = Eigen::Vector3d(setting.xMax + extraX * hx, setting.yMax + extraY * hy, 0.5 * setting.depth);
     spec.nodes = {{method.nodes + 2 * extraX, method.nodes + 2 * extraY, 1}};
     return spec;
@@ -51,19 +52,20 @@ GridOutcome runGridMethod(const PaperSetting& setting, const SprayDefinition& sp
             const double reach = std::max(kernel.reach(), h);
             const double yEnd = p.position.y(), yStart = yEnd - p.velocity.y() * spray.dt;
             const double x = p.position.x();
-            if (std::max(yEnd, yStart) < yLow - reach || std::min(yEnd, yStart) > yHigh + reach || x < xLow - reach
-                || x > xHigh + reach)
+            if (std::max(yEnd, yStart) < yLow - reach || std::min(yEnd, yStart) > yHigh + reach
+                || x < xLow - reach || x > xHigh + reach)
             {
                 continue;
             }
             grid.deposit(p, spray.dt);
             ++outcome.parcelsDeposited;
         }
-        outcome.parcelsFallback = grid.stepStatistics().parcelsFallback + grid.stepStatistics().parcelsCloudInCell;
+        outcome.parcelsFallback
+            = grid.stepStatistics().parcelsFallback + grid.stepStatistics().parcelsCloudInCell;
         grid.commitStep();
     }
-    outcome.mass = gridCollisionMass(grid, fiber, setting.depth, 0.0, spray.dt, Eigen::Vector3d(0.0, -1.0, 0.0),
-                                     method.eq9);
+    outcome.mass = gridCollisionMass(grid, fiber, setting.depth, 0.0, spray.dt,
+                                     Eigen::Vector3d(0.0, -1.0, 0.0), method.eq9);
     outcome.rhoAtFiber = grid.sample(Eigen::Vector3d(fiber.x, fiber.y, 0.0)).rho;
     return outcome;
 }

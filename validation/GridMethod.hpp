@@ -21,10 +21,10 @@ namespace validation
 struct GridMethod
 {
     std::string label = "grid";
-    int nodes = 100;            // nodes per direction, N x N over the box
-    KernelSettings kernel{};    // beta (eq. 18), cap on r_max
-    int window = 1;             // steps averaged (eq. 26)
-    Eq9Options eq9{};           // where eq. 9 samples the grid, which mean radius
+    int nodes = 100;         // nodes per direction, N x N over the box
+    KernelSettings kernel{}; // beta (eq. 18), cap on r_max
+    int window = 1;          // steps averaged (eq. 26)
+    Eq9Options eq9{};        // where eq. 9 samples the grid, which mean radius
     // The grid covers the box widened by `margin` on every side of x and y, with the
     // same node spacing as the N x N grid of the box (edge study).
     double margin = 0.0;
@@ -41,9 +41,10 @@ struct GridMethod
 
 struct GridOutcome
 {
-    double mass = 0.0;               // eq. 9 at the fiber, kg per step
-    double rhoAtFiber = 0.0;         // the grid's density at the fiber centre
-    std::int64_t parcelsFallback = 0; // parcels of the last step deposited cloud-in-cell (no node reached, or unresolved)
+    double mass = 0.0;       // eq. 9 at the fiber, kg per step
+    double rhoAtFiber = 0.0; // the grid's density at the fiber centre
+    std::int64_t parcelsFallback
+        = 0; // parcels of the last step deposited cloud-in-cell (no node reached, or unresolved)
     std::int64_t parcelsDeposited = 0;
 };
 

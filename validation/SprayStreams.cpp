@@ -35,16 +35,22 @@ SprayStreams::SprayStreams(const SprayDefinition& definition) : def_(definition)
 {
     if (def_.streams < 1 || !(def_.speed > 0.0) || !(def_.dt > 0.0) || !(def_.injectionInterval > 0.0))
     {
-        throw std::invalid_argument("SprayStreams: streams, speed, dt and injection interval must be positive");
+        throw std::invalid_argument(
+            "SprayStreams: streams, speed, dt and injection interval must be positive");
     }
-    if (def_.polydisperse && !(def_.radiusHigh > def_.radiusLow && def_.radiusLow > 0.0 && def_.parcelMass > 0.0))
+    if (def_.polydisperse
+        && !(def_.radiusHigh > def_.radiusLow && def_.radiusLow > 0.0 && def_.parcelMass > 0.0))
     {
-        throw std::invalid_argument("SprayStreams: polydisperse spray needs 0 < radiusLow < radiusHigh, parcelMass > 0");
+        throw std::invalid_argument(
+            "SprayStreams: polydisperse spray needs 0 < radiusLow < radiusHigh, parcelMass > 0");
     }
     spacing_ = 2.0 * def_.injectionHalfWidth / def_.streams;
 }
 
-double SprayStreams::streamX(int stream) const { return -def_.injectionHalfWidth + (stream + 0.5) * spacing_; }
+double SprayStreams::streamX(int stream) const
+{
+    return -def_.injectionHalfWidth + (stream + 0.5) * spacing_;
+}
 
 double SprayStreams::massPerStep() const
 {
@@ -88,9 +94,11 @@ std::vector<SprayParcel> SprayStreams::parcels(std::int64_t step, double xLow, d
     const double t = static_cast<double>(step) * def_.dt;
     const double v = def_.speed;
     const double margin = def_.jitter ? 0.5 * spacing_ : 0.0;
-    const int first = std::max(0, static_cast<int>(std::floor((xLow - margin + def_.injectionHalfWidth) / spacing_)));
-    const int last = std::min(def_.streams - 1,
-                              static_cast<int>(std::floor((xHigh + margin + def_.injectionHalfWidth) / spacing_)));
+    const int first
+        = std::max(0, static_cast<int>(std::floor((xLow - margin + def_.injectionHalfWidth) / spacing_)));
+    const int last
+        = std::min(def_.streams - 1,
+                   static_cast<int>(std::floor((xHigh + margin + def_.injectionHalfWidth) / spacing_)));
     // Age a = t - t_k of the parcels whose path [y, y + v dt] meets [yLow, yHigh]:
     //     y = yInjection - v a <= yHigh   and   y + v dt >= yLow,   and a >= 0.
     const double ageMin = std::max(0.0, (def_.yInjection - yHigh) / v);
@@ -108,7 +116,8 @@ std::vector<SprayParcel> SprayStreams::parcels(std::int64_t step, double xLow, d
         {
             const auto k = static_cast<std::int64_t>(kd);
             const std::uint64_t id = (static_cast<std::uint64_t>(i) << 40) ^ static_cast<std::uint64_t>(k);
-            const double age = (t - kd * def_.injectionInterval) - def_.injectionPhase * def_.injectionInterval;
+            const double age
+                = (t - kd * def_.injectionInterval) - def_.injectionPhase * def_.injectionInterval;
             if (age < 0.0)
             {
                 continue;
@@ -116,7 +125,9 @@ std::vector<SprayParcel> SprayStreams::parcels(std::int64_t step, double xLow, d
             double x = streamX(i);
             if (def_.jitter)
             {
-                x += spacing_ * (hashUniform(seed, static_cast<std::uint64_t>(i), static_cast<std::uint64_t>(k), 1) - 0.5);
+                x += spacing_
+                    * (hashUniform(seed, static_cast<std::uint64_t>(i), static_cast<std::uint64_t>(k), 1)
+                       - 0.5);
             }
             SprayParcel p;
             p.id = id;
@@ -125,7 +136,8 @@ std::vector<SprayParcel> SprayStreams::parcels(std::int64_t step, double xLow, d
             p.parcel.rhoDroplet = def_.dropletDensity;
             if (def_.polydisperse)
             {
-                const double u = hashUniform(seed, static_cast<std::uint64_t>(i), static_cast<std::uint64_t>(k), 2);
+                const double u
+                    = hashUniform(seed, static_cast<std::uint64_t>(i), static_cast<std::uint64_t>(k), 2);
                 const double r = def_.radiusLow + u * (def_.radiusHigh - def_.radiusLow);
                 p.parcel.diameter = 2.0 * r;
                 p.parcel.nParticle = def_.parcelMass / (def_.dropletDensity * 4.0 / 3.0 * pi * r * r * r);

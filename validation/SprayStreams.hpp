@@ -31,16 +31,16 @@ struct SprayDefinition
     int streams = 100;
     double injectionHalfWidth = 0.0249;
     double yInjection = 0.07;
-    double speed = 1.0;                 // downward
+    double speed = 1.0; // downward
     double dt = 1e-3;
     double injectionInterval = 1e-3;
     double injectionPhase = 0.37;
-    double zMid = 0.0;                  // slab centre (flat direction of the grid)
+    double zMid = 0.0; // slab centre (flat direction of the grid)
     double dropletDensity = 1000.0;
 
     // Monodisperse: every parcel has dropletsPerParcel droplets of dropletRadius.
     double dropletRadius = 1e-5;
-    double dropletsPerParcel = 10.0;    // may be fractional (O'Rourke parcels)
+    double dropletsPerParcel = 10.0; // may be fractional (O'Rourke parcels)
 
     // Polydisperse (when radiusHigh > radiusLow): each parcel carries parcelMass, its radius
     // is uniform in [radiusLow, radiusHigh], n = parcelMass / m(r).
@@ -82,7 +82,8 @@ public:
     // the step are left out; a parcel injected during the step has a path that starts above
     // the injection height (outside the box: the grid deposits the share of the step spent
     // inside).
-    std::vector<SprayParcel> parcels(std::int64_t step, double xLow, double xHigh, double yLow, double yHigh) const;
+    std::vector<SprayParcel> parcels(std::int64_t step, double xLow, double xHigh, double yLow,
+                                     double yHigh) const;
     // All parcels in the box [yLow, yInjection].
     std::vector<SprayParcel> parcels(std::int64_t step, double yLow) const;
 

@@ -18,8 +18,8 @@ struct TableRow
 
 struct Table
 {
-    std::string name;                  // file stem, e.g. "figure7"
-    std::vector<std::string> columns;  // numeric columns (the label column comes first)
+    std::string name;                 // file stem, e.g. "figure7"
+    std::vector<std::string> columns; // numeric columns (the label column comes first)
     std::vector<TableRow> rows;
 
     void add(const std::string& label, const std::vector<double>& values);

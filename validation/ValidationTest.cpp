@@ -16,7 +16,10 @@ namespace
 {
 const PaperSetting setting = PaperSetting::reduced();
 
-double relative(double value, double reference) { return value / reference - 1.0; }
+double relative(double value, double reference)
+{
+    return value / reference - 1.0;
+}
 
 struct ConstantDensityCase
 {
@@ -72,7 +75,8 @@ TEST(Pieces, SteadySprayHasTheFlowRateDensity)
         EXPECT_NEAR(f.rMeanMass, setting.dropletRadius, 1e-18);
     }
     // Mass per step: 100 streams x 7 droplets.
-    EXPECT_NEAR(relative(spray.massPerStep(), 700.0 * setting.dropletMass(setting.dropletRadius)), 0.0, 1e-14);
+    EXPECT_NEAR(relative(spray.massPerStep(), 700.0 * setting.dropletMass(setting.dropletRadius)), 0.0,
+                1e-14);
 }
 
 TEST(Pieces, PolydisperseMeanRadiiMatchTheirDefinitions)
@@ -80,8 +84,8 @@ TEST(Pieces, PolydisperseMeanRadiiMatchTheirDefinitions)
     // Equal-mass parcels, radius uniform in [a, b]: mass mean (a + b) / 2 and number mean
     // 2ab / (a + b); compared with the parcels actually injected.
     const SprayStreams spray(polydisperseSpray(setting, 200));
-    const MeasuredField f
-        = measureField(spray, setting.depth, -setting.injectionHalfWidth, setting.injectionHalfWidth, 0.0, 0.07, 20);
+    const MeasuredField f = measureField(spray, setting.depth, -setting.injectionHalfWidth,
+                                         setting.injectionHalfWidth, 0.0, 0.07, 20);
     EXPECT_NEAR(relative(f.rMeanMass, spray.meanRadiusMass()), 0.0, 0.005);
     EXPECT_NEAR(relative(f.rMeanNumber, spray.meanRadiusNumber()), 0.0, 0.005);
     EXPECT_GT(spray.meanRadiusMass() / spray.meanRadiusNumber(), 1.2); // far apart: a sharp question
@@ -111,7 +115,8 @@ TEST(ConstantDensity, FormulaWithCountedDensityWithinTenthOfPercent)
         const SprayStreams spray(monodisperseSpray(setting, c.streams, c.dropletsPerParcel));
         const double truth = analyticCollisionMass(spray, fiber);
         const double formula = formulaFromCount(setting, spray, fiber, RadiusAverage::Mass);
-        EXPECT_LT(std::abs(relative(formula, truth)), 1e-3) << c.streams << " streams, n = " << c.dropletsPerParcel;
+        EXPECT_LT(std::abs(relative(formula, truth)), 1e-3)
+            << c.streams << " streams, n = " << c.dropletsPerParcel;
     }
 }
 
@@ -123,7 +128,8 @@ TEST(ConstantDensity, ImprovedGridBelowOnePercentAt100x100)
     {
         const SprayDefinition spray = monodisperseSpray(setting, c.streams, c.dropletsPerParcel);
         const double truth = analyticCollisionMass(SprayStreams(spray), fiber);
-        const double error = relative(runGridMethod(setting, spray, fiber, improvedGridMethod(setting, 100)).mass, truth);
+        const double error
+            = relative(runGridMethod(setting, spray, fiber, improvedGridMethod(setting, 100)).mass, truth);
         EXPECT_LT(std::abs(error), 0.01) << c.streams << " streams, n = " << c.dropletsPerParcel;
         worst = std::max(worst, std::abs(error));
     }
@@ -142,8 +148,10 @@ TEST(ConstantDensity, FinerGridNotWorse)
     {
         const SprayDefinition spray = monodisperseSpray(setting, c.streams, c.dropletsPerParcel);
         const double truth = analyticCollisionMass(SprayStreams(spray), fiber);
-        paper100 += std::abs(relative(runGridMethod(setting, spray, fiber, paperGridMethod(setting, 100)).mass, truth));
-        paper250 += std::abs(relative(runGridMethod(setting, spray, fiber, paperGridMethod(setting, 250)).mass, truth));
+        paper100 += std::abs(
+            relative(runGridMethod(setting, spray, fiber, paperGridMethod(setting, 100)).mass, truth));
+        paper250 += std::abs(
+            relative(runGridMethod(setting, spray, fiber, paperGridMethod(setting, 250)).mass, truth));
         const double improved250
             = relative(runGridMethod(setting, spray, fiber, improvedGridMethod(setting, 250)).mass, truth);
         EXPECT_LT(std::abs(improved250), 0.01) << c.streams << " streams, n = " << c.dropletsPerParcel;
@@ -197,7 +205,8 @@ TEST(Geometric, FineReferenceConvergesToFlowRateExpectation)
     SprayDefinition spray = polydisperseSpray(setting, setting.fig9Streams);
     const double truth = analyticCollisionMass(SprayStreams(spray), fiber);
     spray.jitter = true;
-    const MeanAndError fine = geometricMass(spray, fiber, DropletPlacement::Spread, setting.fineSeeds, setting.fineSteps / 4);
+    const MeanAndError fine
+        = geometricMass(spray, fiber, DropletPlacement::Spread, setting.fineSeeds, setting.fineSteps / 4);
     EXPECT_GT(fine.standardError, 0.0);
     EXPECT_LT(std::abs(fine.mean - truth), 3.0 * fine.standardError + 1e-4 * truth);
 }
@@ -220,7 +229,8 @@ TEST(Polydisperse, MassWeightedRadiusMatchesFineGeometricReference)
         {
             EXPECT_GT(std::abs(radius.value(row, "formulaNumber") - fine), tolerance) << "r_F = " << rF;
         }
-        RecordProperty("massOverFine_" + std::to_string(row), std::to_string(radius.value(row, "formulaMass") / fine));
+        RecordProperty("massOverFine_" + std::to_string(row),
+                       std::to_string(radius.value(row, "formulaMass") / fine));
         RecordProperty("numberOverFine_" + std::to_string(row),
                        std::to_string(radius.value(row, "formulaNumber") / fine));
     }

@@ -22,7 +22,8 @@ namespace
 {
 void usage()
 {
-    std::cerr << "usage: paperValidation [--reduced] [--out DIR] [--only figure7,figure8,figure9,figure10,radius,sawtooth,accuracy]\n";
+    std::cerr << "usage: paperValidation [--reduced] [--out DIR] [--only "
+                 "figure7,figure8,figure9,figure10,radius,sawtooth,accuracy]\n";
 }
 
 Table settingTable(const PaperSetting& s, bool reduced)
@@ -99,8 +100,9 @@ int main(int argc, char** argv)
     settingTable(setting, reduced).write(out);
 
     const std::vector<std::pair<std::string, std::function<Table(const PaperSetting&)>>> experiments{
-        {"figure7", figure7}, {"figure8", figure8}, {"figure9", figure9},
-        {"figure10", figure10}, {"radius", radiusStudy}, {"sawtooth", geometricSawtooth}, {"accuracy", accuracyStudy}};
+        {"figure7", figure7},       {"figure8", figure8},    {"figure9", figure9},
+        {"figure10", figure10},     {"radius", radiusStudy}, {"sawtooth", geometricSawtooth},
+        {"accuracy", accuracyStudy}};
     try
     {
         for (const auto& [name, run] : experiments)
@@ -112,7 +114,8 @@ int main(int argc, char** argv)
             const auto start = std::chrono::steady_clock::now();
             const Table table = run(setting);
             table.write(out);
-            const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            const double seconds
+                = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
             std::printf("%-10s %3zu rows  %7.1f s  -> %s/%s.csv\n", name.c_str(), table.rows.size(), seconds,
                         out.c_str(), table.name.c_str());
             std::fflush(stdout);

@@ -45,7 +45,8 @@ Eigen::Vector3d parseVector(const std::string& flag, const std::string& text)
     {
         throw InputError(flag + ": expected three comma-separated numbers X,Y,Z, got '" + text + "'");
     }
-    return Eigen::Vector3d(parseNumber(flag, parts[0]), parseNumber(flag, parts[1]), parseNumber(flag, parts[2]));
+    return Eigen::Vector3d(parseNumber(flag, parts[0]), parseNumber(flag, parts[1]),
+                           parseNumber(flag, parts[2]));
 }
 
 int parseCount(const std::string& flag, const std::string& text, int minimum)
@@ -53,7 +54,8 @@ int parseCount(const std::string& flag, const std::string& text, int minimum)
     const double value = parseNumber(flag, text);
     if (value != std::floor(value) || value < minimum || value > 1e9)
     {
-        throw InputError(flag + ": expected a whole number >= " + std::to_string(minimum) + ", got '" + text + "'");
+        throw InputError(flag + ": expected a whole number >= " + std::to_string(minimum) + ", got '" + text
+                         + "'");
     }
     return static_cast<int>(value);
 }
@@ -113,9 +115,10 @@ Options parseCommandLine(int argc, char** argv)
 {
     Options options;
     std::map<std::string, std::string> values;
-    static const char* known[] = {"--parcels", "--lower", "--upper", "--nodes", "--dt", "--output", "--beta",
-                                  "--rmax-cap", "--dimension", "--segments", "--segments-output",
-                                  "--radius-average", "--samples"};
+    static const char* known[]
+        = {"--parcels",         "--lower",          "--upper",    "--nodes",     "--dt",
+           "--output",          "--beta",           "--rmax-cap", "--dimension", "--segments",
+           "--segments-output", "--radius-average", "--samples"};
     for (int a = 1; a < argc; ++a)
     {
         std::string flag = argv[a];
@@ -163,11 +166,13 @@ Options parseCommandLine(int argc, char** argv)
     const std::vector<std::string> nodes = splitCommas(values["--nodes"]);
     if (nodes.size() != 3)
     {
-        throw InputError("--nodes: expected three comma-separated counts NX,NY,NZ, got '" + values["--nodes"] + "'");
+        throw InputError("--nodes: expected three comma-separated counts NX,NY,NZ, got '" + values["--nodes"]
+                         + "'");
     }
     for (int d = 0; d < 3; ++d)
     {
-        options.grid.nodes[static_cast<std::size_t>(d)] = parseCount("--nodes", nodes[static_cast<std::size_t>(d)], 1);
+        options.grid.nodes[static_cast<std::size_t>(d)]
+            = parseCount("--nodes", nodes[static_cast<std::size_t>(d)], 1);
     }
     try
     {

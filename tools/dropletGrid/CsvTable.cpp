@@ -32,7 +32,8 @@ std::vector<std::string> split(const std::string& line)
     while (true)
     {
         const std::size_t comma = line.find(',', start);
-        fields.push_back(trim(line.substr(start, comma == std::string::npos ? std::string::npos : comma - start)));
+        fields.push_back(
+            trim(line.substr(start, comma == std::string::npos ? std::string::npos : comma - start)));
         if (comma == std::string::npos)
         {
             return fields;
@@ -87,8 +88,8 @@ std::vector<CsvRow> readCsv(const std::string& path, const std::vector<std::stri
                 }
                 if (found == fields.size())
                 {
-                    throw InputError(where(path, line) + "header: missing column '" + column + "' (header is '"
-                                     + trimmed + "')");
+                    throw InputError(where(path, line) + "header: missing column '" + column
+                                     + "' (header is '" + trimmed + "')");
                 }
                 position.push_back(found);
             }
@@ -106,8 +107,8 @@ std::vector<CsvRow> readCsv(const std::string& path, const std::vector<std::stri
                     if (position[c] >= fields.size())
                     {
                         message = where(path, line) + "field '" + columns[c] + "': missing (line has "
-                            + std::to_string(fields.size()) + " fields, the header has " + std::to_string(fieldCount)
-                            + ")";
+                            + std::to_string(fields.size()) + " fields, the header has "
+                            + std::to_string(fieldCount) + ")";
                         break;
                     }
                 }
@@ -128,12 +129,13 @@ std::vector<CsvRow> readCsv(const std::string& path, const std::vector<std::stri
             const double value = std::strtod(token.c_str(), &end);
             if (end != token.c_str() + token.size())
             {
-                throw InputError(where(path, line) + "field '" + columns[c] + "': not a number: '" + token + "'");
+                throw InputError(where(path, line) + "field '" + columns[c] + "': not a number: '" + token
+                                 + "'");
             }
             if (!std::isfinite(value))
             {
-                throw InputError(where(path, line) + "field '" + columns[c] + "': not a finite number: '" + token
-                                 + "'");
+                throw InputError(where(path, line) + "field '" + columns[c] + "': not a finite number: '"
+                                 + token + "'");
             }
             row.values.push_back(value);
         }

@@ -40,8 +40,8 @@ std::vector<Parcel> readParcels(const std::string& path)
         {
             if (v[index] < 0.0)
             {
-                throw InputError(path + ":" + std::to_string(row.line) + ": field '" + columns[index] + "': negative "
-                                 + what + " " + std::to_string(v[index]));
+                throw InputError(path + ":" + std::to_string(row.line) + ": field '" + columns[index]
+                                 + "': negative " + what + " " + std::to_string(v[index]));
             }
         };
         check(6, "diameter");
@@ -75,9 +75,9 @@ void writeNodes(const DensityGrid& grid, const std::string& path)
             {
                 const Eigen::Vector3d g = spec.nodePosition(i, j, k);
                 const DropletFieldValue f = grid.nodeValue(i, j, k);
-                std::fprintf(out, "%d,%d,%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", i, j, k, g.x(),
-                             g.y(), g.z(), f.rho, f.rMeanNumber, f.rMeanMass, f.velocity.x(), f.velocity.y(),
-                             f.velocity.z());
+                std::fprintf(out, "%d,%d,%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", i, j, k,
+                             g.x(), g.y(), g.z(), f.rho, f.rMeanNumber, f.rMeanMass, f.velocity.x(),
+                             f.velocity.y(), f.velocity.z());
             }
         }
     }
@@ -89,7 +89,8 @@ void writeNodes(const DensityGrid& grid, const std::string& path)
 
 void evaluateSegments(const DensityGrid& grid, const Options& options)
 {
-    const std::vector<std::string> columns{"ax", "ay", "az", "bx", "by", "bz", "fiberRadius", "ux", "uy", "uz"};
+    const std::vector<std::string> columns{"ax", "ay",          "az", "bx", "by",
+                                           "bz", "fiberRadius", "ux", "uy", "uz"};
     const std::vector<CsvRow> rows = readCsv(options.segmentsFile, columns);
     std::unique_ptr<std::ofstream> file;
     if (!options.segmentsOutput.empty())
@@ -119,8 +120,8 @@ void evaluateSegments(const DensityGrid& grid, const Options& options)
         const double rMean
             = options.collision.radiusAverage == RadiusAverage::Mass ? mid.rMeanMass : mid.rMeanNumber;
         out << index << ',' << hit.mass << ',' << hit.momentum.x() << ',' << hit.momentum.y() << ','
-            << hit.momentum.z() << ',' << mid.rho << ',' << rMean << ',' << hit.samples << ',' << hit.samplesOutside
-            << '\n';
+            << hit.momentum.z() << ',' << mid.rho << ',' << rMean << ',' << hit.samples << ','
+            << hit.samplesOutside << '\n';
         totalMass += hit.mass;
         ++index;
     }
@@ -153,8 +154,8 @@ int run(int argc, char** argv)
     const StepStatistics& s = grid.lastStepStatistics();
 
     std::printf("dropletGrid: %zu parcels from %s, grid %dx%dx%d nodes, dt %g s\n", parcels.size(),
-                options.parcelsFile.c_str(), options.grid.nodes[0], options.grid.nodes[1], options.grid.nodes[2],
-                options.dt);
+                options.parcelsFile.c_str(), options.grid.nodes[0], options.grid.nodes[1],
+                options.grid.nodes[2], options.dt);
     std::printf("  mass in:               %.12e kg\n", s.massIn);
     std::printf("  mass on the grid:      %.12e kg (sum over the nodes)\n", grid.windowMassPerStep());
     std::printf("  mass outside:          %.12e kg (%lld parcels outside, %lld partly outside the box)\n",
@@ -164,7 +165,8 @@ int run(int argc, char** argv)
     std::printf("  no node in reach:      %lld parcels (multilinear fallback)\n",
                 static_cast<long long>(s.parcelsFallback));
     std::printf("  nodes visited:         %lld (%.1f per parcel)\n", static_cast<long long>(s.nodesVisited),
-                parcels.empty() ? 0.0 : static_cast<double>(s.nodesVisited) / static_cast<double>(parcels.size()));
+                parcels.empty() ? 0.0
+                                : static_cast<double>(s.nodesVisited) / static_cast<double>(parcels.size()));
 
     double writeTime = 0.0;
     if (!options.nodesOutput.empty())
@@ -178,10 +180,10 @@ int run(int argc, char** argv)
     {
         evaluateSegments(grid, options);
     }
-    std::printf("  time:                  read %.3f s, deposit %.3f s (%.3g parcels/s), write %.3f s, total %.3f s\n",
-                readTime, depositTime,
-                depositTime > 0.0 ? static_cast<double>(parcels.size()) / depositTime : 0.0, writeTime,
-                seconds(start));
+    std::printf(
+        "  time:                  read %.3f s, deposit %.3f s (%.3g parcels/s), write %.3f s, total %.3f s\n",
+        readTime, depositTime, depositTime > 0.0 ? static_cast<double>(parcels.size()) / depositTime : 0.0,
+        writeTime, seconds(start));
     return 0;
 }
 

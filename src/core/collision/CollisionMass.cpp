@@ -61,7 +61,8 @@ SegmentCollision collisionMass(const DensityGrid& grid, const Eigen::Vector3d& a
         {
             continue;
         }
-        const double meanRadius = options.radiusAverage == RadiusAverage::Mass ? field.rMeanMass : field.rMeanNumber;
+        const double meanRadius
+            = options.radiusAverage == RadiusAverage::Mass ? field.rMeanMass : field.rMeanNumber;
         const Eigen::Vector3d relative = field.velocity - segmentVelocity;
         const double mass = collisionMass(field.rho, meanRadius, fiberRadius, piece, relative, dt);
         result.mass += mass;

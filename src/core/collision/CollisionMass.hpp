@@ -44,10 +44,10 @@ struct CollisionOptions
 
 struct SegmentCollision
 {
-    double mass = 0.0;                        // m_coll, kg
-    Eigen::Vector3d momentum{0.0, 0.0, 0.0};  // sum of m_coll * u_droplet, kg m/s
-    int samples = 0;                          // sample points used
-    int samplesOutside = 0;                   // of which outside the grid box
+    double mass = 0.0;                       // m_coll, kg
+    Eigen::Vector3d momentum{0.0, 0.0, 0.0}; // sum of m_coll * u_droplet, kg m/s
+    int samples = 0;                         // sample points used
+    int samplesOutside = 0;                  // of which outside the grid box
 };
 
 // Eq. 9 for given droplet field values (the formula on its own).

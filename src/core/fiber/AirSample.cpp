@@ -1,6 +1,7 @@
 #include "fiber/AirSample.hpp"
 
-namespace dropletFiber {
+namespace dropletFiber
+{
 
 Eigen::Index airSamplePointCount(const Fiber& fiber)
 {
@@ -11,7 +12,8 @@ AirSampleLayout airSampleLayout(const std::vector<Fiber>& fibers)
 {
     AirSampleLayout layout;
     layout.firstPoint.reserve(fibers.size());
-    for (const Fiber& fiber : fibers) {
+    for (const Fiber& fiber : fibers)
+    {
         layout.firstPoint.push_back(layout.pointCount);
         layout.pointCount += airSamplePointCount(fiber);
     }
@@ -22,8 +24,10 @@ Eigen::Matrix3Xd airSamplePoints(const std::vector<Fiber>& fibers)
 {
     const AirSampleLayout layout = airSampleLayout(fibers);
     Eigen::Matrix3Xd points(3, layout.pointCount);
-    for (std::size_t f = 0; f < fibers.size(); ++f) {
-        if (airSamplePointCount(fibers[f]) > 0) {
+    for (std::size_t f = 0; f < fibers.size(); ++f)
+    {
+        if (airSamplePointCount(fibers[f]) > 0)
+        {
             points.middleCols(layout.firstPoint[f], fibers[f].pointCount()) = fibers[f].positions();
         }
     }
@@ -34,15 +38,18 @@ AirSample airSampleOfFibers(const AirSample& sample, const std::vector<Fiber>& f
                             const std::vector<std::size_t>& subset)
 {
     AirSample part;
-    if (sample.pointCount() == 0) return part;
+    if (sample.pointCount() == 0)
+        return part;
     const AirSampleLayout layout = airSampleLayout(fibers);
     Eigen::Index partPoints = 0;
-    for (const std::size_t f : subset) partPoints += airSamplePointCount(fibers[f]);
+    for (const std::size_t f : subset)
+        partPoints += airSamplePointCount(fibers[f]);
     part.velocity.resize(3, partPoints);
     part.density.resize(partPoints);
     part.viscosity.resize(partPoints);
     Eigen::Index at = 0;
-    for (const std::size_t f : subset) {
+    for (const std::size_t f : subset)
+    {
         const Eigen::Index n = airSamplePointCount(fibers[f]);
         const Eigen::Index from = layout.firstPoint[f];
         part.velocity.middleCols(at, n) = sample.velocity.middleCols(from, n);
@@ -53,8 +60,8 @@ AirSample airSampleOfFibers(const AirSample& sample, const std::vector<Fiber>& f
     return part;
 }
 
-AirSample uniformAir(const std::vector<Fiber>& fibers, const Eigen::Vector3d& velocity,
-                     double density, double viscosity)
+AirSample uniformAir(const std::vector<Fiber>& fibers, const Eigen::Vector3d& velocity, double density,
+                     double viscosity)
 {
     const Eigen::Index n = airSampleLayout(fibers).pointCount;
     AirSample air;
@@ -64,4 +71,4 @@ AirSample uniformAir(const std::vector<Fiber>& fibers, const Eigen::Vector3d& ve
     return air;
 }
 
-}  // namespace dropletFiber
+} // namespace dropletFiber

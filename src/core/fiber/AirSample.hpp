@@ -14,19 +14,22 @@
 #include <cstddef>
 #include <vector>
 
-namespace dropletFiber {
+namespace dropletFiber
+{
 
-struct AirSample {
-    Eigen::Matrix3Xd velocity;   // u [m/s], one column per point
-    Eigen::VectorXd density;     // rho [kg/m^3]
-    Eigen::VectorXd viscosity;   // dynamic viscosity mu [Pa s]
+struct AirSample
+{
+    Eigen::Matrix3Xd velocity; // u [m/s], one column per point
+    Eigen::VectorXd density;   // rho [kg/m^3]
+    Eigen::VectorXd viscosity; // dynamic viscosity mu [Pa s]
 
     Eigen::Index pointCount() const { return velocity.cols(); }
 };
 
 // Where each fiber's points start in the sample (an immobile fiber: where the next
 // fiber's would), and how many points the sample has.
-struct AirSampleLayout {
+struct AirSampleLayout
+{
     std::vector<Eigen::Index> firstPoint;
     Eigen::Index pointCount = 0;
 };
@@ -46,7 +49,7 @@ AirSample airSampleOfFibers(const AirSample& sample, const std::vector<Fiber>& f
                             const std::vector<std::size_t>& subset);
 
 // Same air at every point of fibers' sample (tests, simple cases).
-AirSample uniformAir(const std::vector<Fiber>& fibers, const Eigen::Vector3d& velocity,
-                     double density, double viscosity);
+AirSample uniformAir(const std::vector<Fiber>& fibers, const Eigen::Vector3d& velocity, double density,
+                     double viscosity);
 
-}  // namespace dropletFiber
+} // namespace dropletFiber

@@ -21,9 +21,11 @@
 
 #include <vector>
 
-namespace dropletFiber {
+namespace dropletFiber
+{
 
-class BandedLU {
+class BandedLU
+{
 public:
     // n x n matrix with kl sub- and ku super-diagonals; all entries zero.
     void reset(Eigen::Index n, Eigen::Index kl, Eigen::Index ku);
@@ -57,14 +59,14 @@ private:
     const double* rowPointer(Eigen::Index i) const { return band_.data() + i * (width_ - 1) + kl_; }
 
     Eigen::Index n_ = 0, kl_ = 0, ku_ = 0;
-    Eigen::Index width_ = 0;              // kl + (kl + ku) + 1: room for pivoting fill
+    Eigen::Index width_ = 0; // kl + (kl + ku) + 1: room for pivoting fill
     double pivotThreshold_ = 1.0;
     Eigen::Index rowExchanges_ = 0;
-    std::vector<double> band_;            // row i: columns i-kl .. i+kl+ku
-    std::vector<double> lower_;           // multipliers, kl per column
-    std::vector<Eigen::Index> pivot_;     // row swapped with k at step k
-    std::vector<Eigen::Index> lastColumn_;  // last nonzero column of U's row k
-    std::vector<double> inverseDiagonal_;   // 1 / U(k, k)
+    std::vector<double> band_;             // row i: columns i-kl .. i+kl+ku
+    std::vector<double> lower_;            // multipliers, kl per column
+    std::vector<Eigen::Index> pivot_;      // row swapped with k at step k
+    std::vector<Eigen::Index> lastColumn_; // last nonzero column of U's row k
+    std::vector<double> inverseDiagonal_;  // 1 / U(k, k)
 };
 
-}  // namespace dropletFiber
+} // namespace dropletFiber

@@ -16,14 +16,16 @@
 #include <array>
 #include <vector>
 
-namespace dropletFiber {
+namespace dropletFiber
+{
 
-struct BendingJoint {
-    int pointCount = 0;                 // 2 (clamp) or 3 (interior joint)
+struct BendingJoint
+{
+    int pointCount = 0; // 2 (clamp) or 3 (interior joint)
     std::array<Eigen::Index, 3> point{};
-    std::array<double, 3> coefficient{};  // b = sum_a coefficient_a x_point_a + offset
+    std::array<double, 3> coefficient{}; // b = sum_a coefficient_a x_point_a + offset
     Eigen::Vector3d offset = Eigen::Vector3d::Zero();
-    double stiffness = 0.0;             // S_b / l* [N m]
+    double stiffness = 0.0; // S_b / l* [N m]
 };
 
 // Empty when S_b = 0 (limp fiber).
@@ -35,7 +37,8 @@ void bendingJoints(const Fiber& fiber, std::vector<BendingJoint>& joints);
 inline Eigen::Vector3d jointVector(const BendingJoint& joint, const Eigen::Matrix3Xd& x)
 {
     Eigen::Vector3d b = joint.offset;
-    for (int a = 0; a < joint.pointCount; ++a) {
+    for (int a = 0; a < joint.pointCount; ++a)
+    {
         b += joint.coefficient[static_cast<std::size_t>(a)] * x.col(joint.point[static_cast<std::size_t>(a)]);
     }
     return b;
@@ -43,4 +46,4 @@ inline Eigen::Vector3d jointVector(const BendingJoint& joint, const Eigen::Matri
 
 double bendingEnergy(const std::vector<BendingJoint>& joints, const Eigen::Matrix3Xd& x);
 
-}  // namespace dropletFiber
+} // namespace dropletFiber

@@ -25,39 +25,47 @@
 
 #include <string>
 
-namespace dropletFiber {
+namespace dropletFiber
+{
 
-enum class DragModelType { none, linear, slenderBodyStokes, slenderBodyOseen };
-
-struct DragSettings {
-    DragModelType model = DragModelType::none;
-    double normalCoefficient = 0.0;      // linear model: c_n [N s/m^2]
-    double tangentialCoefficient = 0.0;  // linear model: c_t [N s/m^2]
+enum class DragModelType
+{
+    none,
+    linear,
+    slenderBodyStokes,
+    slenderBodyOseen
 };
 
-struct DragCoefficients {
-    double normal = 0.0;      // c_n [N s/m^2]
-    double tangential = 0.0;  // c_t [N s/m^2]
+struct DragSettings
+{
+    DragModelType model = DragModelType::none;
+    double normalCoefficient = 0.0;     // linear model: c_n [N s/m^2]
+    double tangentialCoefficient = 0.0; // linear model: c_t [N s/m^2]
+};
+
+struct DragCoefficients
+{
+    double normal = 0.0;     // c_n [N s/m^2]
+    double tangential = 0.0; // c_t [N s/m^2]
 };
 
 // normalRelativeSpeed = |w_n| [m/s] (used by slenderBodyOseen only).
-DragCoefficients dragCoefficients(const DragSettings& settings, double airDensity,
-                                  double airViscosity, double fiberRadius, double fiberLength,
-                                  double normalRelativeSpeed);
+DragCoefficients dragCoefficients(const DragSettings& settings, double airDensity, double airViscosity,
+                                  double fiberRadius, double fiberLength, double normalRelativeSpeed);
 
 // The logarithm Lambda of the slender-body models (exposed for tests / reports).
-double slenderBodyLogarithm(DragModelType model, double airDensity, double airViscosity,
-                            double fiberRadius, double fiberLength, double normalRelativeSpeed);
+double slenderBodyLogarithm(DragModelType model, double airDensity, double airViscosity, double fiberRadius,
+                            double fiberLength, double normalRelativeSpeed);
 
 // The same two in two parts, for a caller that evaluates every point of one fiber:
 // the fiber's own part max(ln(L/r_F), 1), taken once per fiber, then the per-point
 // coefficients from it (the same bits as the functions above).
 double fiberLogarithm(double fiberRadius, double fiberLength);
-DragCoefficients dragCoefficientsOfFiber(const DragSettings& settings, double airDensity,
-                                         double airViscosity, double fiberRadius,
-                                         double fiberLogarithm, double normalRelativeSpeed);
+DragCoefficients dragCoefficientsOfFiber(const DragSettings& settings, double airDensity, double airViscosity,
+                                         double fiberRadius, double fiberLogarithm,
+                                         double normalRelativeSpeed);
 
-DragModelType dragModelFromName(const std::string& name);  // throws on unknown names
+DragModelType dragModelFromName(const std::string& name); // throws on unknown names
 std::string dragModelName(DragModelType model);
 
-}  // namespace dropletFiber
+} // namespace dropletFiber

@@ -12,11 +12,18 @@
 
 #include <Eigen/Core>
 
-namespace dropletFiber {
+namespace dropletFiber
+{
 
-enum class EndType { free, pinned, clamped };
+enum class EndType
+{
+    free,
+    pinned,
+    clamped
+};
 
-struct EndCondition {
+struct EndCondition
+{
     EndType type = EndType::free;
     // Velocity of the held end point [m/s] (pinned/clamped only).
     Eigen::Vector3d anchorVelocity = Eigen::Vector3d::Zero();
@@ -44,4 +51,4 @@ struct EndCondition {
     }
 };
 
-}  // namespace dropletFiber
+} // namespace dropletFiber

@@ -7,19 +7,22 @@
 #include <stdexcept>
 #include <string>
 
-namespace dropletFiber {
-
-Fiber::Fiber(const Eigen::Matrix3Xd& points, const FiberMaterial& material,
-             const EndCondition& startEnd, const EndCondition& endEnd)
+namespace dropletFiber
 {
-    if (points.cols() < 2) {
+
+Fiber::Fiber(const Eigen::Matrix3Xd& points, const FiberMaterial& material, const EndCondition& startEnd,
+             const EndCondition& endEnd)
+{
+    if (points.cols() < 2)
+    {
         throw std::invalid_argument("Fiber: needs at least 2 points");
     }
     const Eigen::Index n = points.cols();
     state_.positions = points;
     state_.velocities = Eigen::Matrix3Xd::Zero(3, n);
     state_.restLengths.resize(n - 1);
-    for (Eigen::Index j = 0; j + 1 < n; ++j) {
+    for (Eigen::Index j = 0; j + 1 < n; ++j)
+    {
         state_.restLengths(j) = (points.col(j + 1) - points.col(j)).norm();
     }
     state_.segmentCapturedMass = Eigen::VectorXd::Zero(n - 1);
@@ -30,7 +33,7 @@ Fiber::Fiber(const Eigen::Matrix3Xd& points, const FiberMaterial& material,
     state_.endEnd = endEnd;
     completeClampDirections();
     validate();
-    projectVelocities(*this);  // held ends may move: start with consistent velocities
+    projectVelocities(*this); // held ends may move: start with consistent velocities
 }
 
 Fiber Fiber::immobileFiber(const Eigen::Matrix3Xd& points, const FiberMaterial& material)
@@ -48,15 +51,19 @@ Fiber::Fiber(const FiberState& state) : state_(state)
 void Fiber::completeClampDirections()
 {
     const Eigen::Index n = pointCount();
-    if (state_.startEnd.type == EndType::clamped && state_.startEnd.clampDirection.isZero()) {
+    if (state_.startEnd.type == EndType::clamped && state_.startEnd.clampDirection.isZero())
+    {
         state_.startEnd.clampDirection = (state_.positions.col(1) - state_.positions.col(0)).normalized();
     }
-    if (state_.endEnd.type == EndType::clamped && state_.endEnd.clampDirection.isZero()) {
-        state_.endEnd.clampDirection =
-            (state_.positions.col(n - 1) - state_.positions.col(n - 2)).normalized();
+    if (state_.endEnd.type == EndType::clamped && state_.endEnd.clampDirection.isZero())
+    {
+        state_.endEnd.clampDirection
+            = (state_.positions.col(n - 1) - state_.positions.col(n - 2)).normalized();
     }
-    for (EndCondition* end : {&state_.startEnd, &state_.endEnd}) {
-        if (end->type == EndType::clamped) {
+    for (EndCondition* end : {&state_.startEnd, &state_.endEnd})
+    {
+        if (end->type == EndType::clamped)
+        {
             end->clampDirection.normalize();
         }
     }
@@ -66,19 +73,32 @@ void Fiber::validate() const
 {
     const Eigen::Index n = state_.positions.cols();
     auto fail = [](const std::string& what) { throw std::invalid_argument("Fiber: " + what); };
-    if (n < 2) fail("needs at least 2 points");
-    if (state_.velocities.cols() != n) fail("velocities: wrong number of points");
-    if (state_.externalForce.cols() != n) fail("externalForce: wrong number of points");
-    if (state_.restLengths.size() != n - 1) fail("restLengths: wrong number of segments");
-    if (state_.segmentCapturedMass.size() != n - 1) fail("segmentCapturedMass: wrong number of segments");
-    if (state_.tension.size() != n - 1) fail("tension: wrong number of segments");
-    if (!(state_.restLengths.minCoeff() > 0.0)) fail("zero-length segment (coincident points)");
-    if (!(state_.material.radius > 0.0)) fail("radius must be > 0");
-    if (!(state_.material.density > 0.0)) fail("density must be > 0");
-    if (!(state_.material.youngsModulus >= 0.0)) fail("Young's modulus must be >= 0");
-    if (state_.segmentCapturedMass.minCoeff() < 0.0) fail("negative captured mass");
-    for (const EndCondition* end : {&state_.startEnd, &state_.endEnd}) {
-        if (end->type == EndType::clamped && std::abs(end->clampDirection.norm() - 1.0) > 1e-12) {
+    if (n < 2)
+        fail("needs at least 2 points");
+    if (state_.velocities.cols() != n)
+        fail("velocities: wrong number of points");
+    if (state_.externalForce.cols() != n)
+        fail("externalForce: wrong number of points");
+    if (state_.restLengths.size() != n - 1)
+        fail("restLengths: wrong number of segments");
+    if (state_.segmentCapturedMass.size() != n - 1)
+        fail("segmentCapturedMass: wrong number of segments");
+    if (state_.tension.size() != n - 1)
+        fail("tension: wrong number of segments");
+    if (!(state_.restLengths.minCoeff() > 0.0))
+        fail("zero-length segment (coincident points)");
+    if (!(state_.material.radius > 0.0))
+        fail("radius must be > 0");
+    if (!(state_.material.density > 0.0))
+        fail("density must be > 0");
+    if (!(state_.material.youngsModulus >= 0.0))
+        fail("Young's modulus must be >= 0");
+    if (state_.segmentCapturedMass.minCoeff() < 0.0)
+        fail("negative captured mass");
+    for (const EndCondition* end : {&state_.startEnd, &state_.endEnd})
+    {
+        if (end->type == EndType::clamped && std::abs(end->clampDirection.norm() - 1.0) > 1e-12)
+        {
             fail("clamp direction must be a unit vector");
         }
     }
@@ -86,7 +106,8 @@ void Fiber::validate() const
 
 void Fiber::setVelocities(const Eigen::Matrix3Xd& velocities)
 {
-    if (velocities.cols() != pointCount()) {
+    if (velocities.cols() != pointCount())
+    {
         throw std::invalid_argument("Fiber::setVelocities: wrong number of points");
     }
     state_.velocities = velocities;
@@ -95,7 +116,8 @@ void Fiber::setVelocities(const Eigen::Matrix3Xd& velocities)
 
 void Fiber::setExternalForce(const Eigen::Matrix3Xd& force)
 {
-    if (force.cols() != pointCount()) {
+    if (force.cols() != pointCount())
+    {
         throw std::invalid_argument("Fiber::setExternalForce: wrong number of points");
     }
     state_.externalForce = force;
@@ -103,35 +125,43 @@ void Fiber::setExternalForce(const Eigen::Matrix3Xd& force)
 
 bool Fiber::pointHeld(Eigen::Index i) const
 {
-    if (state_.immobile) return true;
-    if (i == 0 && state_.startEnd.holdsPosition()) return true;
-    if (i == pointCount() - 1 && state_.endEnd.holdsPosition()) return true;
+    if (state_.immobile)
+        return true;
+    if (i == 0 && state_.startEnd.holdsPosition())
+        return true;
+    if (i == pointCount() - 1 && state_.endEnd.holdsPosition())
+        return true;
     return false;
 }
 
 Eigen::Vector3d Fiber::heldPointVelocity(Eigen::Index i) const
 {
-    if (state_.immobile) return Eigen::Vector3d::Zero();
-    if (i == 0 && state_.startEnd.holdsPosition()) return state_.startEnd.anchorVelocity;
-    if (i == pointCount() - 1 && state_.endEnd.holdsPosition()) return state_.endEnd.anchorVelocity;
+    if (state_.immobile)
+        return Eigen::Vector3d::Zero();
+    if (i == 0 && state_.startEnd.holdsPosition())
+        return state_.startEnd.anchorVelocity;
+    if (i == pointCount() - 1 && state_.endEnd.holdsPosition())
+        return state_.endEnd.anchorVelocity;
     return Eigen::Vector3d::Zero();
 }
 
-namespace {
+namespace
+{
 
 // Lumps a per-segment quantity onto the points: half of segment j to each of its ends.
 template <class SegmentValue>
 void spreadHalvesToPoints(Eigen::Index pointCount, SegmentValue segmentValue, Eigen::VectorXd& out)
 {
     out.setZero(pointCount);
-    for (Eigen::Index j = 0; j + 1 < pointCount; ++j) {
+    for (Eigen::Index j = 0; j + 1 < pointCount; ++j)
+    {
         const double half = 0.5 * segmentValue(j);
         out(j) += half;
         out(j + 1) += half;
     }
 }
 
-}  // namespace
+} // namespace
 
 double Fiber::segmentMass(Eigen::Index j) const
 {
@@ -147,7 +177,8 @@ Eigen::VectorXd Fiber::pointMasses() const
 
 void Fiber::pointMasses(Eigen::VectorXd& m) const
 {
-    spreadHalvesToPoints(pointCount(), [this](Eigen::Index j) { return segmentMass(j); }, m);
+    spreadHalvesToPoints(
+        pointCount(), [this](Eigen::Index j) { return segmentMass(j); }, m);
 }
 
 Eigen::VectorXd Fiber::nodalLengths() const
@@ -159,7 +190,8 @@ Eigen::VectorXd Fiber::nodalLengths() const
 
 void Fiber::nodalLengths(Eigen::VectorXd& w) const
 {
-    spreadHalvesToPoints(pointCount(), [this](Eigen::Index j) { return state_.restLengths(j); }, w);
+    spreadHalvesToPoints(
+        pointCount(), [this](Eigen::Index j) { return state_.restLengths(j); }, w);
 }
 
 Eigen::VectorXd Fiber::lineDensityAtPoints() const
@@ -172,7 +204,10 @@ double Fiber::totalMass() const
     return state_.material.baseLineDensity() * length() + totalCapturedMass();
 }
 
-double Fiber::totalCapturedMass() const { return state_.segmentCapturedMass.sum(); }
+double Fiber::totalCapturedMass() const
+{
+    return state_.segmentCapturedMass.sum();
+}
 
 Eigen::Vector3d Fiber::centreOfMass() const
 {
@@ -180,16 +215,20 @@ Eigen::Vector3d Fiber::centreOfMass() const
     return state_.positions * m / m.sum();
 }
 
-Eigen::Vector3d Fiber::momentum() const { return state_.velocities * pointMasses(); }
+Eigen::Vector3d Fiber::momentum() const
+{
+    return state_.velocities * pointMasses();
+}
 
 double Fiber::maxSegmentLengthError() const
 {
     double worst = 0.0;
-    for (Eigen::Index j = 0; j + 1 < pointCount(); ++j) {
+    for (Eigen::Index j = 0; j + 1 < pointCount(); ++j)
+    {
         const double l = (state_.positions.col(j + 1) - state_.positions.col(j)).norm();
         worst = std::max(worst, std::abs(l - state_.restLengths(j)) / state_.restLengths(j));
     }
     return worst;
 }
 
-}  // namespace dropletFiber
+} // namespace dropletFiber

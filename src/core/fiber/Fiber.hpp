@@ -6,9 +6,11 @@
 
 #include "fiber/FiberState.hpp"
 
-namespace dropletFiber {
+namespace dropletFiber
+{
 
-class Fiber {
+class Fiber
+{
 public:
     // Points at rest; segment rest lengths are taken from the points as given.
     Fiber(const Eigen::Matrix3Xd& points, const FiberMaterial& material,
@@ -41,7 +43,7 @@ public:
     // an impulsive start would do): the midpoint scheme keeps consistent velocities
     // consistent but would carry an inconsistent part along for ever.
     void setVelocities(const Eigen::Matrix3Xd& velocities);
-    void setExternalForce(const Eigen::Matrix3Xd& force);   // [N] per point
+    void setExternalForce(const Eigen::Matrix3Xd& force); // [N] per point
     const Eigen::Matrix3Xd& externalForce() const { return state_.externalForce; }
 
     // Is point i held (an end with a pinned/clamped condition, or an immobile fiber)?
@@ -50,15 +52,15 @@ public:
     Eigen::Vector3d heldPointVelocity(Eigen::Index i) const;
 
     // Mass.
-    double segmentMass(Eigen::Index j) const;     // base + captured [kg]
-    Eigen::VectorXd pointMasses() const;          // lumped [kg]
-    Eigen::VectorXd nodalLengths() const;         // length each point stands for [m]
+    double segmentMass(Eigen::Index j) const; // base + captured [kg]
+    Eigen::VectorXd pointMasses() const;      // lumped [kg]
+    Eigen::VectorXd nodalLengths() const;     // length each point stands for [m]
     // The same into existing storage (the solver's work vectors: no allocation).
     void pointMasses(Eigen::VectorXd& m) const;
     void nodalLengths(Eigen::VectorXd& w) const;
-    Eigen::VectorXd lineDensityAtPoints() const;  // sigma [kg/m] per point
+    Eigen::VectorXd lineDensityAtPoints() const; // sigma [kg/m] per point
     double totalMass() const;
-    double totalCapturedMass() const;  // all segments [kg]
+    double totalCapturedMass() const; // all segments [kg]
 
     // Kinematics.
     Eigen::Vector3d centreOfMass() const;
@@ -76,4 +78,4 @@ private:
     FiberState state_;
 };
 
-}  // namespace dropletFiber
+} // namespace dropletFiber

@@ -2,7 +2,8 @@
 
 #include "fiber/BendingJoints.hpp"
 
-namespace dropletFiber {
+namespace dropletFiber
+{
 
 FiberDiagnostics diagnose(const Fiber& fiber, const Eigen::Vector3d& gravity)
 {
@@ -10,7 +11,8 @@ FiberDiagnostics diagnose(const Fiber& fiber, const Eigen::Vector3d& gravity)
     const Eigen::VectorXd m = fiber.pointMasses();
     const Eigen::Matrix3Xd& x = fiber.positions();
     const Eigen::Matrix3Xd& v = fiber.velocities();
-    for (Eigen::Index i = 0; i < fiber.pointCount(); ++i) {
+    for (Eigen::Index i = 0; i < fiber.pointCount(); ++i)
+    {
         d.kineticEnergy += 0.5 * m(i) * v.col(i).squaredNorm();
         d.gravitationalEnergy -= m(i) * gravity.dot(x.col(i));
     }
@@ -23,4 +25,4 @@ FiberDiagnostics diagnose(const Fiber& fiber, const Eigen::Vector3d& gravity)
     return d;
 }
 
-}  // namespace dropletFiber
+} // namespace dropletFiber

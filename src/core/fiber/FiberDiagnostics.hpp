@@ -4,9 +4,11 @@
 
 #include "fiber/Fiber.hpp"
 
-namespace dropletFiber {
+namespace dropletFiber
+{
 
-struct FiberDiagnostics {
+struct FiberDiagnostics
+{
     double kineticEnergy = 0.0;
     double elasticEnergy = 0.0;
     double gravitationalEnergy = 0.0;
@@ -21,4 +23,4 @@ struct FiberDiagnostics {
 
 FiberDiagnostics diagnose(const Fiber& fiber, const Eigen::Vector3d& gravity);
 
-}  // namespace dropletFiber
+} // namespace dropletFiber

@@ -2,15 +2,22 @@
 
 #include <cmath>
 
-namespace dropletFiber {
+namespace dropletFiber
+{
 
-double FiberMaterial::crossSection() const { return M_PI * radius * radius; }
+double FiberMaterial::crossSection() const
+{
+    return M_PI * radius * radius;
+}
 
-double FiberMaterial::baseLineDensity() const { return density * crossSection(); }
+double FiberMaterial::baseLineDensity() const
+{
+    return density * crossSection();
+}
 
 double FiberMaterial::bendingStiffness() const
 {
     return youngsModulus * M_PI * radius * radius * radius * radius / 4.0;
 }
 
-}  // namespace dropletFiber
+} // namespace dropletFiber

@@ -23,9 +23,11 @@
 
 #include <vector>
 
-namespace dropletFiber {
+namespace dropletFiber
+{
 
-class FiberSolver {
+class FiberSolver
+{
 public:
     explicit FiberSolver(const FiberSolverSettings& settings = FiberSolverSettings());
 
@@ -47,13 +49,12 @@ private:
     const AirSample* airForDrag(const AirSampleLayout& layout, const AirSample& air) const;
     // Energies, mass, momentum and constraint error of all fibers into report.
     void addDiagnostics(const std::vector<Fiber>& fibers, StepReport& report) const;
-    void advanceFiber(Fiber& fiber, std::size_t fiberIndex, double dt,
-                      const AirSample* air, Eigen::Index firstPoint, StepReport& report);
+    void advanceFiber(Fiber& fiber, std::size_t fiberIndex, double dt, const AirSample* air,
+                      Eigen::Index firstPoint, StepReport& report);
     // dragIsCurrent: drag_ was evaluated for the fiber's present state (saves doing
     // it again for the first sub-step and after a rejected one).
-    void advanceSpan(Fiber& fiber, std::size_t fiberIndex, double h, double hMin,
-                     const AirSample* air, Eigen::Index firstPoint, StepReport& report,
-                     int& acceptedSubSteps, bool dragIsCurrent);
+    void advanceSpan(Fiber& fiber, std::size_t fiberIndex, double h, double hMin, const AirSample* air,
+                     Eigen::Index firstPoint, StepReport& report, int& acceptedSubSteps, bool dragIsCurrent);
     // Drag coefficients at the fiber's present state into drag_ (no drag: air null).
     void updateDrag(const Fiber& fiber, const AirSample* air, Eigen::Index firstPoint);
 
@@ -73,4 +74,4 @@ private:
 // Inelastic capture on one fiber (step 1 above); exposed for tests and tools.
 void applyCapture(Fiber& fiber, const std::vector<SegmentSource>& sources);
 
-}  // namespace dropletFiber
+} // namespace dropletFiber

@@ -6,10 +6,12 @@
 
 #include <Eigen/Core>
 
-namespace dropletFiber {
+namespace dropletFiber
+{
 
-struct FiberSolverSettings {
-    Eigen::Vector3d gravity = Eigen::Vector3d(0.0, 0.0, -9.81);  // [m/s^2]
+struct FiberSolverSettings
+{
+    Eigen::Vector3d gravity = Eigen::Vector3d(0.0, 0.0, -9.81); // [m/s^2]
     DragSettings drag;
 
     // Time scheme: theta = 1/2 is the implicit midpoint rule (second order, no
@@ -48,4 +50,4 @@ struct FiberSolverSettings {
     bool projectVelocitiesAfterSubStep = false;
 };
 
-}  // namespace dropletFiber
+} // namespace dropletFiber

@@ -12,19 +12,21 @@
 
 #include <Eigen/Core>
 
-namespace dropletFiber {
+namespace dropletFiber
+{
 
-struct FiberState {
-    Eigen::Matrix3Xd positions;       // x_i [m], n points
-    Eigen::Matrix3Xd velocities;      // v_i [m/s]
-    Eigen::VectorXd restLengths;      // l_j [m], n-1 segments (held fixed: inextensible)
-    Eigen::VectorXd segmentCapturedMass;  // [kg] per segment
-    Eigen::VectorXd tension;          // T_j [N] per segment (last step's multipliers)
-    Eigen::Matrix3Xd externalForce;   // [N] per point, applied every step until changed
+struct FiberState
+{
+    Eigen::Matrix3Xd positions;          // x_i [m], n points
+    Eigen::Matrix3Xd velocities;         // v_i [m/s]
+    Eigen::VectorXd restLengths;         // l_j [m], n-1 segments (held fixed: inextensible)
+    Eigen::VectorXd segmentCapturedMass; // [kg] per segment
+    Eigen::VectorXd tension;             // T_j [N] per segment (last step's multipliers)
+    Eigen::Matrix3Xd externalForce;      // [N] per point, applied every step until changed
     FiberMaterial material;
-    EndCondition startEnd;            // at point 0
-    EndCondition endEnd;              // at point n-1
-    bool immobile = false;            // fully fixed fiber (filters, validation)
+    EndCondition startEnd; // at point 0
+    EndCondition endEnd;   // at point n-1
+    bool immobile = false; // fully fixed fiber (filters, validation)
 };
 
-}  // namespace dropletFiber
+} // namespace dropletFiber

@@ -4,11 +4,13 @@
 #include <cmath>
 #include <limits>
 
-namespace dropletFiber {
+namespace dropletFiber
+{
 
-namespace {
+namespace
+{
 
-constexpr Eigen::Index bandwidth = 10;  // bending couples points i and i+2: 4*2 + 2
+constexpr Eigen::Index bandwidth = 10; // bending couples points i and i+2: 4*2 + 2
 
 // Threshold partial pivoting (see BandedLU): with the constraint rows scaled to their
 // points' rows, the diagonal passes this in (almost) every column, so U keeps the
@@ -17,8 +19,14 @@ constexpr Eigen::Index bandwidth = 10;  // bending couples points i and i+2: 4*2
 // stencil (1, -4, 6, -4, 1) has multipliers of 2.
 constexpr double pivotThreshold = 0.1;
 
-Eigen::Index pointRow(Eigen::Index i) { return 4 * i; }
-Eigen::Index tensionRow(Eigen::Index j) { return 4 * j + 3; }
+Eigen::Index pointRow(Eigen::Index i)
+{
+    return 4 * i;
+}
+Eigen::Index tensionRow(Eigen::Index j)
+{
+    return 4 * j + 3;
+}
 
 // Nodal tangent for the drag: neighbours' chord (one-sided at the ends).
 void tangentStencil(Eigen::Index i, Eigen::Index n, Eigen::Index& hi, Eigen::Index& lo)
@@ -27,7 +35,7 @@ void tangentStencil(Eigen::Index i, Eigen::Index n, Eigen::Index& hi, Eigen::Ind
     lo = std::max(i - 1, Eigen::Index(0));
 }
 
-}  // namespace
+} // namespace
 
 ImplicitFiberStep::ImplicitFiberStep()
 {
@@ -62,13 +70,16 @@ void ImplicitFiberStep::takeFiber(const Fiber& fiber, double h, double theta)
     fiber.nodalLengths(nodal_);
     bendingJoints(fiber, joints_);
     jointOffsetNorm_.resize(joints_.size());
-    for (std::size_t k = 0; k < joints_.size(); ++k) jointOffsetNorm_[k] = joints_[k].offset.norm();
+    for (std::size_t k = 0; k < joints_.size(); ++k)
+        jointOffsetNorm_[k] = joints_[k].offset.norm();
     held_.resize(static_cast<std::size_t>(n));
-    for (Eigen::Index i = 0; i < n; ++i) held_[static_cast<std::size_t>(i)] = fiber.pointHeld(i);
+    for (Eigen::Index i = 0; i < n; ++i)
+        held_[static_cast<std::size_t>(i)] = fiber.pointHeld(i);
 
     // First iterate: every point moves on at its present (held: prescribed) velocity.
     y_.resize(3, n);
-    for (Eigen::Index i = 0; i < n; ++i) {
+    for (Eigen::Index i = 0; i < n; ++i)
+    {
         y_.col(i) = xn_.col(i) + h * (held(i) ? fiber.heldPointVelocity(i) : Eigen::Vector3d(vn.col(i)));
     }
     lambda_ = state.tension;
@@ -81,8 +92,10 @@ void ImplicitFiberStep::setScales()
     const double h = h_, theta = theta_;
     rowScale_.resize(n);
     lambdaScale_.resize(s);
-    for (Eigen::Index i = 0; i < n; ++i) rowScale_(i) = theta * h / m_(i);
-    for (Eigen::Index j = 0; j < s; ++j) lambdaScale_(j) = 0.5 * (m_(j) + m_(j + 1)) / (theta * h * h);
+    for (Eigen::Index i = 0; i < n; ++i)
+        rowScale_(i) = theta * h / m_(i);
+    for (Eigen::Index j = 0; j < s; ++j)
+        lambdaScale_(j) = 0.5 * (m_(j) + m_(j + 1)) / (theta * h * h);
 }
 
 void ImplicitFiberStep::setConstantTerms(const Fiber& fiber, const PointDrag& drag,
@@ -97,7 +110,8 @@ void ImplicitFiberStep::setConstantTerms(const Fiber& fiber, const PointDrag& dr
     loadNorm_.resize(n);
     xnNorm_.resize(n);
     vnNorm_.resize(n);
-    for (Eigen::Index i = 0; i < n; ++i) {
+    for (Eigen::Index i = 0; i < n; ++i)
+    {
         load_.col(i) = h * (m_(i) * g + state.externalForce.col(i));
         loadNorm_(i) = load_.col(i).norm();
         xnNorm_(i) = xn_.col(i).norm();
@@ -106,8 +120,10 @@ void ImplicitFiberStep::setConstantTerms(const Fiber& fiber, const PointDrag& dr
     cn_.setZero(n);
     ct_.setZero(n);
     airNorm_.setZero(n);
-    if (drag.airVelocity != nullptr) {
-        for (Eigen::Index i = 0; i < n; ++i) {
+    if (drag.airVelocity != nullptr)
+    {
+        for (Eigen::Index i = 0; i < n; ++i)
+        {
             cn_(i) = nodal_(i) * drag.normal(i);
             ct_(i) = nodal_(i) * drag.tangential(i);
             airNorm_(i) = drag.airVelocity->col(i).norm();
@@ -145,44 +161,58 @@ void ImplicitFiberStep::buildConstantJacobian()
     // two held points (identity, nothing else).
     BandedLU& J = constantJacobian_;
     J.reset(4 * n - 1, bandwidth, bandwidth);
-    for (Eigen::Index i = 0; i < n; ++i) {
-        if (held(i)) continue;
+    for (Eigen::Index i = 0; i < n; ++i)
+    {
+        if (held(i))
+            continue;
         const double diagonal = rowScale_(i) * (m_(i) / (theta * h));
-        for (int a = 0; a < 3; ++a) J.add(pointRow(i) + a, pointRow(i) + a, diagonal);
+        for (int a = 0; a < 3; ++a)
+            J.add(pointRow(i) + a, pointRow(i) + a, diagonal);
     }
     addBendingJacobian(J);
-    for (Eigen::Index j = 0; j < s; ++j) {
-        if (held(j) && held(j + 1)) J.add(tensionRow(j), tensionRow(j), 1.0);
+    for (Eigen::Index j = 0; j < s; ++j)
+    {
+        if (held(j) && held(j + 1))
+            J.add(tensionRow(j), tensionRow(j), 1.0);
     }
     // Constraint rows in units of their points' rows: the mean of the two points'
     // diagonal (1 + the bending stiffness over h^2 theta^2 / m, up to ~1e3 for thin
     // glass fibers at the CFD step). Unscaled, the constraint rows are that much
     // smaller than the point rows and their pivots fail any threshold.
     constraintScale_.resize(s);
-    for (Eigen::Index j = 0; j < s; ++j) {
+    for (Eigen::Index j = 0; j < s; ++j)
+    {
         const double here = held(j) ? 1.0 : J.coeff(pointRow(j), pointRow(j));
         const double next = held(j + 1) ? 1.0 : J.coeff(pointRow(j + 1), pointRow(j + 1));
         constraintScale_(j) = 0.5 * (here + next);
     }
-    for (Eigen::Index i = 0; i < n; ++i) {
-        if (!held(i)) continue;
-        for (int a = 0; a < 3; ++a) J.add(pointRow(i) + a, pointRow(i) + a, 1.0);
+    for (Eigen::Index i = 0; i < n; ++i)
+    {
+        if (!held(i))
+            continue;
+        for (int a = 0; a < 3; ++a)
+            J.add(pointRow(i) + a, pointRow(i) + a, 1.0);
     }
 }
 
 void ImplicitFiberStep::addBendingJacobian(BandedLU& J) const
 {
     const double h = h_, theta = theta_;
-    for (const BendingJoint& joint : joints_) {
-        for (int a = 0; a < joint.pointCount; ++a) {
+    for (const BendingJoint& joint : joints_)
+    {
+        for (int a = 0; a < joint.pointCount; ++a)
+        {
             const Eigen::Index p = joint.point[static_cast<std::size_t>(a)];
             const double ca = joint.coefficient[static_cast<std::size_t>(a)];
-            for (int c = 0; c < joint.pointCount; ++c) {
+            for (int c = 0; c < joint.pointCount; ++c)
+            {
                 const Eigen::Index q = joint.point[static_cast<std::size_t>(c)];
-                if (held(p) || held(q)) continue;
+                if (held(p) || held(q))
+                    continue;
                 const double cc = joint.coefficient[static_cast<std::size_t>(c)];
                 const double value = rowScale_(p) * (h * theta * joint.stiffness * ca * cc);
-                for (int b = 0; b < 3; ++b) J.add(pointRow(p) + b, pointRow(q) + b, value);
+                for (int b = 0; b < 3; ++b)
+                    J.add(pointRow(p) + b, pointRow(q) + b, value);
             }
         }
     }
@@ -194,14 +224,17 @@ void ImplicitFiberStep::evaluateResidual(const PointDrag& drag, double& constrai
     xTheta_ = xn_ + theta_ * (y_ - xn_);
     vTheta_ = (y_ - xn_) / h_;
     residual_.setZero();
-    if (withSizes) {
-        for (Eigen::Index i = 0; i < n_; ++i) xThetaNorm_(i) = xTheta_.col(i).norm();
+    if (withSizes)
+    {
+        for (Eigen::Index i = 0; i < n_; ++i)
+            xThetaNorm_(i) = xTheta_.col(i).norm();
         magnitude_.setZero();
         noise_.setZero();
     }
     addInertiaAndLoad<withSizes>();
     addBendingForce<withSizes>();
-    if (drag.airVelocity != nullptr) addDragForce<withSizes>(drag);
+    if (drag.airVelocity != nullptr)
+        addDragForce<withSizes>(drag);
     addTensionForce<withSizes>();
     constraintError = evaluateConstraints();
     scaleResidualRows();
@@ -212,11 +245,14 @@ void ImplicitFiberStep::addInertiaAndLoad()
 {
     const double h = h_, theta = theta_;
     const Eigen::Matrix3Xd& vn = *vn_;
-    for (Eigen::Index i = 0; i < n_; ++i) {
-        if (held(i)) continue;
+    for (Eigen::Index i = 0; i < n_; ++i)
+    {
+        if (held(i))
+            continue;
         const Eigen::Vector3d inertia = m_(i) * (vTheta_.col(i) - vn.col(i)) / theta;
         residual_.col(i) += inertia - load_.col(i);
-        if (withSizes) {
+        if (withSizes)
+        {
             magnitude_(i) += inertia.norm() + loadNorm_(i);
             noise_(i) += m_(i) * (y_.col(i).norm() + xnNorm_(i) + h * vnNorm_(i)) / (theta * h);
         }
@@ -227,24 +263,30 @@ template <bool withSizes>
 void ImplicitFiberStep::addBendingForce()
 {
     const double h = h_;
-    for (std::size_t k = 0; k < joints_.size(); ++k) {
+    for (std::size_t k = 0; k < joints_.size(); ++k)
+    {
         const BendingJoint& joint = joints_[k];
         const Eigen::Vector3d b = jointVector(joint, xTheta_);
         double bScale = 0.0;
-        if (withSizes) {
+        if (withSizes)
+        {
             bScale = jointOffsetNorm_[k];
-            for (int a = 0; a < joint.pointCount; ++a) {
-                bScale += std::abs(joint.coefficient[static_cast<std::size_t>(a)]) *
-                          xThetaNorm_(joint.point[static_cast<std::size_t>(a)]);
+            for (int a = 0; a < joint.pointCount; ++a)
+            {
+                bScale += std::abs(joint.coefficient[static_cast<std::size_t>(a)])
+                    * xThetaNorm_(joint.point[static_cast<std::size_t>(a)]);
             }
         }
-        for (int a = 0; a < joint.pointCount; ++a) {
+        for (int a = 0; a < joint.pointCount; ++a)
+        {
             const Eigen::Index p = joint.point[static_cast<std::size_t>(a)];
-            if (held(p)) continue;
+            if (held(p))
+                continue;
             const double ca = joint.coefficient[static_cast<std::size_t>(a)];
-            const Eigen::Vector3d term = h * joint.stiffness * ca * b;  // -h * force
+            const Eigen::Vector3d term = h * joint.stiffness * ca * b; // -h * force
             residual_.col(p) += term;
-            if (withSizes) {
+            if (withSizes)
+            {
                 magnitude_(p) += term.norm();
                 noise_(p) += h * joint.stiffness * std::abs(ca) * bScale;
             }
@@ -257,10 +299,13 @@ void ImplicitFiberStep::addDragForce(const PointDrag& drag)
 {
     const Eigen::Index n = n_;
     const double h = h_;
-    for (Eigen::Index i = 0; i < n; ++i) {
-        if (held(i)) continue;
+    for (Eigen::Index i = 0; i < n; ++i)
+    {
+        if (held(i))
+            continue;
         const double cn = cn_(i), ct = ct_(i);
-        if (cn == 0.0 && ct == 0.0) continue;
+        if (cn == 0.0 && ct == 0.0)
+            continue;
         Eigen::Index hi, lo;
         tangentStencil(i, n, hi, lo);
         const Eigen::Vector3d chord = xTheta_.col(hi) - xTheta_.col(lo);
@@ -270,7 +315,8 @@ void ImplicitFiberStep::addDragForce(const PointDrag& drag)
         const double wt = t.dot(w);
         const Eigen::Vector3d force = cn * w + (ct - cn) * wt * t;
         residual_.col(i) -= h * force;
-        if (withSizes) {
+        if (withSizes)
+        {
             magnitude_(i) += h * force.norm();
             noise_(i) += h * std::max(cn, ct) * (airNorm_(i) + vTheta_.col(i).norm());
         }
@@ -288,25 +334,31 @@ void ImplicitFiberStep::addTensionForce()
     const Eigen::Index s = n_ - 1;
     const double h = h_;
     const Eigen::VectorXd& l = *l_;
-    for (Eigen::Index j = 0; j < s; ++j) {
+    for (Eigen::Index j = 0; j < s; ++j)
+    {
         const Eigen::Vector3d d = xTheta_.col(j + 1) - xTheta_.col(j);
         segment_.col(j) = d;
-        const Eigen::Vector3d pull = lambda_(j) / l(j) * d;  // tension force on point j
+        const Eigen::Vector3d pull = lambda_(j) / l(j) * d; // tension force on point j
         double pullNoise = 0.0, pullSize = 0.0;
-        if (withSizes) {
+        if (withSizes)
+        {
             pullNoise = h * std::abs(lambda_(j)) / l(j) * (xThetaNorm_(j + 1) + xThetaNorm_(j));
             pullSize = h * pull.norm();
         }
-        if (!held(j)) {
+        if (!held(j))
+        {
             residual_.col(j) -= h * pull;
-            if (withSizes) {
+            if (withSizes)
+            {
                 magnitude_(j) += pullSize;
                 noise_(j) += pullNoise;
             }
         }
-        if (!held(j + 1)) {
+        if (!held(j + 1))
+        {
             residual_.col(j + 1) += h * pull;
-            if (withSizes) {
+            if (withSizes)
+            {
                 magnitude_(j + 1) += pullSize;
                 noise_(j + 1) += pullNoise;
             }
@@ -319,8 +371,10 @@ double ImplicitFiberStep::evaluateConstraints()
     const Eigen::Index s = n_ - 1;
     const Eigen::VectorXd& l = *l_;
     double constraintError = 0.0;
-    for (Eigen::Index j = 0; j < s; ++j) {
-        if (held(j) && held(j + 1)) {
+    for (Eigen::Index j = 0; j < s; ++j)
+    {
+        if (held(j) && held(j + 1))
+        {
             rhs_(tensionRow(j)) = 0.0;
             continue;
         }
@@ -336,10 +390,14 @@ double ImplicitFiberStep::evaluateConstraints()
 
 void ImplicitFiberStep::scaleResidualRows()
 {
-    for (Eigen::Index i = 0; i < n_; ++i) {
-        if (held(i)) {
+    for (Eigen::Index i = 0; i < n_; ++i)
+    {
+        if (held(i))
+        {
             rhs_.segment<3>(pointRow(i)).setZero();
-        } else {
+        }
+        else
+        {
             rhs_.segment<3>(pointRow(i)) = rowScale_(i) * residual_.col(i);
         }
     }
@@ -347,11 +405,14 @@ void ImplicitFiberStep::scaleResidualRows()
 
 bool ImplicitFiberStep::residualSmall(double residualTolerance) const
 {
-    for (Eigen::Index i = 0; i < n_; ++i) {
-        if (held(i)) continue;
-        const double allowed = residualTolerance * magnitude_(i) +
-                               64.0 * std::numeric_limits<double>::epsilon() * noise_(i);
-        if (residual_.col(i).norm() > allowed) return false;
+    for (Eigen::Index i = 0; i < n_; ++i)
+    {
+        if (held(i))
+            continue;
+        const double allowed
+            = residualTolerance * magnitude_(i) + 64.0 * std::numeric_limits<double>::epsilon() * noise_(i);
+        if (residual_.col(i).norm() > allowed)
+            return false;
     }
     return true;
 }
@@ -359,28 +420,35 @@ bool ImplicitFiberStep::residualSmall(double residualTolerance) const
 void ImplicitFiberStep::assembleJacobian(const PointDrag& drag)
 {
     lu_.assignMatrix(constantJacobian_);
-    if (drag.airVelocity != nullptr) addDragJacobian();
+    if (drag.airVelocity != nullptr)
+        addDragJacobian();
     addTensionJacobian();
 }
 
 void ImplicitFiberStep::addDragJacobian()
 {
     BandedLU& J = lu_;
-    for (Eigen::Index i = 0; i < n_; ++i) {
-        if (held(i)) continue;
+    for (Eigen::Index i = 0; i < n_; ++i)
+    {
+        if (held(i))
+            continue;
         const double cn = cn_(i), ct = ct_(i);
-        if (cn == 0.0 && ct == 0.0) continue;
+        if (cn == 0.0 && ct == 0.0)
+            continue;
         const Eigen::Vector3d t = tangent_.col(i);
         const double scale = rowScale_(i);
         // d(-h f)/dy through v_theta = (y - x_n) / h: (c_n I + (c_t - c_n) t t^T)
-        for (int a = 0; a < 3; ++a) {
+        for (int a = 0; a < 3; ++a)
+        {
             const double outer = (ct - cn) * t(a);
-            for (int b = 0; b < 3; ++b) {
+            for (int b = 0; b < 3; ++b)
+            {
                 const double value = (a == b ? cn : 0.0) + outer * t(b);
                 J.add(pointRow(i) + a, pointRow(i) + b, scale * value);
             }
         }
-        if (ct == cn) continue;
+        if (ct == cn)
+            continue;
         addDragTangentJacobian(i);
     }
 }
@@ -400,19 +468,25 @@ void ImplicitFiberStep::addDragTangentJacobian(Eigen::Index i)
     const double wt = wt_(i);
     const Eigen::Vector3d wn = relativeAir_.col(i) - wt * t;
     const double dForce = scale * h_ * theta_ * (ct - cn) / chordLength_(i);
-    double block[3][3];  // scale * h theta df/dchord
-    for (int a = 0; a < 3; ++a) {
-        for (int b = 0; b < 3; ++b) {
+    double block[3][3]; // scale * h theta df/dchord
+    for (int a = 0; a < 3; ++a)
+    {
+        for (int b = 0; b < 3; ++b)
+        {
             block[a][b] = dForce * (wt * ((a == b ? 1.0 : 0.0) - t(a) * t(b)) + t(a) * wn(b));
         }
     }
-    if (!held(hi)) {
+    if (!held(hi))
+    {
         for (int a = 0; a < 3; ++a)
-            for (int b = 0; b < 3; ++b) J.add(pointRow(i) + a, pointRow(hi) + b, -block[a][b]);
+            for (int b = 0; b < 3; ++b)
+                J.add(pointRow(i) + a, pointRow(hi) + b, -block[a][b]);
     }
-    if (!held(lo)) {
+    if (!held(lo))
+    {
         for (int a = 0; a < 3; ++a)
-            for (int b = 0; b < 3; ++b) J.add(pointRow(i) + a, pointRow(lo) + b, block[a][b]);
+            for (int b = 0; b < 3; ++b)
+                J.add(pointRow(i) + a, pointRow(lo) + b, block[a][b]);
     }
 }
 
@@ -422,38 +496,56 @@ void ImplicitFiberStep::addTensionJacobian()
     const double h = h_, theta = theta_;
     const Eigen::VectorXd& l = *l_;
     BandedLU& J = lu_;
-    for (Eigen::Index j = 0; j < s; ++j) {
+    for (Eigen::Index j = 0; j < s; ++j)
+    {
         const bool heldJ = held(j), heldNext = held(j + 1);
         const double k = h * theta * lambda_(j) / l(j);
-        if (!heldJ) {
-            for (int a = 0; a < 3; ++a) J.add(pointRow(j) + a, pointRow(j) + a, rowScale_(j) * k);
+        if (!heldJ)
+        {
+            for (int a = 0; a < 3; ++a)
+                J.add(pointRow(j) + a, pointRow(j) + a, rowScale_(j) * k);
         }
-        if (!heldJ && !heldNext) {
-            for (int a = 0; a < 3; ++a) J.add(pointRow(j) + a, pointRow(j + 1) + a, rowScale_(j) * -k);
+        if (!heldJ && !heldNext)
+        {
+            for (int a = 0; a < 3; ++a)
+                J.add(pointRow(j) + a, pointRow(j + 1) + a, rowScale_(j) * -k);
         }
-        if (!heldNext) {
-            for (int a = 0; a < 3; ++a) J.add(pointRow(j + 1) + a, pointRow(j + 1) + a, rowScale_(j + 1) * k);
+        if (!heldNext)
+        {
+            for (int a = 0; a < 3; ++a)
+                J.add(pointRow(j + 1) + a, pointRow(j + 1) + a, rowScale_(j + 1) * k);
         }
-        if (!heldJ && !heldNext) {
-            for (int a = 0; a < 3; ++a) J.add(pointRow(j + 1) + a, pointRow(j) + a, rowScale_(j + 1) * -k);
+        if (!heldJ && !heldNext)
+        {
+            for (int a = 0; a < 3; ++a)
+                J.add(pointRow(j + 1) + a, pointRow(j) + a, rowScale_(j + 1) * -k);
         }
         const Eigen::Vector3d d = segment_.col(j);
-        if (!heldJ) {
+        if (!heldJ)
+        {
             const double scale = rowScale_(j) * lambdaScale_(j);
-            for (int a = 0; a < 3; ++a) J.add(pointRow(j) + a, tensionRow(j), scale * (-h / l(j) * d(a)));
+            for (int a = 0; a < 3; ++a)
+                J.add(pointRow(j) + a, tensionRow(j), scale * (-h / l(j) * d(a)));
         }
-        if (!heldNext) {
+        if (!heldNext)
+        {
             const double scale = rowScale_(j + 1) * lambdaScale_(j);
-            for (int a = 0; a < 3; ++a) J.add(pointRow(j + 1) + a, tensionRow(j), scale * (h / l(j) * d(a)));
+            for (int a = 0; a < 3; ++a)
+                J.add(pointRow(j + 1) + a, tensionRow(j), scale * (h / l(j) * d(a)));
         }
-        if (heldJ && heldNext) continue;  // constant row (in constantJacobian_)
+        if (heldJ && heldNext)
+            continue; // constant row (in constantJacobian_)
         const Eigen::Vector3d dy = dy_.col(j);
         const double rowScale = constraintScale_(j) / l(j);
-        if (!heldNext) {
-            for (int b = 0; b < 3; ++b) J.add(tensionRow(j), pointRow(j + 1) + b, rowScale * dy(b));
+        if (!heldNext)
+        {
+            for (int b = 0; b < 3; ++b)
+                J.add(tensionRow(j), pointRow(j + 1) + b, rowScale * dy(b));
         }
-        if (!heldJ) {
-            for (int b = 0; b < 3; ++b) J.add(tensionRow(j), pointRow(j) + b, -rowScale * dy(b));
+        if (!heldJ)
+        {
+            for (int b = 0; b < 3; ++b)
+                J.add(tensionRow(j), pointRow(j) + b, -rowScale * dy(b));
         }
     }
 }
@@ -464,7 +556,8 @@ SubStepResult ImplicitFiberStep::advance(Fiber& fiber, double h, const PointDrag
     SubStepResult result;
     prepare(fiber, h, drag, settings);
     solve(drag, settings, result);
-    if (!result.converged) return result;
+    if (!result.converged)
+        return result;
     result.maxRotation = maxSegmentRotation();
     accept(fiber);
     return result;
@@ -477,25 +570,30 @@ void ImplicitFiberStep::solve(const PointDrag& drag, const FiberSolverSettings& 
     double lastUpdate = std::numeric_limits<double>::infinity();
     double constraintError = 0.0;
     double previousConstraintError = std::numeric_limits<double>::infinity();
-    for (int iteration = 0;; ++iteration) {
+    for (int iteration = 0;; ++iteration)
+    {
         evaluateResidual<false>(drag, constraintError);
-        if (hasConverged(drag, settings, shortest, lastUpdate, constraintError)) {
+        if (hasConverged(drag, settings, shortest, lastUpdate, constraintError))
+        {
             result.converged = true;
             return;
         }
         // Stalled at round-off (no more progress, tiny updates): accept if the
         // constraints hold to the hard limit.
-        const bool stalled = iteration > 0 && constraintError > 0.5 * previousConstraintError &&
-                             lastUpdate <= 1e-8;
-        if (stalled || iteration >= settings.maxNewtonIterations) {
-            if (constraintError <= settings.acceptableConstraintError && lastUpdate <= 1e-8) {
+        const bool stalled
+            = iteration > 0 && constraintError > 0.5 * previousConstraintError && lastUpdate <= 1e-8;
+        if (stalled || iteration >= settings.maxNewtonIterations)
+        {
+            if (constraintError <= settings.acceptableConstraintError && lastUpdate <= 1e-8)
+            {
                 result.converged = true;
                 result.loose = true;
             }
             return;
         }
         previousConstraintError = constraintError;
-        if (!newtonUpdate(drag, shortest, lastUpdate, result)) return;
+        if (!newtonUpdate(drag, shortest, lastUpdate, result))
+            return;
     }
 }
 
@@ -505,12 +603,14 @@ bool ImplicitFiberStep::hasConverged(const PointDrag& drag, const FiberSolverSet
     // Segment lengths cannot be computed closer than round-off in the coordinates
     // (relative to point 0): never ask for better than that.
     // (sqrt of the largest squared norm: the same bits as the largest norm)
-    const double roundOff = 16.0 * std::numeric_limits<double>::epsilon() *
-                            std::sqrt(y_.colwise().squaredNorm().maxCoeff()) / shortest;
+    const double roundOff = 16.0 * std::numeric_limits<double>::epsilon()
+        * std::sqrt(y_.colwise().squaredNorm().maxCoeff()) / shortest;
     const double constraintTarget = std::max(settings.constraintTolerance, roundOff);
     const bool updateSmall = lastUpdate <= std::max(settings.updateTolerance, roundOff);
-    if (!(constraintError <= constraintTarget)) return false;  // NaN: not converged
-    if (updateSmall) return true;
+    if (!(constraintError <= constraintTarget))
+        return false; // NaN: not converged
+    if (updateSmall)
+        return true;
     // The residual test needs the size of every term (a dozen square roots per
     // point): evaluated again with them only when it decides.
     evaluateResidual<true>(drag, constraintError);
@@ -521,18 +621,22 @@ bool ImplicitFiberStep::newtonUpdate(const PointDrag& drag, double shortest, dou
                                      SubStepResult& result)
 {
     assembleJacobian(drag);
-    if (!lu_.factorize()) return false;
+    if (!lu_.factorize())
+        return false;
     rhs_ = -rhs_;
     lu_.solveInPlace(rhs_);
     ++result.iterations;
     double biggest = 0.0;
-    for (Eigen::Index i = 0; i < n_; ++i) {
-        if (held(i)) continue;
+    for (Eigen::Index i = 0; i < n_; ++i)
+    {
+        if (held(i))
+            continue;
         const Eigen::Vector3d step = rhs_.segment<3>(pointRow(i));
         y_.col(i) += step;
         biggest = std::max(biggest, step.norm());
     }
-    for (Eigen::Index j = 0; j < n_ - 1; ++j) lambda_(j) += lambdaScale_(j) * rhs_(tensionRow(j));
+    for (Eigen::Index j = 0; j < n_ - 1; ++j)
+        lambda_(j) += lambdaScale_(j) * rhs_(tensionRow(j));
     lastUpdate = biggest / shortest;
     return std::isfinite(lastUpdate) && lambda_.allFinite();
 }
@@ -541,7 +645,8 @@ double ImplicitFiberStep::maxSegmentRotation() const
 {
     const Eigen::VectorXd& l = *l_;
     double largest = 0.0;
-    for (Eigen::Index j = 0; j < n_ - 1; ++j) {
+    for (Eigen::Index j = 0; j < n_ - 1; ++j)
+    {
         const Eigen::Vector3d before = (xn_.col(j + 1) - xn_.col(j)) / l(j);
         const Eigen::Vector3d after = (y_.col(j + 1) - y_.col(j)) / l(j);
         largest = std::max(largest, (after - before).norm());
@@ -554,15 +659,20 @@ void ImplicitFiberStep::accept(Fiber& fiber) const
     FiberState& state = fiber.mutableState();
     const double h = h_, theta = theta_;
     const Eigen::Vector3d origin = state.positions.col(0);
-    for (Eigen::Index i = 0; i < n_; ++i) {
-        if (held(i)) {
+    for (Eigen::Index i = 0; i < n_; ++i)
+    {
+        if (held(i))
+        {
             state.velocities.col(i) = fiber.heldPointVelocity(i);
-        } else {
-            state.velocities.col(i) = ((y_.col(i) - xn_.col(i)) / h - (1.0 - theta) * state.velocities.col(i)) / theta;
+        }
+        else
+        {
+            state.velocities.col(i)
+                = ((y_.col(i) - xn_.col(i)) / h - (1.0 - theta) * state.velocities.col(i)) / theta;
         }
     }
     state.positions = y_.colwise() + origin;
     state.tension = lambda_;
 }
 
-}  // namespace dropletFiber
+} // namespace dropletFiber

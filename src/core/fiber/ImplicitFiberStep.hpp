@@ -38,34 +38,36 @@
 
 #include <vector>
 
-namespace dropletFiber {
+namespace dropletFiber
+{
 
 // Air and drag resistances at this fiber's points for this sub-step.
-struct PointDrag {
-    const Eigen::Matrix3Xd* airVelocity = nullptr;  // nullptr: no drag
-    Eigen::VectorXd normal;                          // c_n [N s/m^2] per point
-    Eigen::VectorXd tangential;                      // c_t
+struct PointDrag
+{
+    const Eigen::Matrix3Xd* airVelocity = nullptr; // nullptr: no drag
+    Eigen::VectorXd normal;                        // c_n [N s/m^2] per point
+    Eigen::VectorXd tangential;                    // c_t
 };
 
-struct SubStepResult {
+struct SubStepResult
+{
     bool converged = false;
-    bool loose = false;         // accepted at acceptableConstraintError only
-    int iterations = 0;         // linear solves
-    double maxRotation = 0.0;   // largest segment turn in the step [rad, chord]
+    bool loose = false;       // accepted at acceptableConstraintError only
+    int iterations = 0;       // linear solves
+    double maxRotation = 0.0; // largest segment turn in the step [rad, chord]
 };
 
-class ImplicitFiberStep {
+class ImplicitFiberStep
+{
 public:
     ImplicitFiberStep();
 
     // Advances fiber by h when it converges; leaves it untouched otherwise.
-    SubStepResult advance(Fiber& fiber, double h, const PointDrag& drag,
-                          const FiberSolverSettings& settings);
+    SubStepResult advance(Fiber& fiber, double h, const PointDrag& drag, const FiberSolverSettings& settings);
 
 private:
     // Per sub-step: geometry, scales, constant terms, first iterate, constant Jacobian.
-    void prepare(const Fiber& fiber, double h, const PointDrag& drag,
-                 const FiberSolverSettings& settings);
+    void prepare(const Fiber& fiber, double h, const PointDrag& drag, const FiberSolverSettings& settings);
     // The fiber's state relative to its first point, masses, joints, held points,
     // and the first iterate (y, lambda).
     void takeFiber(const Fiber& fiber, double h, double theta);
@@ -84,8 +86,7 @@ private:
     bool hasConverged(const PointDrag& drag, const FiberSolverSettings& settings, double shortest,
                       double lastUpdate, double& constraintError);
     // One Newton update of (y_, lambda_); false when it fails (singular, not finite).
-    bool newtonUpdate(const PointDrag& drag, double shortest, double& lastUpdate,
-                      SubStepResult& result);
+    bool newtonUpdate(const PointDrag& drag, double shortest, double& lastUpdate, SubStepResult& result);
     // Largest segment turn from x_n to y [rad, chord].
     double maxSegmentRotation() const;
     // The converged iterate into the fiber.
@@ -122,8 +123,8 @@ private:
     // The sub-step being solved.
     Eigen::Index n_ = 0;
     double h_ = 0.0, theta_ = 0.5;
-    const Eigen::Matrix3Xd* vn_ = nullptr;  // v_n (the fiber's velocities)
-    const Eigen::VectorXd* l_ = nullptr;    // rest lengths
+    const Eigen::Matrix3Xd* vn_ = nullptr; // v_n (the fiber's velocities)
+    const Eigen::VectorXd* l_ = nullptr;   // rest lengths
 
     // Work storage, reused between sub-steps, fibers and steps (sized per fiber).
     BandedLU lu_;
@@ -132,12 +133,12 @@ private:
     std::vector<double> jointOffsetNorm_;
     std::vector<char> held_;
     Eigen::Matrix3Xd xn_, y_, xTheta_, vTheta_, residual_, load_;
-    Eigen::Matrix3Xd tangent_, relativeAir_, segment_, dy_;  // residual terms the Jacobian reuses
+    Eigen::Matrix3Xd tangent_, relativeAir_, segment_, dy_; // residual terms the Jacobian reuses
     Eigen::VectorXd m_, nodal_, rowScale_, lambdaScale_, lambda_, rhs_;
-    Eigen::VectorXd magnitude_, noise_;  // size of each residual row's terms, their round-off
+    Eigen::VectorXd magnitude_, noise_; // size of each residual row's terms, their round-off
     Eigen::VectorXd loadNorm_, xnNorm_, vnNorm_, airNorm_, xThetaNorm_;
     Eigen::VectorXd cn_, ct_, chordLength_, wt_;
-    Eigen::VectorXd constraintScale_;  // of each constraint row (tension row)
+    Eigen::VectorXd constraintScale_; // of each constraint row (tension row)
 };
 
-}  // namespace dropletFiber
+} // namespace dropletFiber

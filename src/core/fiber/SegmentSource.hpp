@@ -8,14 +8,16 @@
 
 #include <vector>
 
-namespace dropletFiber {
+namespace dropletFiber
+{
 
-struct SegmentSource {
-    double mass = 0.0;                                      // captured mass [kg]
-    Eigen::Vector3d momentum = Eigen::Vector3d::Zero();     // of those droplets [kg m/s]
+struct SegmentSource
+{
+    double mass = 0.0;                                  // captured mass [kg]
+    Eigen::Vector3d momentum = Eigen::Vector3d::Zero(); // of those droplets [kg m/s]
 };
 
 // One list per fiber, one entry per segment (an empty list means no capture).
 using CaptureSources = std::vector<std::vector<SegmentSource>>;
 
-}  // namespace dropletFiber
+} // namespace dropletFiber

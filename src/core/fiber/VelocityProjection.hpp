@@ -9,9 +9,10 @@
 
 #include "fiber/Fiber.hpp"
 
-namespace dropletFiber {
+namespace dropletFiber
+{
 
 // Sets held points to their prescribed velocity, then projects the rest.
 void projectVelocities(Fiber& fiber);
 
-}  // namespace dropletFiber
+} // namespace dropletFiber

@@ -39,7 +39,8 @@ AveragingWindow::AveragingWindow(const std::array<int, 3>& nodes, int nQuantitie
 {
     if (length < 1)
     {
-        throw std::invalid_argument("averaging window: length must be at least 1 step, got " + std::to_string(length));
+        throw std::invalid_argument("averaging window: length must be at least 1 step, got "
+                                    + std::to_string(length));
     }
     const std::size_t size = static_cast<std::size_t>(nodes[0]) * static_cast<std::size_t>(nodes[1])
         * static_cast<std::size_t>(nodes[2]) * static_cast<std::size_t>(nQuantities);
@@ -50,7 +51,7 @@ AveragingWindow::AveragingWindow(const std::array<int, 3>& nodes, int nQuantitie
 }
 
 // Calls f(offset, count) for each contiguous row (fixed j, k) of the box, in values.
-template<class F>
+template <class F>
 void AveragingWindow::forEachBoxRow(const IndexBox& box, F&& f) const
 {
     const std::size_t q = static_cast<std::size_t>(nQuantities_);
@@ -70,9 +71,12 @@ void AveragingWindow::push(const std::vector<double>& step, const IndexBox& box)
         slot = static_cast<std::size_t>(head_);
         evicted = slotBoxes_[slot];
         std::vector<double>& old = slots_[slot];
-        forEachBoxRow(evicted, [&](std::size_t offset, std::size_t count)
-                      { std::fill(old.begin() + static_cast<std::ptrdiff_t>(offset),
-                                  old.begin() + static_cast<std::ptrdiff_t>(offset + count), 0.0); });
+        forEachBoxRow(evicted,
+                      [&](std::size_t offset, std::size_t count)
+                      {
+                          std::fill(old.begin() + static_cast<std::ptrdiff_t>(offset),
+                                    old.begin() + static_cast<std::ptrdiff_t>(offset + count), 0.0);
+                      });
         head_ = (head_ + 1) % length_;
     }
     else
@@ -85,10 +89,13 @@ void AveragingWindow::push(const std::vector<double>& step, const IndexBox& box)
     {
         target.assign(total_.size(), 0.0);
     }
-    forEachBoxRow(box, [&](std::size_t offset, std::size_t count)
-                  { std::copy(step.begin() + static_cast<std::ptrdiff_t>(offset),
-                              step.begin() + static_cast<std::ptrdiff_t>(offset + count),
-                              target.begin() + static_cast<std::ptrdiff_t>(offset)); });
+    forEachBoxRow(box,
+                  [&](std::size_t offset, std::size_t count)
+                  {
+                      std::copy(step.begin() + static_cast<std::ptrdiff_t>(offset),
+                                step.begin() + static_cast<std::ptrdiff_t>(offset + count),
+                                target.begin() + static_cast<std::ptrdiff_t>(offset));
+                  });
     slotBoxes_[slot] = box;
     ++committed_;
     staleBox_ = staleBox_.united(evicted.united(box));
@@ -128,7 +135,8 @@ void AveragingWindow::nodeTotal(std::size_t node, double* sums) const
 
 void AveragingWindow::recomputeTotal(const IndexBox& box) const
 {
-    forEachBoxRow(box, [&](std::size_t offset, std::size_t count)
+    forEachBoxRow(box,
+                  [&](std::size_t offset, std::size_t count)
                   {
                       double* total = total_.data() + offset;
                       std::fill(total, total + count, 0.0);
@@ -157,7 +165,8 @@ IndexBox AveragingWindow::box() const
 WindowState AveragingWindow::save() const
 {
     WindowState state;
-    state.counters = {formatVersion, nodes_[0], nodes_[1], nodes_[2], nQuantities_, length_, filled_, committed_};
+    state.counters
+        = {formatVersion, nodes_[0], nodes_[1], nodes_[2], nQuantities_, length_, filled_, committed_};
     std::size_t valueCount = 0;
     for (int age = 0; age < filled_; ++age)
     {
@@ -169,9 +178,13 @@ WindowState AveragingWindow::save() const
         const IndexBox& b = slotBoxes_[slotIndex(age)];
         state.counters.insert(state.counters.end(), {b.lo[0], b.lo[1], b.lo[2], b.hi[0], b.hi[1], b.hi[2]});
         const std::vector<double>& slot = slots_[slotIndex(age)];
-        forEachBoxRow(b, [&](std::size_t offset, std::size_t count)
-                      { state.values.insert(state.values.end(), slot.begin() + static_cast<std::ptrdiff_t>(offset),
-                                            slot.begin() + static_cast<std::ptrdiff_t>(offset + count)); });
+        forEachBoxRow(b,
+                      [&](std::size_t offset, std::size_t count)
+                      {
+                          state.values.insert(state.values.end(),
+                                              slot.begin() + static_cast<std::ptrdiff_t>(offset),
+                                              slot.begin() + static_cast<std::ptrdiff_t>(offset + count));
+                      });
     }
     return state;
 }
@@ -194,7 +207,8 @@ std::vector<IndexBox> AveragingWindow::savedSlotBoxes(const WindowState& state) 
         failRestart("different number of quantities per node");
     }
     const std::int64_t savedFilled = c[6];
-    if (savedFilled < 0 || savedFilled > c[5] || c.size() != headerSize + 6 * static_cast<std::size_t>(savedFilled))
+    if (savedFilled < 0 || savedFilled > c[5]
+        || c.size() != headerSize + 6 * static_cast<std::size_t>(savedFilled))
     {
         failRestart("inconsistent slot count");
     }
@@ -246,7 +260,8 @@ void AveragingWindow::restore(const WindowState& state)
             std::vector<double>& slot = slots_[static_cast<std::size_t>(filled_)];
             slot.assign(total_.size(), 0.0);
             std::size_t read = position;
-            forEachBoxRow(boxes[s], [&](std::size_t offset, std::size_t rowCount)
+            forEachBoxRow(boxes[s],
+                          [&](std::size_t offset, std::size_t rowCount)
                           {
                               std::copy(state.values.begin() + static_cast<std::ptrdiff_t>(read),
                                         state.values.begin() + static_cast<std::ptrdiff_t>(read + rowCount),

@@ -56,7 +56,7 @@ public:
     // The window total of one node, nQuantities values into `sums` (no full update).
     void nodeTotal(std::size_t node, double* sums) const;
     int length() const { return length_; }
-    int filled() const { return filled_; }               // steps in the window, <= length
+    int filled() const { return filled_; } // steps in the window, <= length
     std::int64_t committedSteps() const { return committed_; }
     // Union of the boxes of the steps in the window (where total can be non-zero).
     IndexBox box() const;
@@ -74,7 +74,7 @@ private:
     // count; throws std::invalid_argument naming what does not fit.
     std::vector<IndexBox> savedSlotBoxes(const WindowState& state) const;
     bool boxHolds(const IndexBox& box, std::size_t node) const;
-    template<class F>
+    template <class F>
     void forEachBoxRow(const IndexBox& box, F&& f) const;
 
     std::array<int, 3> nodes_;
@@ -82,7 +82,7 @@ private:
     int length_;
     std::vector<std::vector<double>> slots_;
     std::vector<IndexBox> slotBoxes_;
-    int head_ = 0;   // slot of the oldest step
+    int head_ = 0; // slot of the oldest step
     int filled_ = 0;
     std::int64_t committed_ = 0;
     // total_ is a cache of the slots' sum, valid outside staleBox_, and inside it at the

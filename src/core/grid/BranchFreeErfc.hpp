@@ -37,7 +37,7 @@ struct FractionOf
 
 constexpr double erfcScaledSmallEnd = 0.46875; // end of Cody's first interval
 
-constexpr double erfcScaledLargeStart = 4.0;   // start of the third
+constexpr double erfcScaledLargeStart = 4.0; // start of the third
 
 // erfcScaled(x) for x >= 0 in parts: numerator / denominator, times exp(x^2) when
 // x <= erfcScaledSmallEnd (where the formula is exp(x^2) erfc(x); the path weight has that

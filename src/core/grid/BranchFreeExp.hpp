@@ -29,9 +29,9 @@ namespace dropletFiber::avx2
 template <class V>
 inline V branchFreeExp(V x)
 {
-    constexpr double log2e = 1.4426950408889634074;          // 1 / ln 2
-    constexpr double ln2High = 6.93147180369123816490e-01;   // bits 0x3FE62E42FEE00000
-    constexpr double ln2Low = 1.90821492927058770002e-10;    // ln 2 - ln2High
+    constexpr double log2e = 1.4426950408889634074;        // 1 / ln 2
+    constexpr double ln2High = 6.93147180369123816490e-01; // bits 0x3FE62E42FEE00000
+    constexpr double ln2Low = 1.90821492927058770002e-10;  // ln 2 - ln2High
     // Adding 1.5 * 2^52 rounds to an integer (to nearest) and leaves it in the low bits of
     // the sum: bits(shifter + n) = bits(shifter) + n for |n| < 2^51.
     constexpr double shifter = 6755399441055744.0;

@@ -29,6 +29,9 @@ struct PolynomialPair
     V q;
 };
 
+// Horner forms laid out by hand, one polynomial per line pair (clang-format would split
+// every product onto a line of its own)
+// clang-format off
 // [0, 0.46875]: erf(x) = x P(z) / Q(z), z = x^2.
 template <class V>
 DROPLETFIBER_ALWAYS_INLINE PolynomialPair<V> codyErfSmall(const V& z)
@@ -60,5 +63,7 @@ DROPLETFIBER_ALWAYS_INLINE PolynomialPair<V> codyErfcLarge(const V& z)
             ((((z + 2.56852019228982242) * z + 1.87295284992346047) * z + 0.527905102951428412) * z
              + 0.0605183413124413191) * z + 0.00233520497626869185};
 }
+
+// clang-format on
 
 } // namespace dropletFiber

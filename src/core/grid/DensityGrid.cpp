@@ -19,13 +19,13 @@ int resolveDimension(const GridSpec& spec, KernelDimension dimension)
 {
     switch (dimension)
     {
-    case KernelDimension::TwoD:
-        return 2;
-    case KernelDimension::ThreeD:
-        return 3;
-    case KernelDimension::Automatic:
-    default:
-        return spec.activeDimensions() == 3 ? 3 : 2;
+        case KernelDimension::TwoD:
+            return 2;
+        case KernelDimension::ThreeD:
+            return 3;
+        case KernelDimension::Automatic:
+        default:
+            return spec.activeDimensions() == 3 ? 3 : 2;
     }
 }
 
@@ -113,16 +113,17 @@ std::array<double, nQuantities> parcelTotals(const Parcel& parcel, double mass, 
     const double radius = 0.5 * parcel.diameter;
     const double nParticle = parcel.nParticle;
     return {{massInside, fraction * nParticle, fraction * nParticle * radius, massInside * radius,
-             massInside * parcel.velocity.x(), massInside * parcel.velocity.y(), massInside * parcel.velocity.z()}};
+             massInside * parcel.velocity.x(), massInside * parcel.velocity.y(),
+             massInside * parcel.velocity.z()}};
 }
 
 // Cloud-in-cell: points at most half the smallest node spacing apart along the path (at
 // least one, at most 4096), at the middles of equal parts; each carries `share` of the parcel.
 struct PathPoints
 {
-    PathPoints(const Eigen::Vector3d& pathStart, const Eigen::Vector3d& pathDisplacement, double smallestSpacing)
-        : start(pathStart),
-          displacement(pathDisplacement),
+    PathPoints(const Eigen::Vector3d& pathStart, const Eigen::Vector3d& pathDisplacement,
+               double smallestSpacing)
+        : start(pathStart), displacement(pathDisplacement),
           count(static_cast<int>(
               std::min(4096.0, std::max(1.0, std::ceil(2.0 * pathDisplacement.norm() / smallestSpacing))))),
           share(1.0 / count)
@@ -219,11 +220,9 @@ void addCornerWeights(const GridSpec& spec, const std::array<double, 3>& spacing
 } // namespace
 
 DensityGrid::DensityGrid(const GridSpec& spec, const KernelSettings& kernel, int windowLength)
-    : spec_(validated(spec)),
-      kernelSettings_(kernel),
+    : spec_(validated(spec)), kernelSettings_(kernel),
       kernelDimension_(resolveDimension(spec, kernel.dimension)),
-      batched_(kernel.vectorised && PathWeightBatch::cpuSupported()),
-      nodeVolume_(spec.nodeVolume()),
+      batched_(kernel.vectorised && PathWeightBatch::cpuSupported()), nodeVolume_(spec.nodeVolume()),
       window_(spec.nodes, nQuantities, windowLength)
 {
     kernelSettings_.validate();
@@ -239,7 +238,8 @@ DensityGrid::DensityGrid(const GridSpec& spec, const KernelSettings& kernel, int
         largestSpacing_ = spec.flat(d) ? largestSpacing_ : std::max(largestSpacing_, spec.spacing(d));
         if (!spec.flat(d))
         {
-            smallestSpacing_ = smallestSpacing_ > 0.0 ? std::min(smallestSpacing_, spec.spacing(d)) : spec.spacing(d);
+            smallestSpacing_
+                = smallestSpacing_ > 0.0 ? std::min(smallestSpacing_, spec.spacing(d)) : spec.spacing(d);
         }
         halfCellDiagonal_ += spec.flat(d) ? 0.0 : 0.25 * spec.spacing(d) * spec.spacing(d);
     }
@@ -287,9 +287,10 @@ void DensityGrid::deposit(const Parcel& parcel, double dt)
 
     // 4. Weights of the nodes in the bounding box of the swept capsule.
     const IndexBox box = nodeBox(path, reach);
-    const bool batched = batched_ && !pathWeight.stationary() && box.nodeCount() >= PathWeightBatch::minimumBoxNodes;
-    const double omegaSum
-        = batched ? weighNodesBatched(pathWeight, path.start, box) : weighNodesOneByOne(pathWeight, path.start, box);
+    const bool batched
+        = batched_ && !pathWeight.stationary() && box.nodeCount() >= PathWeightBatch::minimumBoxNodes;
+    const double omegaSum = batched ? weighNodesBatched(pathWeight, path.start, box)
+                                    : weighNodesOneByOne(pathWeight, path.start, box);
     stats.nodesVisited += static_cast<std::int64_t>(box.nodeCount());
 
     // 5-6. Normalise (eq. 24), or fall back to cloud-in-cell weights.
@@ -361,13 +362,14 @@ IndexBox DensityGrid::nodeBox(const ClippedPath& path, double reach) const
     return box;
 }
 
-double DensityGrid::weighNodesBatched(const PathWeight& pathWeight, const Eigen::Vector3d& start, const IndexBox& box)
+double DensityGrid::weighNodesBatched(const PathWeight& pathWeight, const Eigen::Vector3d& start,
+                                      const IndexBox& box)
 {
     // CPU with AVX2 + FMA (KernelBuild.hpp): project every node of the box, then omega of
     // all of them four at a time without branches (PathWeightBatch); the same sums and the
     // same list of weighted nodes, in node order, as weighNodesOneByOne.
-    const double* boxOmega = batch_.boxOmegas(pathWeight, start, coordinates_[0].data(), coordinates_[1].data(),
-                                              coordinates_[2].data(), box.lo, box.hi);
+    const double* boxOmega = batch_.boxOmegas(pathWeight, start, coordinates_[0].data(),
+                                              coordinates_[1].data(), coordinates_[2].data(), box.lo, box.hi);
     // List the nodes with omega > 0 without a branch: each node is written at the end of
     // the list and kept by advancing the count (omega <= 0 adds 0 to the sum).
     scratch_.clear();
@@ -389,7 +391,8 @@ double DensityGrid::weighNodesBatched(const PathWeight& pathWeight, const Eigen:
     return omegaSum;
 }
 
-double DensityGrid::weighNodesOneByOne(const PathWeight& pathWeight, const Eigen::Vector3d& start, const IndexBox& box)
+double DensityGrid::weighNodesOneByOne(const PathWeight& pathWeight, const Eigen::Vector3d& start,
+                                       const IndexBox& box)
 {
     // Vectorised off, CPUs without AVX2 + FMA, other architectures; stationary parcels and
     // small boxes always.
@@ -451,7 +454,8 @@ double DensityGrid::negligibleDistance(const ParcelKernel& kernel, double pathLe
     return cutoffSquared < reach * reach ? std::sqrt(cutoffSquared) : reach;
 }
 
-void DensityGrid::accumulate(std::size_t node, double weight, const std::array<double, nQuantities>& parcelTotals)
+void DensityGrid::accumulate(std::size_t node, double weight,
+                             const std::array<double, nQuantities>& parcelTotals)
 {
     double* values = step_.data() + node * nQuantities;
     for (int q = 0; q < nQuantities; ++q)
@@ -595,7 +599,8 @@ DropletFieldValue DensityGrid::fieldFromSums(const std::array<double, nQuantitie
     {
         value.rho = mass / volumeSteps;
         value.rMeanMass = s[quantityMassRadius] / mass;
-        value.velocity = Eigen::Vector3d(s[quantityMomentumX], s[quantityMomentumY], s[quantityMomentumZ]) / mass;
+        value.velocity
+            = Eigen::Vector3d(s[quantityMomentumX], s[quantityMomentumY], s[quantityMomentumZ]) / mass;
     }
     if (count > 0.0)
     {

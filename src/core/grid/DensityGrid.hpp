@@ -91,11 +91,11 @@ namespace dropletFiber
 // Droplet field at a node or interpolated at a point.
 struct DropletFieldValue
 {
-    bool inside = true;          // false: point outside the grid box, all zeros
-    double rho = 0.0;            // droplet mass per volume of space, kg/m^3
-    double numberDensity = 0.0;  // droplets per volume, 1/m^3
-    double rMeanNumber = 0.0;    // number-weighted mean droplet radius (eq. 10), m
-    double rMeanMass = 0.0;      // mass-weighted mean droplet radius, m
+    bool inside = true;                      // false: point outside the grid box, all zeros
+    double rho = 0.0;                        // droplet mass per volume of space, kg/m^3
+    double numberDensity = 0.0;              // droplets per volume, 1/m^3
+    double rMeanNumber = 0.0;                // number-weighted mean droplet radius (eq. 10), m
+    double rMeanMass = 0.0;                  // mass-weighted mean droplet radius, m
     Eigen::Vector3d velocity{0.0, 0.0, 0.0}; // mass-weighted mean droplet velocity, m/s
 };
 
@@ -175,7 +175,8 @@ private:
     // Step 4: omega of every node of the box; the nodes with omega > 0 go to scratch_, in
     // node order. Returns sum omega. Batched (AVX2 + FMA, moving parcels) or node by node.
     double weighNodesBatched(const PathWeight& pathWeight, const Eigen::Vector3d& start, const IndexBox& box);
-    double weighNodesOneByOne(const PathWeight& pathWeight, const Eigen::Vector3d& start, const IndexBox& box);
+    double weighNodesOneByOne(const PathWeight& pathWeight, const Eigen::Vector3d& start,
+                              const IndexBox& box);
     // Steps 5 and 7: scratch_'s nodes get omega / sum omega of the parcel's totals.
     void depositWeighted(double inverseSum, const std::array<double, nQuantities>& parcelTotals,
                          const IndexBox& box);
@@ -193,13 +194,13 @@ private:
     GridSpec spec_;
     KernelSettings kernelSettings_;
     int kernelDimension_;
-    bool batched_; // batchedKernel()
+    bool batched_;                                   // batchedKernel()
     std::array<std::vector<double>, 3> coordinates_; // node coordinates per direction
     std::array<double, 3> inverseSpacing_{};
     std::array<double, 3> spacing_{}; // 0 in flat directions
-    double smallestSpacing_ = 0.0; // over the active directions (cloud-in-cell path points)
-    double largestSpacing_ = 0.0; // over the active directions (KernelSettings::cloudInCellBelow)
-    double halfCellDiagonal_ = 0.0; // over the active directions (negligible weights)
+    double smallestSpacing_ = 0.0;    // over the active directions (cloud-in-cell path points)
+    double largestSpacing_ = 0.0;     // over the active directions (KernelSettings::cloudInCellBelow)
+    double halfCellDiagonal_ = 0.0;   // over the active directions (negligible weights)
     double nodeVolume_;
     AveragingWindow window_;
     std::vector<double> step_;

@@ -48,8 +48,8 @@ void GridSpec::validate() const
     {
         if (nodes[d] < 1)
         {
-            throw std::invalid_argument(
-                std::string("grid: nodes in ") + axis[d] + " must be at least 1, got " + std::to_string(nodes[d]));
+            throw std::invalid_argument(std::string("grid: nodes in ") + axis[d] + " must be at least 1, got "
+                                        + std::to_string(nodes[d]));
         }
         if (!std::isfinite(lower[d]) || !std::isfinite(upper[d]))
         {

@@ -44,7 +44,7 @@ inline std::size_t flatNodeIndex(const std::array<int, 3>& nodes, int i, int j, 
 {
     return static_cast<std::size_t>(i)
         + static_cast<std::size_t>(nodes[0])
-            * (static_cast<std::size_t>(j) + static_cast<std::size_t>(nodes[1]) * static_cast<std::size_t>(k));
+        * (static_cast<std::size_t>(j) + static_cast<std::size_t>(nodes[1]) * static_cast<std::size_t>(k));
 }
 
 // One row of an IndexBox: its nodes lo[0]..hi[0] at fixed (j, k), consecutive in the grid.
@@ -52,8 +52,8 @@ struct IndexRow
 {
     int j = 0;
     int k = 0;
-    std::size_t first = 0;      // flat index of node (lo[0], j, k)
-    std::size_t length = 0;     // hi[0] - lo[0] + 1 nodes
+    std::size_t first = 0;       // flat index of node (lo[0], j, k)
+    std::size_t length = 0;      // hi[0] - lo[0] + 1 nodes
     std::size_t offsetInBox = 0; // position of its first node in the box, i fastest
 };
 

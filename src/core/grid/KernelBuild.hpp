@@ -56,7 +56,7 @@
 // The region compiled for AVX2 + FMA: function definitions between BEGIN and END get
 // target("avx2,fma") (Clang: its attribute pragma; GCC: push_options / target).
 #if defined(__clang__)
-#define DROPLETFIBER_AVX2_BEGIN                                                                                  \
+#define DROPLETFIBER_AVX2_BEGIN                                                                              \
     _Pragma("clang attribute push(__attribute__((target(\"avx2,fma\"))), apply_to = function)")
 #define DROPLETFIBER_AVX2_END _Pragma("clang attribute pop")
 #else

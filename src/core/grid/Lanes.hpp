@@ -115,7 +115,7 @@ inline Lanes squareRoot(Lanes a)
 }
 
 // The IEEE bit pattern of each lane and back (for exponent arithmetic).
-template<class To, class From>
+template <class To, class From>
 inline To bitCast(const From& a)
 {
     static_assert(sizeof(To) == sizeof(From), "bitCast: sizes differ");
@@ -123,10 +123,22 @@ inline To bitCast(const From& a)
     std::memcpy(&b, &a, sizeof b);
     return b;
 }
-inline std::uint64_t bitsOf(double a) { return bitCast<std::uint64_t>(a); }
-inline LaneBits bitsOf(Lanes a) { return bitCast<LaneBits>(a); }
-inline double fromBits(std::uint64_t bits) { return bitCast<double>(bits); }
-inline Lanes fromBits(LaneBits bits) { return bitCast<Lanes>(bits); }
+inline std::uint64_t bitsOf(double a)
+{
+    return bitCast<std::uint64_t>(a);
+}
+inline LaneBits bitsOf(Lanes a)
+{
+    return bitCast<LaneBits>(a);
+}
+inline double fromBits(std::uint64_t bits)
+{
+    return bitCast<double>(bits);
+}
+inline Lanes fromBits(LaneBits bits)
+{
+    return bitCast<Lanes>(bits);
+}
 
 inline Lanes loadLanes(const double* values)
 {

@@ -21,10 +21,10 @@ namespace dropletFiber
 
 struct CornerWeights
 {
-    int count = 0;                      // 1, 2, 4 or 8 corners (2^active dimensions)
-    std::array<std::size_t, 8> node{};  // flat node indices
-    std::array<double, 8> weight{};     // sum to 1, all >= 0
-    std::array<int, 3> lowerCorner{};   // index of the lowest corner per direction
+    int count = 0;                     // 1, 2, 4 or 8 corners (2^active dimensions)
+    std::array<std::size_t, 8> node{}; // flat node indices
+    std::array<double, 8> weight{};    // sum to 1, all >= 0
+    std::array<int, 3> lowerCorner{};  // index of the lowest corner per direction
 };
 
 CornerWeights multilinearWeights(const GridSpec& spec, const Eigen::Vector3d& point);

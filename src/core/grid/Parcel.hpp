@@ -16,9 +16,9 @@ struct Parcel
 {
     Eigen::Vector3d position{0.0, 0.0, 0.0}; // end of the step, m
     Eigen::Vector3d velocity{0.0, 0.0, 0.0}; // droplet velocity, m/s
-    double diameter = 0.0;                    // droplet diameter 2 r_p, m
-    double nParticle = 0.0;                   // droplets in the parcel, n (may be fractional)
-    double rhoDroplet = 0.0;                  // droplet material density rho_p, kg/m^3
+    double diameter = 0.0;                   // droplet diameter 2 r_p, m
+    double nParticle = 0.0;                  // droplets in the parcel, n (may be fractional)
+    double rhoDroplet = 0.0;                 // droplet material density rho_p, kg/m^3
 };
 
 // m(r_p) = rho_p 4/3 pi r_p^3, one droplet.

@@ -24,8 +24,9 @@ void KernelSettings::validate() const
     }
     if (!(cloudInCellBelow >= 0.0) || !std::isfinite(cloudInCellBelow))
     {
-        throw std::invalid_argument("kernel: cloudInCellBelow must be finite and >= 0 (0: always the kernel), got "
-                                    + std::to_string(cloudInCellBelow));
+        throw std::invalid_argument(
+            "kernel: cloudInCellBelow must be finite and >= 0 (0: always the kernel), got "
+            + std::to_string(cloudInCellBelow));
     }
     // Up to 1e-6: the cut is meant to drop round-off, not to truncate the kernel visibly.
     if (!(negligibleWeight >= 0.0 && negligibleWeight <= 1e-6))
@@ -55,9 +56,11 @@ double kernelAlpha(double rMax, double rMin, double beta)
     return rMax * rMax / (2.0 * inflection * inflection);
 }
 
-ParcelKernel::ParcelKernel(double dropletRadius, double nParticle, const KernelSettings& settings, int dimension)
+ParcelKernel::ParcelKernel(double dropletRadius, double nParticle, const KernelSettings& settings,
+                           int dimension)
 {
-    if (!(dropletRadius > 0.0) || !(nParticle > 0.0) || !std::isfinite(dropletRadius) || !std::isfinite(nParticle))
+    if (!(dropletRadius > 0.0) || !(nParticle > 0.0) || !std::isfinite(dropletRadius)
+        || !std::isfinite(nParticle))
     {
         throw std::invalid_argument("ParcelKernel: droplet radius and nParticle must be positive and finite");
     }

@@ -24,8 +24,8 @@ enum class KernelDimension
 
 struct KernelSettings
 {
-    double beta = 0.025;    // eq. 17/18: inflection point between r_min (0) and r_max (1)
-    double rMaxCap = 0.0;   // cap on the influence radius in metres; <= 0: no cap
+    double beta = 0.025;  // eq. 17/18: inflection point between r_min (0) and r_max (1)
+    double rMaxCap = 0.0; // cap on the influence radius in metres; <= 0: no cap
     KernelDimension dimension = KernelDimension::Automatic;
     // Parcels the grid cannot resolve: a parcel whose kernel width (the inflection point
     // of eq. 16, r_max / sqrt(2 alpha)) is below cloudInCellBelow times the largest node
@@ -75,11 +75,11 @@ public:
     double rMax() const { return rMax_; }
     double rMin() const { return rMin_; }
     double alpha() const { return alpha_; }
-    double reach() const { return reach_; }              // support radius, min(r_max, cap)
-    double gamma() const { return gamma_; }              // alpha / r_max^2, 1/m^2
+    double reach() const { return reach_; }               // support radius, min(r_max, cap)
+    double gamma() const { return gamma_; }               // alpha / r_max^2, 1/m^2
     double width() const;                                 // r_max / sqrt(2 alpha), eq. 16
     double edgeExponent() const { return edgeExponent_; } // gamma reach^2 (= alpha uncapped)
-    double edgeValue() const { return edgeValue_; }        // exp(-edgeExponent)
+    double edgeValue() const { return edgeValue_; }       // exp(-edgeExponent)
     bool capped() const { return capped_; }
 
     // Eq. 12, accurate also near the edge of the support (no cancellation, see .cpp).

@@ -38,13 +38,13 @@ namespace dropletFiber::avx2
 
 struct PathIntegralClosedForm
 {
-    double length = 0.0;        // L = |v dt|
+    double length = 0.0; // L = |v dt|
     double reachSquared = 0.0;
     double gamma = 0.0;
     double sqrtGamma = 0.0;
     double inverseSqrtGamma = 0.0;
-    double edgeExponent = 0.0;  // a = gamma reach^2
-    double edgeValue = 0.0;     // exp(-a), the kernel's Gaussian at the reach
+    double edgeExponent = 0.0; // a = gamma reach^2
+    double edgeValue = 0.0;    // exp(-a), the kernel's Gaussian at the reach
 
     // Regimes A and B, left to the exact code: the largest q = gamma (h^2 - u^2) on the
     // interval below this (the Gaussian and the constant of eq. 12 nearly cancel)...
@@ -57,9 +57,9 @@ struct PathIntegralClosedForm
     template <class V>
     struct Interval
     {
-        V x1, x2;                             // sqrt(gamma) u_i
-        V exponent0, exponent1, exponent2;    // g_i = exp(exponent_i)
-        V width;                              // lambda_2 - lambda_1
+        V x1, x2;                          // sqrt(gamma) u_i
+        V exponent0, exponent1, exponent2; // g_i = exp(exponent_i)
+        V width;                           // lambda_2 - lambda_1
         V status;
     };
 

@@ -26,8 +26,8 @@ double gaussianTaylorSum(double xc, double h)
     const double h2 = h * h;
     const double twoX = 2.0 * xc;
     double coefficient = 2.0 * h; // 2 h^(2m+1) / (2m+1)!
-    double hermiteEven = 1.0;      // H_2m
-    double hermiteOdd = twoX;      // H_2m+1
+    double hermiteEven = 1.0;     // H_2m
+    double hermiteOdd = twoX;     // H_2m+1
     double sum = coefficient;
     for (int m = 1; m <= 12; ++m)
     {
@@ -140,12 +140,13 @@ double closedFormGaussian(double gamma, double d0Squared, double x1, double x2, 
     const Fraction end = erfcScaledFraction(x2);
     return 2.0 * halfSqrtPi * std::exp(-gamma * d0Squared)
         - halfSqrtPi * (g1 * start.numerator * end.denominator + g2 * end.numerator * start.denominator)
-            / (start.denominator * end.denominator);
+        / (start.denominator * end.denominator);
 }
 
 } // namespace
 
-PathWeight::PathWeight(const ParcelKernel& kernel, const Eigen::Vector3d& start, const Eigen::Vector3d& displacement)
+PathWeight::PathWeight(const ParcelKernel& kernel, const Eigen::Vector3d& start,
+                       const Eigen::Vector3d& displacement)
     : kernel_(kernel), start_(start), halfDisplacement_(0.5 * displacement)
 {
     reachSquared_ = kernel.reach() * kernel.reach();
@@ -194,8 +195,8 @@ double PathWeight::integralAlongPath(double lambdaM, double d0Squared) const
     {
         // Regime B: short interval in x (includes L -> 0): Taylor series about the middle,
         // one exponential, no erf difference that would cancel.
-        const double gaussian
-            = std::exp(-(gamma * d0Squared + xCentre * xCentre)) * gaussianTaylorSum(xCentre, xHalf) * inverseSqrtGamma_;
+        const double gaussian = std::exp(-(gamma * d0Squared + xCentre * xCentre))
+            * gaussianTaylorSum(xCentre, xHalf) * inverseSqrtGamma_;
         return gaussian - edgeValue * width;
     }
 

@@ -110,16 +110,16 @@ void erfcScaledPartsAt(const std::uint32_t* list, std::size_t count, const doubl
 // doubles) and indices (8 count + laneCount).
 struct Stages
 {
-    std::size_t count;     // nodes, a multiple of laneCount
-    std::size_t ends;      // 2 count: x1 of every node, then x2
-    double* x;             // x1 of every node, then x2
-    double* exponents;     // exponent0, 1, 2; then exp of them in place
-    double* numerators;    // erfc parts of |x1|, then |x2|
+    std::size_t count;  // nodes, a multiple of laneCount
+    std::size_t ends;   // 2 count: x1 of every node, then x2
+    double* x;          // x1 of every node, then x2
+    double* exponents;  // exponent0, 1, 2; then exp of them in place
+    double* numerators; // erfc parts of |x1|, then |x2|
     double* denominators;
     double* width;
     double* status;
-    std::uint32_t* node;   // packed position -> node
-    std::uint32_t* lists;  // stage 4: the ends per interval of the scaled erfc
+    std::uint32_t* node;  // packed position -> node
+    std::uint32_t* lists; // stage 4: the ends per interval of the scaled erfc
 };
 
 DROPLETFIBER_ALWAYS_INLINE Stages stagesIn(std::size_t count, double* values, std::uint32_t* indices)
@@ -155,9 +155,9 @@ DROPLETFIBER_ALWAYS_INLINE PathIntegralClosedForm closedFormOf(const PathWeight&
 // 1. Every node's interval and regime; omega set to 0. The negligible-weight cut
 // (PathWeight::limitTo): nodes at or beyond it get 0, as in omegaFromOffset; applied by
 // moving them out of reach (a select, no branch).
-DROPLETFIBER_ALWAYS_INLINE void classifyNodes(const PathIntegralClosedForm& closedForm, double pathCutoffSquared,
-                                              const double* lambdaM, const double* d0Squared, double* omega,
-                                              const Stages& s)
+DROPLETFIBER_ALWAYS_INLINE void classifyNodes(const PathIntegralClosedForm& closedForm,
+                                              double pathCutoffSquared, const double* lambdaM,
+                                              const double* d0Squared, double* omega, const Stages& s)
 {
     const Lanes cutoffSquared = splat<Lanes>(pathCutoffSquared);
     const Lanes outOfReach = splat<Lanes>(2.0 * closedForm.reachSquared);
@@ -238,7 +238,8 @@ DROPLETFIBER_ALWAYS_INLINE void erfcScaledPartsOfEnds(const Stages& s, std::size
         for (std::size_t end = first; end < first + packed; ++end)
         {
             const int interval = erfcScaledInterval(std::abs(s.x[end]));
-            s.lists[static_cast<std::size_t>(interval) * s.ends + listLength[interval]] = static_cast<std::uint32_t>(end);
+            s.lists[static_cast<std::size_t>(interval) * s.ends + listLength[interval]]
+                = static_cast<std::uint32_t>(end);
             ++listLength[interval];
         }
     }
@@ -267,8 +268,9 @@ DROPLETFIBER_ALWAYS_INLINE void erfcScaledPartsOfEnds(const Stages& s, std::size
 }
 
 // 5. The closed form of the packed nodes, omega written to each node's place.
-DROPLETFIBER_ALWAYS_INLINE void closedFormOmegas(const PathIntegralClosedForm& closedForm, double inverseLength,
-                                                 const Stages& s, std::size_t packed, double* omega)
+DROPLETFIBER_ALWAYS_INLINE void closedFormOmegas(const PathIntegralClosedForm& closedForm,
+                                                 double inverseLength, const Stages& s, std::size_t packed,
+                                                 double* omega)
 {
     for (std::size_t p = 0; p < packed; p += laneCount)
     {
@@ -278,7 +280,8 @@ DROPLETFIBER_ALWAYS_INLINE void closedFormOmegas(const PathIntegralClosedForm& c
         interval.width = loadLanes(s.width + p);
         interval.status = splat<Lanes>(1.0);
         const FractionOf<Lanes> parts1{loadLanes(s.numerators + p), loadLanes(s.denominators + p)};
-        const FractionOf<Lanes> parts2{loadLanes(s.numerators + s.count + p), loadLanes(s.denominators + s.count + p)};
+        const FractionOf<Lanes> parts2{loadLanes(s.numerators + s.count + p),
+                                       loadLanes(s.denominators + s.count + p)};
         const Lanes integral
             = closedForm.integral(interval, loadLanes(s.exponents + p), loadLanes(s.exponents + s.count + p),
                                   loadLanes(s.exponents + 2 * s.count + p), parts1, parts2);
@@ -287,8 +290,9 @@ DROPLETFIBER_ALWAYS_INLINE void closedFormOmegas(const PathIntegralClosedForm& c
 }
 
 // 6. The nodes in regime A or B (status < 0, only within the cut) with the per-node code.
-DROPLETFIBER_ALWAYS_INLINE void exactOmegas(const PathWeight& path, double inverseLength, const double* lambdaM,
-                                            const double* d0Squared, const Stages& s, double* omega)
+DROPLETFIBER_ALWAYS_INLINE void exactOmegas(const PathWeight& path, double inverseLength,
+                                            const double* lambdaM, const double* d0Squared, const Stages& s,
+                                            double* omega)
 {
     for (std::size_t n = 0; n < s.count; ++n)
     {
@@ -363,7 +367,8 @@ bool PathWeightBatch::cpuSupported()
     // libgcc's (or compiler-rt's) CPUID query, which also checks that the operating system
     // saves the AVX registers (XGETBV). __builtin_cpu_init first: this may run before the
     // library's constructors (static initialisers of other code).
-    static const bool supported = [] {
+    static const bool supported = []
+    {
         __builtin_cpu_init();
         return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
     }();
@@ -385,8 +390,8 @@ void PathWeightBatch::requireCpu(const char* caller)
     }
 }
 
-void PathWeightBatch::omegas(const PathWeight& path, const double* lambdaM, const double* d0Squared, double* omega,
-                             std::size_t count)
+void PathWeightBatch::omegas(const PathWeight& path, const double* lambdaM, const double* d0Squared,
+                             double* omega, std::size_t count)
 {
     requireCpu("omegas");
 #if DROPLETFIBER_BATCHED_KERNEL
@@ -401,9 +406,9 @@ void PathWeightBatch::omegas(const PathWeight& path, const double* lambdaM, cons
 #endif
 }
 
-const double* PathWeightBatch::boxOmegas(const PathWeight& path, const Eigen::Vector3d& start, const double* x,
-                                         const double* y, const double* z, const std::array<int, 3>& lo,
-                                         const std::array<int, 3>& hi)
+const double* PathWeightBatch::boxOmegas(const PathWeight& path, const Eigen::Vector3d& start,
+                                         const double* x, const double* y, const double* z,
+                                         const std::array<int, 3>& lo, const std::array<int, 3>& hi)
 {
     std::size_t boxNodes = 1;
     for (int d = 0; d < 3; ++d)

@@ -55,8 +55,9 @@ public:
     // `start`: the projection (PathWeight::project) and omegas(), both compiled for AVX2 +
     // FMA. Returns the box's node count values, valid until the next call. Only where
     // cpuSupported().
-    const double* boxOmegas(const PathWeight& path, const Eigen::Vector3d& start, const double* x, const double* y,
-                            const double* z, const std::array<int, 3>& lo, const std::array<int, 3>& hi);
+    const double* boxOmegas(const PathWeight& path, const Eigen::Vector3d& start, const double* x,
+                            const double* y, const double* z, const std::array<int, 3>& lo,
+                            const std::array<int, 3>& hi);
 
 private:
     // Throws std::logic_error naming the caller unless cpuSupported().

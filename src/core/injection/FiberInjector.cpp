@@ -9,20 +9,30 @@ namespace dropletFiber
 
 void FiberInjectorSpec::validate() const
 {
-    auto fail = [this](const std::string& entry, const std::string& what) {
-        throw std::invalid_argument("injector '" + name + "': entry '" + entry + "' " + what);
-    };
-    if (!position.allFinite()) fail("position", "must be finite");
-    if (!velocity.allFinite()) fail("velocity", "must be finite");
-    if (!direction.allFinite() || direction.norm() == 0.0) fail("direction", "must be a non-zero vector");
-    if (!(length > 0.0) || !std::isfinite(length)) fail("length", "must be > 0");
-    if (points < 2) fail("points", "must be >= 2");
-    if (!(rate > 0.0) || !std::isfinite(rate)) fail("rate", "must be > 0 (fibers per second)");
-    if (!std::isfinite(startTime)) fail("startTime", "must be finite");
-    if (!(endTime > startTime)) fail("endTime", "must be > startTime");
-    if (!(material.radius > 0.0)) fail("radius", "must be > 0");
-    if (!(material.density > 0.0)) fail("density", "must be > 0");
-    if (!(material.youngsModulus >= 0.0)) fail("youngsModulus", "must be >= 0");
+    auto fail = [this](const std::string& entry, const std::string& what)
+    { throw std::invalid_argument("injector '" + name + "': entry '" + entry + "' " + what); };
+    if (!position.allFinite())
+        fail("position", "must be finite");
+    if (!velocity.allFinite())
+        fail("velocity", "must be finite");
+    if (!direction.allFinite() || direction.norm() == 0.0)
+        fail("direction", "must be a non-zero vector");
+    if (!(length > 0.0) || !std::isfinite(length))
+        fail("length", "must be > 0");
+    if (points < 2)
+        fail("points", "must be >= 2");
+    if (!(rate > 0.0) || !std::isfinite(rate))
+        fail("rate", "must be > 0 (fibers per second)");
+    if (!std::isfinite(startTime))
+        fail("startTime", "must be finite");
+    if (!(endTime > startTime))
+        fail("endTime", "must be > startTime");
+    if (!(material.radius > 0.0))
+        fail("radius", "must be > 0");
+    if (!(material.density > 0.0))
+        fail("density", "must be > 0");
+    if (!(material.youngsModulus >= 0.0))
+        fail("youngsModulus", "must be >= 0");
 }
 
 FiberInjector::FiberInjector(FiberInjectorSpec spec) : spec_(std::move(spec))

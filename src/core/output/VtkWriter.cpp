@@ -33,8 +33,8 @@ std::ofstream openOrThrow(const std::string& path)
 void appendNumber(std::string& out, double v)
 {
     char buffer[32];
-    const std::to_chars_result written =
-        std::to_chars(buffer, buffer + sizeof buffer, std::isfinite(v) ? v : 0.0);
+    const std::to_chars_result written
+        = std::to_chars(buffer, buffer + sizeof buffer, std::isfinite(v) ? v : 0.0);
     out.append(buffer, written.ptr);
 }
 
@@ -52,12 +52,11 @@ void writeDataArray(std::ostream& os, const VtkField& field, std::size_t tuples)
     if (field.values.size() != tuples * static_cast<std::size_t>(field.components))
     {
         throw std::invalid_argument("VTK field '" + field.name + "' has "
-                                    + std::to_string(field.values.size())
-                                    + " values, expected "
+                                    + std::to_string(field.values.size()) + " values, expected "
                                     + std::to_string(tuples * field.components));
     }
-    os << "        <DataArray type=\"Float64\" Name=\"" << field.name
-       << "\" NumberOfComponents=\"" << field.components << "\" format=\"ascii\">\n";
+    os << "        <DataArray type=\"Float64\" Name=\"" << field.name << "\" NumberOfComponents=\""
+       << field.components << "\" format=\"ascii\">\n";
     std::string text;
     text.reserve(field.values.size() * 24);
     for (std::size_t i = 0; i < field.values.size(); ++i)
@@ -85,10 +84,8 @@ void writeFieldBlock(std::ostream& os, const char* tag, const std::vector<VtkFie
 
 } // namespace
 
-void writePolylines(const std::string& path, double time,
-                    const std::vector<Eigen::Vector3d>& points,
-                    const std::vector<std::size_t>& lineOffsets,
-                    const std::vector<VtkField>& pointData,
+void writePolylines(const std::string& path, double time, const std::vector<Eigen::Vector3d>& points,
+                    const std::vector<std::size_t>& lineOffsets, const std::vector<VtkField>& pointData,
                     const std::vector<VtkField>& cellData)
 {
     std::size_t nSegments = 0;
@@ -104,8 +101,7 @@ void writePolylines(const std::string& path, double time,
        << "  <PolyData>\n";
     writeTimeFieldData(os, time);
     // One VTK line cell per segment, so that cell data (tension) is per segment
-    os << "    <Piece NumberOfPoints=\"" << points.size() << "\" NumberOfLines=\""
-       << nSegments << "\">\n"
+    os << "    <Piece NumberOfPoints=\"" << points.size() << "\" NumberOfLines=\"" << nSegments << "\">\n"
        << "      <Points>\n"
        << "        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
     std::string text;
@@ -160,9 +156,9 @@ void writeImageData(const std::string& path, double time, const Eigen::Vector3d&
     extent << "0 " << nodes[0] - 1 << " 0 " << nodes[1] - 1 << " 0 " << nodes[2] - 1;
     os << "<?xml version=\"1.0\"?>\n"
        << "<VTKFile type=\"ImageData\" version=\"1.0\" byte_order=\"LittleEndian\">\n"
-       << "  <ImageData WholeExtent=\"" << extent.str() << "\" Origin=\"" << origin.x()
-       << ' ' << origin.y() << ' ' << origin.z() << "\" Spacing=\"" << spacing.x() << ' '
-       << spacing.y() << ' ' << spacing.z() << "\">\n";
+       << "  <ImageData WholeExtent=\"" << extent.str() << "\" Origin=\"" << origin.x() << ' ' << origin.y()
+       << ' ' << origin.z() << "\" Spacing=\"" << spacing.x() << ' ' << spacing.y() << ' ' << spacing.z()
+       << "\">\n";
     writeTimeFieldData(os, time);
     os << "    <Piece Extent=\"" << extent.str() << "\">\n";
     writeFieldBlock(os, "PointData", pointData, nPoints);
@@ -203,9 +199,9 @@ void SeriesFile::load(double restartTime)
 
 void SeriesFile::add(const std::string& fileName, double time)
 {
-    entries_.erase(std::remove_if(entries_.begin(), entries_.end(),
-                                  [&](const Entry& e) { return e.time == time; }),
-                   entries_.end());
+    entries_.erase(
+        std::remove_if(entries_.begin(), entries_.end(), [&](const Entry& e) { return e.time == time; }),
+        entries_.end());
     entries_.push_back({fileName, time});
     std::sort(entries_.begin(), entries_.end(),
               [](const Entry& a, const Entry& b) { return a.time < b.time; });
@@ -218,8 +214,8 @@ void SeriesFile::write() const
     os << "{\n  \"file-series-version\" : \"1.0\",\n  \"files\" : [\n";
     for (std::size_t i = 0; i < entries_.size(); ++i)
     {
-        os << "    { \"name\" : \"" << entries_[i].name << "\", \"time\" : " << entries_[i].time
-           << " }" << (i + 1 < entries_.size() ? "," : "") << '\n';
+        os << "    { \"name\" : \"" << entries_[i].name << "\", \"time\" : " << entries_[i].time << " }"
+           << (i + 1 < entries_.size() ? "," : "") << '\n';
     }
     os << "  ]\n}\n";
 }

@@ -31,10 +31,8 @@ struct VtkField
 
 // Fibers as polylines. lineOffsets[f] is the index of the first point of line f in
 // `points`; the lines are consecutive, the last one ends at the last point.
-void writePolylines(const std::string& path, double time,
-                    const std::vector<Eigen::Vector3d>& points,
-                    const std::vector<std::size_t>& lineOffsets,
-                    const std::vector<VtkField>& pointData,
+void writePolylines(const std::string& path, double time, const std::vector<Eigen::Vector3d>& points,
+                    const std::vector<std::size_t>& lineOffsets, const std::vector<VtkField>& pointData,
                     const std::vector<VtkField>& cellData);
 
 // A regular grid: origin, spacing and number of nodes per direction, point data in

@@ -44,7 +44,8 @@ TEST(CollisionMass, FormulaEqualsEquationsFourAndFive)
         EXPECT_NEAR(collisionMass(rho, r, rF, l, v, dt), expected, 1e-12 * expected);
     }
     // Parallel: zero (eq. 4 would divide by zero).
-    EXPECT_EQ(collisionMass(1.0, 1e-5, 1e-4, Eigen::Vector3d(1e-3, 0, 0), Eigen::Vector3d(-3.0, 0, 0), 1e-4), 0.0);
+    EXPECT_EQ(collisionMass(1.0, 1e-5, 1e-4, Eigen::Vector3d(1e-3, 0, 0), Eigen::Vector3d(-3.0, 0, 0), 1e-4),
+              0.0);
 }
 
 TEST(CollisionMass, UniformSprayGivesExactResultNormalAndZeroParallel)
@@ -76,7 +77,8 @@ TEST(CollisionMass, UniformSprayGivesExactResultNormalAndZeroParallel)
     EXPECT_EQ(normal.samples, 1);
     EXPECT_EQ(normal.samplesOutside, 0);
     // ...and within 0.5 % of the analytic density's value.
-    const double analytic = 2.0 * stream.rhoAnalytic() * (rF + stream.dropletRadius) * stream.speed * dt * length;
+    const double analytic
+        = 2.0 * stream.rhoAnalytic() * (rF + stream.dropletRadius) * stream.speed * dt * length;
     EXPECT_NEAR(normal.mass, analytic, 0.005 * analytic);
 
     // Parallel to the flow: exactly zero.
@@ -102,8 +104,9 @@ TEST(CollisionMass, UniformSprayGivesExactResultNormalAndZeroParallel)
                 1e-12 * normal.mass);
 
     // Outside the grid: nothing, and counted.
-    const SegmentCollision outside = collisionMass(grid, Eigen::Vector3d(0.03, 0.04, 5e-4),
-                                                   Eigen::Vector3d(0.031, 0.04, 5e-4), rF, Eigen::Vector3d::Zero(), dt);
+    const SegmentCollision outside
+        = collisionMass(grid, Eigen::Vector3d(0.03, 0.04, 5e-4), Eigen::Vector3d(0.031, 0.04, 5e-4), rF,
+                        Eigen::Vector3d::Zero(), dt);
     EXPECT_EQ(outside.mass, 0.0);
     EXPECT_EQ(outside.samplesOutside, 1);
 }

@@ -15,13 +15,16 @@ TEST(BandedLU, MatchesDenseSolveWithPivoting)
 {
     std::mt19937 generator(7);
     std::uniform_real_distribution<double> uniform(-1.0, 1.0);
-    for (int n : {1, 5, 37, 120}) {
+    for (int n : {1, 5, 37, 120})
+    {
         const int kl = 4, ku = 3;
         BandedLU lu;
         lu.reset(n, kl, ku);
         Eigen::MatrixXd dense = Eigen::MatrixXd::Zero(n, n);
-        for (int i = 0; i < n; ++i) {
-            for (int j = std::max(0, i - kl); j <= std::min(n - 1, i + ku); ++j) {
+        for (int i = 0; i < n; ++i)
+        {
+            for (int j = std::max(0, i - kl); j <= std::min(n - 1, i + ku); ++j)
+            {
                 // every 4th diagonal entry is zero: forces row exchanges
                 const double value = (i == j && i % 4 == 3) ? 0.0 : uniform(generator);
                 lu.add(i, j, value);
@@ -41,13 +44,16 @@ TEST(BandedLU, MatchesDenseSolveWithThresholdPivoting)
     std::mt19937 generator(11);
     std::uniform_real_distribution<double> uniform(-1.0, 1.0);
     const int n = 60, kl = 5, ku = 4;
-    for (double threshold : {0.5, 0.1, 0.01}) {
+    for (double threshold : {0.5, 0.1, 0.01})
+    {
         BandedLU lu;
         lu.setPivotThreshold(threshold);
         lu.reset(n, kl, ku);
         Eigen::MatrixXd dense = Eigen::MatrixXd::Zero(n, n);
-        for (int i = 0; i < n; ++i) {
-            for (int j = std::max(0, i - kl); j <= std::min(n - 1, i + ku); ++j) {
+        for (int i = 0; i < n; ++i)
+        {
+            for (int j = std::max(0, i - kl); j <= std::min(n - 1, i + ku); ++j)
+            {
                 // diagonal often smaller than its column: some exchanges, some not
                 const double value = (i == j && i % 3 == 0) ? 0.05 * uniform(generator) : uniform(generator);
                 lu.add(i, j, value);
@@ -74,7 +80,8 @@ TEST(BandedLU, ReportsSingularMatrix)
     EXPECT_FALSE(lu.factorize());
 }
 
-namespace {
+namespace
+{
 
 // The bending stencil (1, -4, 6, -4, 1) plus the identity: symmetric positive definite,
 // and its LU without exchanges has multipliers of about 2 (the stencil is the square of
@@ -83,10 +90,13 @@ void addBendingMatrix(BandedLU& lu, Eigen::MatrixXd& dense, int n)
 {
     const double stencil[5] = {1.0, -4.0, 6.0, -4.0, 1.0};
     dense = Eigen::MatrixXd::Zero(n, n);
-    for (int i = 0; i < n; ++i) {
-        for (int o = -2; o <= 2; ++o) {
+    for (int i = 0; i < n; ++i)
+    {
+        for (int o = -2; o <= 2; ++o)
+        {
             const int j = i + o;
-            if (j < 0 || j >= n) continue;
+            if (j < 0 || j >= n)
+                continue;
             const double value = 100.0 * stencil[o + 2] + (o == 0 ? 1.0 : 0.0);
             lu.add(i, j, value);
             dense(i, j) = value;
@@ -94,24 +104,29 @@ void addBendingMatrix(BandedLU& lu, Eigen::MatrixXd& dense, int n)
     }
 }
 
-}  // namespace
+} // namespace
 
 TEST(BandedLU, ThresholdKeepsDiagonalPivotsOfBendingMatrix)
 {
     const int n = 40;
     Eigen::VectorXd b(n);
-    for (int i = 0; i < n; ++i) b(i) = std::sin(0.3 * i) + 0.1 * i;
-    for (double threshold : {1.0, 0.1}) {
+    for (int i = 0; i < n; ++i)
+        b(i) = std::sin(0.3 * i) + 0.1 * i;
+    for (double threshold : {1.0, 0.1})
+    {
         BandedLU lu;
         lu.setPivotThreshold(threshold);
         lu.reset(n, 2, 2);
         Eigen::MatrixXd dense;
         addBendingMatrix(lu, dense, n);
         ASSERT_TRUE(lu.factorize());
-        if (threshold == 1.0) {
-            EXPECT_GT(lu.rowExchanges(), n / 2);  // partial pivoting: about every row
-        } else {
-            EXPECT_EQ(lu.rowExchanges(), 0);  // all multipliers are below 10 here
+        if (threshold == 1.0)
+        {
+            EXPECT_GT(lu.rowExchanges(), n / 2); // partial pivoting: about every row
+        }
+        else
+        {
+            EXPECT_EQ(lu.rowExchanges(), 0); // all multipliers are below 10 here
         }
         Eigen::VectorXd x = b;
         lu.solveInPlace(x);
@@ -124,7 +139,8 @@ TEST(BandedLU, ThresholdStillExchangesForZeroAndSmallPivots)
 {
     // [[0 1] [1 1]] needs an exchange at any threshold, and so does a diagonal
     // entry a thousand times smaller than the one below it at threshold 0.1.
-    for (double small : {0.0, 1e-3}) {
+    for (double small : {0.0, 1e-3})
+    {
         BandedLU lu;
         lu.setPivotThreshold(0.1);
         lu.reset(2, 1, 1);
@@ -135,7 +151,7 @@ TEST(BandedLU, ThresholdStillExchangesForZeroAndSmallPivots)
         ASSERT_TRUE(lu.factorize());
         EXPECT_EQ(lu.rowExchanges(), 1);
         Eigen::VectorXd x(2);
-        x << 1.0, 3.0;  // expected values: Cramer's rule
+        x << 1.0, 3.0; // expected values: Cramer's rule
         lu.solveInPlace(x);
         const double det = small - 1.0;
         EXPECT_NEAR(x(0), (1.0 * 1.0 - 1.0 * 3.0) / det, 1e-14);
@@ -158,7 +174,8 @@ TEST(BandedLU, AssignMatrixCopiesTheMatrixNotTheFactors)
     fresh.reset(n, 2, 2);
     addBendingMatrix(fresh, dense, n);
     reused.reset(n, 2, 2);
-    for (int i = 0; i < n; ++i) reused.add(i, i, 1.0 + i);
+    for (int i = 0; i < n; ++i)
+        reused.add(i, i, 1.0 + i);
     ASSERT_TRUE(reused.factorize());
     reused.assignMatrix(prepared);
     EXPECT_EQ(reused.coeff(5, 3), dense(5, 3));
@@ -167,6 +184,6 @@ TEST(BandedLU, AssignMatrixCopiesTheMatrixNotTheFactors)
     Eigen::VectorXd a = Eigen::VectorXd::LinSpaced(n, -1.0, 2.0), b = a;
     reused.solveInPlace(a);
     fresh.solveInPlace(b);
-    EXPECT_EQ(a, b);  // same operations on the same numbers: same bits
+    EXPECT_EQ(a, b); // same operations on the same numbers: same bits
     EXPECT_LT((dense * a - Eigen::VectorXd::LinSpaced(n, -1.0, 2.0)).norm(), 1e-10);
 }

@@ -6,7 +6,8 @@
 using namespace dropletFiber;
 using namespace dropletFiber::test;
 
-namespace {
+namespace
+{
 
 // Static tip deflection: backward Euler with a step far beyond every time scale of
 // the fiber is a Newton solve of the static equilibrium.
@@ -23,7 +24,7 @@ double staticTipDeflection(int segments, double length, double* segmentError)
     return -fibers[0].positions()(2, segments);
 }
 
-}  // namespace
+} // namespace
 
 TEST(Cantilever, OwnWeightDeflectionConvergesSecondOrder)
 {
@@ -37,7 +38,8 @@ TEST(Cantilever, OwnWeightDeflectionConvergesSecondOrder)
     const double expected = q * std::pow(length, 4) / (8.0 * EI);
 
     std::vector<double> errors;
-    for (int segments : {25, 50, 100}) {
+    for (int segments : {25, 50, 100})
+    {
         double segmentError = 0.0;
         const double tip = staticTipDeflection(segments, length, &segmentError);
         errors.push_back(std::abs(tip - expected) / expected);
@@ -58,7 +60,7 @@ TEST(Cantilever, LargerDeflectionWithinOnePercent)
     const FiberMaterial material = glassFiber();
     const double q = material.baseLineDensity() * 9.81;
     const double EI = material.bendingStiffness();
-    const double length = std::cbrt(8.0 * EI * 0.02 / q);  // tip/L = 0.02
+    const double length = std::cbrt(8.0 * EI * 0.02 / q); // tip/L = 0.02
     const double expected = q * std::pow(length, 4) / (8.0 * EI);
     double segmentError = 0.0;
     const double tip = staticTipDeflection(50, length, &segmentError);
@@ -67,7 +69,8 @@ TEST(Cantilever, LargerDeflectionWithinOnePercent)
     EXPECT_LT(segmentError, 1e-8);
 }
 
-namespace {
+namespace
+{
 
 // Largest lateral tip excursion / L under a compressive dead tip load of
 // loadFactor * pi^2 EI / (4 L^2), starting straight with a tiny lateral velocity.
@@ -81,13 +84,14 @@ double bucklingExcursion(double loadFactor, double* segmentError)
     const double omega1 = 3.516 * std::sqrt(EI / (sigma * std::pow(length, 4)));
     const double period1 = 2.0 * M_PI / omega1;
 
-    Fiber fiber(straightPoints(segments, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), length),
-                material, EndCondition::clampedEnd(), EndCondition::freeEnd());
+    Fiber fiber(straightPoints(segments, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), length), material,
+                EndCondition::clampedEnd(), EndCondition::freeEnd());
     Eigen::Matrix3Xd force = Eigen::Matrix3Xd::Zero(3, segments + 1);
     force(0, segments) = -loadFactor * M_PI * M_PI * EI / (4.0 * length * length);
     fiber.setExternalForce(force);
     Eigen::Matrix3Xd velocity = Eigen::Matrix3Xd::Zero(3, segments + 1);
-    for (int i = 0; i <= segments; ++i) {
+    for (int i = 0; i <= segments; ++i)
+    {
         const double s = static_cast<double>(i) / segments;
         velocity(1, i) = 1e-6 * length * omega1 * s * s;
     }
@@ -98,16 +102,15 @@ double bucklingExcursion(double loadFactor, double* segmentError)
     FiberSolver solver(settings);
     std::vector<Fiber> fibers{fiber};
     double excursion = 0.0;
-    const RunSummary summary = run(solver, fibers, period1 / 40.0, 40 * 25, AirSample(),
-                                   [&](int, const StepReport&) {
-                                       excursion = std::max(excursion,
-                                                            std::abs(fibers[0].positions()(1, segments)));
-                                   });
+    const RunSummary summary
+        = run(solver, fibers, period1 / 40.0, 40 * 25, AirSample(),
+              [&](int, const StepReport&)
+              { excursion = std::max(excursion, std::abs(fibers[0].positions()(1, segments))); });
     *segmentError = summary.worstSegmentError;
     return excursion / length;
 }
 
-}  // namespace
+} // namespace
 
 TEST(Cantilever, BucklesAboveEulerLoadOnly)
 {
@@ -117,11 +120,12 @@ TEST(Cantilever, BucklesAboveEulerLoadOnly)
     const double above = bucklingExcursion(1.05, &segmentError);
     EXPECT_LT(segmentError, 1e-8);
     std::printf("buckling: max tip excursion / L at 0.95 P_cr %.3e, at 1.05 P_cr %.3e\n", below, above);
-    EXPECT_LT(below, 1e-4);   // stays straight (perturbation ~1e-6 L)
-    EXPECT_GT(above, 0.1);    // buckles
+    EXPECT_LT(below, 1e-4); // stays straight (perturbation ~1e-6 L)
+    EXPECT_GT(above, 0.1);  // buckles
 }
 
-namespace {
+namespace
+{
 
 // Cantilever mode shape (beam theory), beta L = root of 1 + cos cosh = 0.
 double modeShape(double betaL, double s)
@@ -156,24 +160,26 @@ double measuredFrequencyRatio(double betaL, double expectedSquare, int segments)
     std::vector<Fiber> fibers{fiber};
     std::vector<double> times{0.0}, signal{reference.dot(m.cwiseProduct(reference))};
     const double dt = period / 200.0;
-    const RunSummary summary =
-        run(solver, fibers, dt, 200 * 6, AirSample(), [&](int k, const StepReport&) {
-            times.push_back((k + 1) * dt);
-            const Eigen::VectorXd lateral = fibers[0].positions().row(1).transpose();
-            signal.push_back(lateral.dot(m.cwiseProduct(reference)));
-        });
+    const RunSummary summary = run(solver, fibers, dt, 200 * 6, AirSample(),
+                                   [&](int k, const StepReport&)
+                                   {
+                                       times.push_back((k + 1) * dt);
+                                       const Eigen::VectorXd lateral
+                                           = fibers[0].positions().row(1).transpose();
+                                       signal.push_back(lateral.dot(m.cwiseProduct(reference)));
+                                   });
     EXPECT_LT(summary.worstSegmentError, 1e-8);
-    return period / meanPeriod(times, signal);  // omega_measured / omega_expected
+    return period / meanPeriod(times, signal); // omega_measured / omega_expected
 }
 
-}  // namespace
+} // namespace
 
 TEST(Cantilever, FirstTwoBendingFrequencies)
 {
     const double ratio1 = measuredFrequencyRatio(1.87510407, 3.516, 50);
     const double ratio2 = measuredFrequencyRatio(4.69409113, 22.03, 50);
-    std::printf("cantilever frequencies: omega1/theory - 1 = %.3e, omega2/theory - 1 = %.3e\n",
-                ratio1 - 1.0, ratio2 - 1.0);
+    std::printf("cantilever frequencies: omega1/theory - 1 = %.3e, omega2/theory - 1 = %.3e\n", ratio1 - 1.0,
+                ratio2 - 1.0);
     EXPECT_NEAR(ratio1, 1.0, 0.01);
     EXPECT_NEAR(ratio2, 1.0, 0.02);
 }

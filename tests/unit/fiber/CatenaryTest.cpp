@@ -13,7 +13,8 @@ TEST(Catenary, SagAndSupportTension)
     const double halfSpan = 0.4 * length;
     // Catenary parameter by bisection on f(c) = 2 c sinh(a/c) - L (decreasing in c).
     double lo = 0.01 * length, hi = 10.0 * length;
-    for (int k = 0; k < 200; ++k) {
+    for (int k = 0; k < 200; ++k)
+    {
         const double c = 0.5 * (lo + hi);
         (2.0 * c * std::sinh(halfSpan / c) > length ? lo : hi) = c;
     }
@@ -30,7 +31,8 @@ TEST(Catenary, SagAndSupportTension)
     Eigen::Matrix3Xd points(3, segments + 1);
     const double l = length / segments;
     points.col(0).setZero();
-    for (int i = 1; i <= segments; ++i) {
+    for (int i = 1; i <= segments; ++i)
+    {
         const double down = i <= segments / 2 ? -0.6 : 0.6;
         points.col(i) = points.col(i - 1) + l * Eigen::Vector3d(0.8, 0.0, down);
     }

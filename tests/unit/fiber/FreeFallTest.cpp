@@ -5,7 +5,8 @@
 using namespace dropletFiber;
 using namespace dropletFiber::test;
 
-namespace {
+namespace
+{
 
 void checkFreeFall(Fiber fiber, const char* label)
 {
@@ -24,21 +25,22 @@ void checkFreeFall(Fiber fiber, const char* label)
     const double comError = (com - com0 - expectedDrop).norm() / expectedDrop.norm();
     const Eigen::Matrix3Xd shape = fibers[0].positions().colwise() - com;
     const double shapeError = (shape - shape0).cwiseAbs().maxCoeff() / fibers[0].length();
-    std::printf("free fall (%s): centre-of-mass error %.3e, shape error %.3e, segment error %.3e\n",
-                label, comError, shapeError, summary.worstSegmentError);
+    std::printf("free fall (%s): centre-of-mass error %.3e, shape error %.3e, segment error %.3e\n", label,
+                comError, shapeError, summary.worstSegmentError);
     EXPECT_LT(comError, 1e-9);
     EXPECT_LT(shapeError, 1e-9);
     EXPECT_LT(summary.worstSegmentError, 1e-8);
 }
 
-}  // namespace
+} // namespace
 
 TEST(FreeFall, LimpCurvedFiberKeepsShape)
 {
     // An arc (no bending stiffness: any shape is stress-free).
     const int segments = 50;
     Eigen::Matrix3Xd points(3, segments + 1);
-    for (int i = 0; i <= segments; ++i) {
+    for (int i = 0; i <= segments; ++i)
+    {
         const double phi = 1.5 * i / segments;
         points.col(i) = Eigen::Vector3d(0.01 * std::cos(phi), 0.01 * std::sin(phi), 0.003 * phi);
     }
@@ -49,8 +51,8 @@ TEST(FreeFall, LimpCurvedFiberKeepsShape)
 
 TEST(FreeFall, StiffStraightTiltedFiberKeepsShape)
 {
-    checkFreeFall(Fiber(straightPoints(50, Eigen::Vector3d(0.1, 0.2, 0.3), Eigen::Vector3d(1.0, 0.5, 2.0),
-                                       0.02),
-                        glassFiber()),
-                  "stiff straight");
+    checkFreeFall(
+        Fiber(straightPoints(50, Eigen::Vector3d(0.1, 0.2, 0.3), Eigen::Vector3d(1.0, 0.5, 2.0), 0.02),
+              glassFiber()),
+        "stiff straight");
 }

@@ -14,7 +14,8 @@ TEST(HangingFiber, TensionEqualsWeightBelow)
     Fiber fiber(straightPoints(segments, Eigen::Vector3d::Zero(), -Eigen::Vector3d::UnitZ(), length),
                 glassFiber(), EndCondition::pinnedEnd(), EndCondition::freeEnd());
     // Non-uniform captured mass, so the check is not just a linear profile.
-    for (int j = 0; j < segments; ++j) {
+    for (int j = 0; j < segments; ++j)
+    {
         fiber.mutableState().segmentCapturedMass(j) = 1e-12 * (1.0 + (j % 7));
     }
     std::vector<Fiber> fibers{fiber};
@@ -26,7 +27,8 @@ TEST(HangingFiber, TensionEqualsWeightBelow)
     const Eigen::VectorXd m = hung.pointMasses();
     const double g = settings.gravity.norm();
     double worst = 0.0;
-    for (int j = 0; j < segments; ++j) {
+    for (int j = 0; j < segments; ++j)
+    {
         const double below = m.tail(segments - j).sum();
         worst = std::max(worst, std::abs(hung.tension()(j) - g * below) / (g * below));
     }

@@ -30,7 +30,8 @@ std::vector<double> randomStep(const IndexBox& box, std::mt19937& rng)
     for (int k = box.lo[2]; k <= box.hi[2]; ++k)
         for (int j = box.lo[1]; j <= box.hi[1]; ++j)
             for (int i = box.lo[0]; i <= box.hi[0]; ++i)
-                for (int q = 0; q < nq; ++q) step[flat(i, j, k) * nq + static_cast<std::size_t>(q)] = value(rng);
+                for (int q = 0; q < nq; ++q)
+                    step[flat(i, j, k) * nq + static_cast<std::size_t>(q)] = value(rng);
     return step;
 }
 
@@ -59,7 +60,8 @@ TEST(AveragingWindow, NodeTotalAndTotalAreTheChronologicalSumBitForBit)
     {
         const IndexBox box = randomBox(rng);
         history.push_back(randomStep(box, rng));
-        if (static_cast<int>(history.size()) > length) history.pop_front();
+        if (static_cast<int>(history.size()) > length)
+            history.pop_front();
         window.push(history.back(), box);
 
         // Read node by node first (the window is stale here; twice, the second time from
@@ -75,7 +77,8 @@ TEST(AveragingWindow, NodeTotalAndTotalAreTheChronologicalSumBitForBit)
                 for (std::size_t q = 0; q < nq; ++q)
                 {
                     double expected = 0.0;
-                    for (const auto& s : history) expected += s[n * nq + q];
+                    for (const auto& s : history)
+                        expected += s[n * nq + q];
                     ASSERT_EQ(sums[q], expected)
                         << "step " << step << " read " << read << " node " << n << " quantity " << q;
                 }
@@ -87,7 +90,8 @@ TEST(AveragingWindow, NodeTotalAndTotalAreTheChronologicalSumBitForBit)
             for (std::size_t v = 0; v < total.size(); ++v)
             {
                 double expected = 0.0;
-                for (const auto& s : history) expected += s[v];
+                for (const auto& s : history)
+                    expected += s[v];
                 ASSERT_EQ(total[v], expected) << "step " << step << " value " << v;
             }
         }
@@ -104,7 +108,8 @@ TEST(AveragingWindow, RestoredWindowGivesTheSameTotals)
         const IndexBox box = randomBox(rng);
         steps.emplace_back(box, randomStep(box, rng));
     }
-    for (int s = 0; s < 5; ++s) continuous.push(steps[s].second, steps[s].first);
+    for (int s = 0; s < 5; ++s)
+        continuous.push(steps[s].second, steps[s].first);
 
     AveragingWindow restored(nodes, nq, 3);
     restored.restore(continuous.save());
@@ -115,7 +120,8 @@ TEST(AveragingWindow, RestoredWindowGivesTheSameTotals)
         double a[nq], b[nq];
         continuous.nodeTotal(flat(3, 2, 1), a);
         restored.nodeTotal(flat(3, 2, 1), b);
-        for (int q = 0; q < nq; ++q) EXPECT_EQ(a[q], b[q]);
+        for (int q = 0; q < nq; ++q)
+            EXPECT_EQ(a[q], b[q]);
     }
     EXPECT_TRUE(continuous.total() == restored.total());
 }
@@ -134,10 +140,12 @@ TEST(AveragingWindow, RestoreForgetsTheNodeTotalsOfTheWindowsOwnSteps)
     {
         ahead.push(randomStep(whole, rng), whole);
         double sums[nq];
-        for (std::size_t n = 0; n < nodeCount; ++n) ahead.nodeTotal(n, sums);
+        for (std::size_t n = 0; n < nodeCount; ++n)
+            ahead.nodeTotal(n, sums);
     }
     AveragingWindow behind(nodes, nq, 3);
-    for (int s = 0; s < 7; ++s) behind.push(randomStep(whole, rng), whole);
+    for (int s = 0; s < 7; ++s)
+        behind.push(randomStep(whole, rng), whole);
 
     // ahead goes back to step 7 of another history; the same step 8 enters both
     ahead.restore(behind.save());
@@ -149,6 +157,7 @@ TEST(AveragingWindow, RestoreForgetsTheNodeTotalsOfTheWindowsOwnSteps)
         double a[nq], b[nq];
         ahead.nodeTotal(n, a);
         behind.nodeTotal(n, b);
-        for (int q = 0; q < nq; ++q) ASSERT_EQ(a[q], b[q]) << "node " << n << " quantity " << q;
+        for (int q = 0; q < nq; ++q)
+            ASSERT_EQ(a[q], b[q]) << "node " << n << " quantity " << q;
     }
 }

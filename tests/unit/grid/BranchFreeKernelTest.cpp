@@ -44,7 +44,8 @@ void erfcScaledPartsFourLanes(const double* x, double* numerator, double* denomi
 void erfcScaledPartsOneIntervalFourLanes(const double* x, double* numerator, double* denominator)
 {
     const Lanes v = loadLanes(x);
-    const FractionOf<Lanes> parts[3] = {erfcScaledPartsSmall(v), erfcScaledPartsMiddle(v), erfcScaledPartsLarge(v)};
+    const FractionOf<Lanes> parts[3]
+        = {erfcScaledPartsSmall(v), erfcScaledPartsMiddle(v), erfcScaledPartsLarge(v)};
     for (int lane = 0; lane < laneCount; ++lane)
     {
         const int interval = erfcScaledInterval(x[lane]);
@@ -59,10 +60,10 @@ DROPLETFIBER_AVX2_END
 
 using namespace dropletFiber;
 
-#define SKIP_UNLESS_BATCHED()                                                                              \
-    if (!PathWeightBatch::cpuSupported())                                                                \
-    {                                                                                                    \
-        GTEST_SKIP() << "this CPU has no AVX2 + FMA (or this build no batched kernel): nothing to test";   \
+#define SKIP_UNLESS_BATCHED()                                                                                \
+    if (!PathWeightBatch::cpuSupported())                                                                    \
+    {                                                                                                        \
+        GTEST_SKIP() << "this CPU has no AVX2 + FMA (or this build no batched kernel): nothing to test";     \
     }
 
 #if DROPLETFIBER_BATCHED_KERNEL
@@ -101,7 +102,8 @@ TEST(BranchFreeKernel, ExpWithinOneUlpOfExpl)
         worst = std::max(worst, error);
         ASSERT_LE(error, maxExpUlps) << "x = " << x;
     }
-    for (double x : {0.0, -0.0, 1e-300, -1e-300, 1e-17, -1e-17, 0.5 * M_LN2, -0.5 * M_LN2, M_LN2, -M_LN2, 1.0, -1.0})
+    for (double x :
+         {0.0, -0.0, 1e-300, -1e-300, 1e-17, -1e-17, 0.5 * M_LN2, -0.5 * M_LN2, M_LN2, -M_LN2, 1.0, -1.0})
     {
         ASSERT_LE(ulps(branchFreeExp(x), std::exp(static_cast<long double>(x))), maxExpUlps) << x;
     }
@@ -156,13 +158,15 @@ TEST(BranchFreeKernel, ErfcScaledMatchesLongDoubleReference)
             ASSERT_EQ(singleDenominators[lane], denominators[lane]) << arguments[lane];
         }
         // g erfcScaled(x) with g = exp(-x^2) and gAtZero = 1: erfc(x) itself.
-        const FractionOf<double> product = gaussianErfcScaled(x, parts, static_cast<double>(std::exp(-xl * xl)), 1.0);
+        const FractionOf<double> product
+            = gaussianErfcScaled(x, parts, static_cast<double>(std::exp(-xl * xl)), 1.0);
         const long double erfcReference = std::erfc(xl);
         if (erfcReference > 1e-290L)
         {
-            ASSERT_LT(std::abs((static_cast<long double>(product.numerator) / product.denominator - erfcReference)
-                               / erfcReference),
-                      4e-15L)
+            ASSERT_LT(
+                std::abs((static_cast<long double>(product.numerator) / product.denominator - erfcReference)
+                         / erfcReference),
+                4e-15L)
                 << x;
         }
     }
@@ -173,7 +177,8 @@ TEST(BranchFreeKernel, ErfcScaledMatchesLongDoubleReference)
     {
         const FractionOf<double> parts = erfcScaledParts(x);
         const double z = 1.0 / (2.0 * x * x);
-        const double asymptotic = (1.0 - z + 3.0 * z * z - 15.0 * z * z * z + 105.0 * z * z * z * z) / (x * std::sqrt(M_PI));
+        const double asymptotic
+            = (1.0 - z + 3.0 * z * z - 15.0 * z * z * z + 105.0 * z * z * z * z) / (x * std::sqrt(M_PI));
         EXPECT_NEAR(parts.numerator / parts.denominator / asymptotic, 1.0, 1e-14) << x;
     }
 #endif
@@ -189,7 +194,8 @@ TEST(BranchFreeKernel, FourLanesAgreeWithScalar)
     const auto relative = [](double a, double b) { return std::abs(a - b) / std::abs(b); };
     for (int i = 0; i < 100000; ++i)
     {
-        double e[laneCount], x[laneCount], expLanes[laneCount], numerators[laneCount], denominators[laneCount];
+        double e[laneCount], x[laneCount], expLanes[laneCount], numerators[laneCount],
+            denominators[laneCount];
         for (int lane = 0; lane < laneCount; ++lane)
         {
             e[lane] = exponent(random);
@@ -201,7 +207,8 @@ TEST(BranchFreeKernel, FourLanesAgreeWithScalar)
         {
             ASSERT_LE(relative(expLanes[lane], branchFreeExp(e[lane])), 5e-16) << e[lane];
             const FractionOf<double> scalar = erfcScaledParts(x[lane]);
-            ASSERT_LE(relative(numerators[lane] / denominators[lane], scalar.numerator / scalar.denominator), 5e-16)
+            ASSERT_LE(relative(numerators[lane] / denominators[lane], scalar.numerator / scalar.denominator),
+                      5e-16)
                 << x[lane];
         }
     }

@@ -40,7 +40,8 @@ TEST(DensityGridStream, UniformSprayGivesAnalyticDensity)
             const Eigen::Vector3d g = spec.nodePosition(i, j, 0);
             // Away from the edges: more than reach + 1 mm from the box boundary.
             const double margin = 4e-3;
-            if (g.x() < margin || g.x() > stream.width - margin || g.y() < margin || g.y() > stream.height - margin)
+            if (g.x() < margin || g.x() > stream.width - margin || g.y() < margin
+                || g.y() > stream.height - margin)
             {
                 continue;
             }

@@ -157,7 +157,8 @@ TEST(DensityGrid, ParcelCrossingTheBoundaryGivesItsTimeFraction)
 {
     DensityGrid grid(grid2D());
     // Path from x = -2 mm to x = +3 mm: 3/5 of the step inside the box.
-    const Parcel p = makeParcel(Eigen::Vector3d(3e-3, 5e-3, 5e-4), Eigen::Vector3d(50.0, 0.0, 0.0), 5e-5, 200.0);
+    const Parcel p
+        = makeParcel(Eigen::Vector3d(3e-3, 5e-3, 5e-4), Eigen::Vector3d(50.0, 0.0, 0.0), 5e-5, 200.0);
     grid.deposit(p, 1e-4);
     const double mass = massOf(200.0, 5e-5, 1000.0);
     EXPECT_NEAR(stepMass(grid), 0.6 * mass, 1e-12 * mass);
@@ -198,7 +199,8 @@ TEST(DensityGrid, ParcelReachingNoNodeFallsBackToBilinearWeights)
 
     // A moving n = 1 parcel crossing several cells: mass conserved, spread along the path.
     DensityGrid moving(spec);
-    moving.deposit(makeParcel(Eigen::Vector3d(15.2e-3, 7.6e-3, 5e-4), Eigen::Vector3d(50.0, 0.0, 0.0), 2e-6, 1.0), 1e-4);
+    moving.deposit(
+        makeParcel(Eigen::Vector3d(15.2e-3, 7.6e-3, 5e-4), Eigen::Vector3d(50.0, 0.0, 0.0), 2e-6, 1.0), 1e-4);
     EXPECT_EQ(moving.stepStatistics().parcelsFallback, 1);
     EXPECT_NEAR(stepMass(moving), mass, 1e-14 * mass);
     EXPECT_LE(moving.stepBox().lo[0], 10);
@@ -220,7 +222,8 @@ TEST(DensityGrid, StationaryParcelWeightsFollowPhi)
     const double rMax = rp * n;
     const double rMin = rp * std::sqrt(2.0 * std::sqrt(3.0) * n / pi);
     const double alpha = rMax * rMax / (2.0 * std::pow(0.025 * rMax + 0.975 * rMin, 2));
-    auto phi = [&](double d) { return d < rMax ? std::exp(-alpha * d * d / (rMax * rMax)) - std::exp(-alpha) : 0.0; };
+    auto phi = [&](double d)
+    { return d < rMax ? std::exp(-alpha * d * d / (rMax * rMax)) - std::exp(-alpha) : 0.0; };
     double phiSum = 0.0;
     for (int j = 0; j < spec.nodes[1]; ++j)
         for (int i = 0; i < spec.nodes[0]; ++i)
@@ -263,10 +266,11 @@ TEST(DensityGrid, NegligibleWeightsLeftOutAreBelowTheBound)
             const double n = 150.0 + 850.0 * unit(rng); // r_max 1.5-10 mm
             const double rp = 1e-5;
             const Eigen::Vector3d centre = 0.5 * (spec.lower + spec.upper);
-            const Eigen::Vector3d position
-                = centre + 2e-3 * Eigen::Vector3d(unit(rng) - 0.5, unit(rng) - 0.5, threeD ? unit(rng) - 0.5 : 0.0);
-            const Eigen::Vector3d velocity
-                = (p % 4 == 0) ? Eigen::Vector3d(Eigen::Vector3d::Zero()) : Eigen::Vector3d(20.0 * (unit(rng) - 0.5), 20.0 * (unit(rng) - 0.5), 0.0);
+            const Eigen::Vector3d position = centre
+                + 2e-3 * Eigen::Vector3d(unit(rng) - 0.5, unit(rng) - 0.5, threeD ? unit(rng) - 0.5 : 0.0);
+            const Eigen::Vector3d velocity = (p % 4 == 0)
+                ? Eigen::Vector3d(Eigen::Vector3d::Zero())
+                : Eigen::Vector3d(20.0 * (unit(rng) - 0.5), 20.0 * (unit(rng) - 0.5), 0.0);
             const Parcel parcel = makeParcel(position, velocity, 2.0 * rp, n);
             cut.deposit(parcel, 1e-4);
             exact.deposit(parcel, 1e-4);
@@ -305,8 +309,13 @@ TEST(DensityGrid, MeanRadiiNumberAndMassWeighted)
     const GridSpec spec = grid2D();
     DensityGrid grid(spec);
     const Eigen::Vector3d node = spec.nodePosition(10, 5, 0);
-    struct Drops { double n, r; Eigen::Vector3d u; };
-    const Drops drops[] = {{3.0, 2e-6, Eigen::Vector3d(1, 0, 0)}, {1.0, 5e-6, Eigen::Vector3d(0, 2, 0)},
+    struct Drops
+    {
+        double n, r;
+        Eigen::Vector3d u;
+    };
+    const Drops drops[] = {{3.0, 2e-6, Eigen::Vector3d(1, 0, 0)},
+                           {1.0, 5e-6, Eigen::Vector3d(0, 2, 0)},
                            {2.0, 1e-6, Eigen::Vector3d(0, 0, 3)}};
     double sn = 0, snr = 0, sm = 0, smr = 0;
     Eigen::Vector3d smu = Eigen::Vector3d::Zero();
@@ -326,10 +335,10 @@ TEST(DensityGrid, MeanRadiiNumberAndMassWeighted)
     const double volume = 1e-3 * 1e-3 * 1e-3;
     EXPECT_NEAR(f.rho, sm / volume, 1e-12 * sm / volume);
     EXPECT_NEAR(f.numberDensity, sn / volume, 1e-12 * sn / volume);
-    EXPECT_NEAR(f.rMeanNumber, snr / sn, 1e-12 * snr / sn);  // eq. 10
-    EXPECT_NEAR(f.rMeanMass, smr / sm, 1e-12 * smr / sm);    // sum n m r / sum n m
+    EXPECT_NEAR(f.rMeanNumber, snr / sn, 1e-12 * snr / sn); // eq. 10
+    EXPECT_NEAR(f.rMeanMass, smr / sm, 1e-12 * smr / sm);   // sum n m r / sum n m
     EXPECT_LT((f.velocity - smu / sm).norm(), 1e-12);
-    EXPECT_GT(f.rMeanMass, f.rMeanNumber);                   // polydisperse: mass favours big drops
+    EXPECT_GT(f.rMeanMass, f.rMeanNumber); // polydisperse: mass favours big drops
     // The neighbours got nothing.
     EXPECT_EQ(grid.nodeValue(11, 5, 0).rho, 0.0);
     EXPECT_EQ(grid.nodeValue(11, 5, 0).rMeanNumber, 0.0);
@@ -360,7 +369,8 @@ TEST(DensityGrid, WindowAveragesTheLastWSteps)
             sum += masses[k];
         }
         const double expected = sum / (volume * static_cast<double>(s));
-        EXPECT_NEAR(grid.nodeValue(4, 4, 0).rho, expected, 1e-12 * (expected + 1e-30)) << "step " << masses.size();
+        EXPECT_NEAR(grid.nodeValue(4, 4, 0).rho, expected, 1e-12 * (expected + 1e-30))
+            << "step " << masses.size();
         EXPECT_EQ(grid.stepsInWindow(), static_cast<int>(s));
     }
     // After three empty steps the window is exactly empty (no add/subtract residue).
@@ -505,7 +515,8 @@ TEST(DensityGrid, SumOverRanksEqualsSerial)
     EXPECT_TRUE(rank0.windowTotals() == rank1.windowTotals());
     for (std::size_t k = 0; k < serial.windowTotals().size(); ++k)
     {
-        EXPECT_NEAR(rank0.windowTotals()[k], serial.windowTotals()[k], 1e-13 * std::abs(serial.windowTotals()[k]));
+        EXPECT_NEAR(rank0.windowTotals()[k], serial.windowTotals()[k],
+                    1e-13 * std::abs(serial.windowTotals()[k]));
     }
 }
 
@@ -522,11 +533,15 @@ TEST(DensityGrid, RejectsInvalidInput)
 {
     DensityGrid grid(grid2D());
     const Eigen::Vector3d p(0.01, 0.01, 5e-4);
-    EXPECT_THROW(grid.deposit(makeParcel(p, Eigen::Vector3d::Zero(), -1e-5, 10.0), 1e-4), std::invalid_argument);
-    EXPECT_THROW(grid.deposit(makeParcel(Eigen::Vector3d(NAN, 0, 0), Eigen::Vector3d::Zero(), 1e-5, 10.0), 1e-4),
+    EXPECT_THROW(grid.deposit(makeParcel(p, Eigen::Vector3d::Zero(), -1e-5, 10.0), 1e-4),
                  std::invalid_argument);
-    EXPECT_THROW(grid.deposit(makeParcel(p, Eigen::Vector3d::Zero(), 1e-5, -1.0), 1e-4), std::invalid_argument);
-    EXPECT_THROW(grid.deposit(makeParcel(p, Eigen::Vector3d::Zero(), 1e-5, 1.0), -1e-4), std::invalid_argument);
+    EXPECT_THROW(
+        grid.deposit(makeParcel(Eigen::Vector3d(NAN, 0, 0), Eigen::Vector3d::Zero(), 1e-5, 10.0), 1e-4),
+        std::invalid_argument);
+    EXPECT_THROW(grid.deposit(makeParcel(p, Eigen::Vector3d::Zero(), 1e-5, -1.0), 1e-4),
+                 std::invalid_argument);
+    EXPECT_THROW(grid.deposit(makeParcel(p, Eigen::Vector3d::Zero(), 1e-5, 1.0), -1e-4),
+                 std::invalid_argument);
     grid.deposit(makeParcel(p, Eigen::Vector3d::Zero(), 1e-5, 0.0), 1e-4); // empty parcel: skipped
     EXPECT_EQ(grid.stepStatistics().parcelsEmpty, 1);
     GridSpec bad = grid2D();

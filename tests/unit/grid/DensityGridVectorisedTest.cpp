@@ -48,15 +48,16 @@ GridSpec gridSpec(int dimension)
 // random place of the grid box (inside: its whole path, the kernel may reach beyond the
 // grid; otherwise anywhere, also a little outside), moving `pathLength` metres in a random
 // direction during dt.
-Parcel randomParcel(std::mt19937_64& random, const GridSpec& spec, int dimension, double reach, double pathLength,
-                    bool inside)
+Parcel randomParcel(std::mt19937_64& random, const GridSpec& spec, int dimension, double reach,
+                    double pathLength, bool inside)
 {
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     Parcel p;
     p.diameter = 2.0 * dropletRadius;
     p.nParticle = reach * spacing / dropletRadius * (0.7 + 0.6 * unit(random));
     p.rhoDroplet = 1000.0;
-    Eigen::Vector3d direction(unit(random) - 0.5, unit(random) - 0.5, dimension == 3 ? unit(random) - 0.5 : 0.0);
+    Eigen::Vector3d direction(unit(random) - 0.5, unit(random) - 0.5,
+                              dimension == 3 ? unit(random) - 0.5 : 0.0);
     direction.normalize();
     p.velocity = pathLength / dt * direction;
     const double margin = inside ? 1.05 * pathLength + 0.5 * spacing : -2.0 * spacing;
@@ -143,8 +144,8 @@ TEST(DensityGridVectorised, PortablePathIsThePerNodeDeposit)
             std::vector<double> omega(spec.nodeCount());
             for (int p = 0; p < 60; ++p, ++parcels)
             {
-                const Parcel parcel
-                    = randomParcel(random, spec, dimension, reach, randomPathLength(random, spec, dimension, reach, p), true);
+                const Parcel parcel = randomParcel(random, spec, dimension, reach,
+                                                   randomPathLength(random, spec, dimension, reach, p), true);
                 grid.deposit(parcel, dt);
 
                 const double radius = 0.5 * parcel.diameter;
@@ -158,7 +159,8 @@ TEST(DensityGridVectorised, PortablePathIsThePerNodeDeposit)
                     const int i = static_cast<int>(n % static_cast<std::size_t>(spec.nodes[0]));
                     const int j = static_cast<int>(n / static_cast<std::size_t>(spec.nodes[0])
                                                    % static_cast<std::size_t>(spec.nodes[1]));
-                    const int k = static_cast<int>(n / static_cast<std::size_t>(spec.nodes[0] * spec.nodes[1]));
+                    const int k
+                        = static_cast<int>(n / static_cast<std::size_t>(spec.nodes[0] * spec.nodes[1]));
                     const Eigen::Vector3d offset(spec.nodeCoordinate(0, i) - start.x(),
                                                  spec.nodeCoordinate(1, j) - start.y(),
                                                  spec.nodeCoordinate(2, k) - start.z());
@@ -185,7 +187,8 @@ TEST(DensityGridVectorised, PortablePathIsThePerNodeDeposit)
                     {
                         for (int q = 0; q < nQuantities; ++q)
                         {
-                            reference[n * nQuantities + static_cast<std::size_t>(q)] += omega[n] * inverseSum * totals[q];
+                            reference[n * nQuantities + static_cast<std::size_t>(q)]
+                                += omega[n] * inverseSum * totals[q];
                         }
                     }
                 }
@@ -194,7 +197,8 @@ TEST(DensityGridVectorised, PortablePathIsThePerNodeDeposit)
             const std::vector<double>& values = grid.stepValues();
             for (std::size_t v = 0; v < values.size(); ++v)
             {
-                ASSERT_EQ(values[v], reference[v]) << "dimension " << dimension << " reach " << reach << " value " << v;
+                ASSERT_EQ(values[v], reference[v])
+                    << "dimension " << dimension << " reach " << reach << " value " << v;
             }
             grid.commitStep();
         }
@@ -225,7 +229,7 @@ TEST(DensityGridVectorised, BatchedAgreesWithPortable)
     std::mt19937_64 random(20260612);
     long parcels = 0, movingParcels = 0;
     long differentParcels = 0; // not bit-identical: the batched loop ran
-    double worstRatio = 0.0; // |difference| / bound
+    double worstRatio = 0.0;   // |difference| / bound
     for (int dimension : {2, 3})
     {
         const GridSpec spec = gridSpec(dimension);
@@ -260,25 +264,30 @@ TEST(DensityGridVectorised, BatchedAgreesWithPortable)
                             for (int i = box.lo[0]; i <= box.hi[0]; ++i)
                                 for (int q = 0; q < nQuantities; ++q)
                                 {
-                                    const double value = portable.stepValues()[spec.flatIndex(i, j, k) * nQuantities
-                                                                               + static_cast<std::size_t>(q)];
+                                    const double value
+                                        = portable.stepValues()[spec.flatIndex(i, j, k) * nQuantities
+                                                                + static_cast<std::size_t>(q)];
                                     largest[q] = std::max(largest[q], std::abs(value));
                                 }
-                    const double largestWeight = stats.massDeposited > 0.0 ? largest[quantityMass] / stats.massDeposited : 0.0;
-                    const double relativeBound = epsilon * (1.0 + static_cast<double>(stats.nodesWeighted) * largestWeight);
+                    const double largestWeight
+                        = stats.massDeposited > 0.0 ? largest[quantityMass] / stats.massDeposited : 0.0;
+                    const double relativeBound
+                        = epsilon * (1.0 + static_cast<double>(stats.nodesWeighted) * largestWeight);
                     differentParcels += batched.stepValues() != portable.stepValues() ? 1 : 0;
                     for (std::size_t v = 0; v < portable.stepValues().size(); ++v)
                     {
                         const int q = static_cast<int>(v % nQuantities);
-                        const double difference = std::abs(batched.stepValues()[v] - portable.stepValues()[v]);
+                        const double difference
+                            = std::abs(batched.stepValues()[v] - portable.stepValues()[v]);
                         const double bound = relativeBound * largest[q];
                         if (bound > 0.0)
                         {
                             worstRatio = std::max(worstRatio, difference / bound);
                         }
                         ASSERT_LE(difference, bound)
-                            << "dimension " << dimension << " reach " << reach << " parcel " << p << " value " << v
-                            << ": batched " << batched.stepValues()[v] << " portable " << portable.stepValues()[v];
+                            << "dimension " << dimension << " reach " << reach << " parcel " << p << " value "
+                            << v << ": batched " << batched.stepValues()[v] << " portable "
+                            << portable.stepValues()[v];
                     }
                     batched.commitStep();
                     portable.commitStep();

@@ -44,8 +44,8 @@ TEST(MultilinearWeights, ReproduceLinearFieldsExactly)
     for (const GridSpec& spec : {grid3D(), grid2D()})
     {
         const bool planar = spec.flat(2);
-        std::uniform_real_distribution<double> ux(spec.lower.x(), spec.upper.x()), uy(spec.lower.y(), spec.upper.y()),
-            uz(spec.lower.z(), spec.upper.z());
+        std::uniform_real_distribution<double> ux(spec.lower.x(), spec.upper.x()),
+            uy(spec.lower.y(), spec.upper.y()), uz(spec.lower.z(), spec.upper.z());
         for (int n = 0; n < 2000; ++n)
         {
             Eigen::Vector3d p(ux(rng), uy(rng), uz(rng));
@@ -60,8 +60,10 @@ TEST(MultilinearWeights, ReproduceLinearFieldsExactly)
             {
                 const std::size_t node = w.node[static_cast<std::size_t>(c)];
                 const int i = static_cast<int>(node % static_cast<std::size_t>(spec.nodes[0]));
-                const int j = static_cast<int>((node / static_cast<std::size_t>(spec.nodes[0])) % static_cast<std::size_t>(spec.nodes[1]));
-                const int k = static_cast<int>(node / static_cast<std::size_t>(spec.nodes[0] * spec.nodes[1]));
+                const int j = static_cast<int>((node / static_cast<std::size_t>(spec.nodes[0]))
+                                               % static_cast<std::size_t>(spec.nodes[1]));
+                const int k
+                    = static_cast<int>(node / static_cast<std::size_t>(spec.nodes[0] * spec.nodes[1]));
                 EXPECT_GE(w.weight[static_cast<std::size_t>(c)], 0.0);
                 value += w.weight[static_cast<std::size_t>(c)] * linear(spec.nodePosition(i, j, k), planar);
                 weightSum += w.weight[static_cast<std::size_t>(c)];
@@ -88,14 +90,15 @@ TEST(MultilinearWeights, DensityGridSampleReproducesLinearRhoAndMomentumDensity)
                     const Eigen::Vector3d g = spec.nodePosition(i, j, k);
                     const double V = spec.nodeVolume();
                     const double rho = linear(g, planar);
-                    values.insert(values.end(), {V * rho, V * 10.0, V * 10.0 * 1e-5, V * rho * 2e-5,
-                                                 V * (0.1 + g.x()), V * (0.2 - g.y()), V * 0.3});
+                    values.insert(values.end(),
+                                  {V * rho, V * 10.0, V * 10.0 * 1e-5, V * rho * 2e-5, V * (0.1 + g.x()),
+                                   V * (0.2 - g.y()), V * 0.3});
                 }
         grid.unpackStep(spec.fullBox(), values);
         grid.commitStep();
         std::mt19937_64 rng(2);
-        std::uniform_real_distribution<double> ux(spec.lower.x(), spec.upper.x()), uy(spec.lower.y(), spec.upper.y()),
-            uz(spec.lower.z(), spec.upper.z());
+        std::uniform_real_distribution<double> ux(spec.lower.x(), spec.upper.x()),
+            uy(spec.lower.y(), spec.upper.y()), uz(spec.lower.z(), spec.upper.z());
         for (int n = 0; n < 500; ++n)
         {
             const Eigen::Vector3d p(ux(rng), uy(rng), uz(rng));

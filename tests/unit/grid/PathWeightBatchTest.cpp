@@ -61,8 +61,12 @@ TEST(PathWeightBatch, MatchesPerNodeOmega)
                     // The nodes of the bounding box of the swept capsule (as the deposit).
                     offsets.clear();
                     const Eigen::Vector3d end = start + length * direction;
-                    const int kLo = dimension == 3 ? static_cast<int>(std::floor(std::min(start.z(), end.z()) - reach)) : 0;
-                    const int kHi = dimension == 3 ? static_cast<int>(std::ceil(std::max(start.z(), end.z()) + reach)) : 0;
+                    const int kLo = dimension == 3
+                        ? static_cast<int>(std::floor(std::min(start.z(), end.z()) - reach))
+                        : 0;
+                    const int kHi = dimension == 3
+                        ? static_cast<int>(std::ceil(std::max(start.z(), end.z()) + reach))
+                        : 0;
                     for (int k = kLo; k <= kHi; ++k)
                     {
                         for (int j = static_cast<int>(std::floor(std::min(start.y(), end.y()) - reach));
@@ -113,9 +117,10 @@ TEST(PathWeightBatch, MatchesPerNodeOmega)
                     {
                         const double error = std::abs(omega[n] - reference[n]) / largest;
                         worst = std::max(worst, error);
-                        ASSERT_LE(error, 1e-13) << "dimension " << dimension << " reach " << reach << " cut " << cut
-                                                << " alpha " << alpha << " length " << length << " node " << n
-                                                << ": batched " << omega[n] << " per node " << reference[n];
+                        ASSERT_LE(error, 1e-13)
+                            << "dimension " << dimension << " reach " << reach << " cut " << cut << " alpha "
+                            << alpha << " length " << length << " node " << n << ": batched " << omega[n]
+                            << " per node " << reference[n];
                         if (reference[n] == 0.0 && path.cutoffSquared() < reach * reach
                             && !(d0Squared[n] < path.cutoffSquared()))
                         {

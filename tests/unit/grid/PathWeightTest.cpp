@@ -144,7 +144,8 @@ struct Case
 double referenceOmega(const Case& c)
 {
     const Eigen::Vector3d p = c.start - c.node;
-    Reference r{c.gamma, c.reach, p.x(), p.y(), p.z(), c.displacement.x(), c.displacement.y(), c.displacement.z()};
+    Reference r{c.gamma,           c.reach, p.x(), p.y(), p.z(), c.displacement.x(), c.displacement.y(),
+                c.displacement.z()};
     return static_cast<double>(r.omega());
 }
 
@@ -254,10 +255,11 @@ TEST(PathWeight, ZeroVelocityGivesPhiOfDistance)
     for (double dx : {0.0, 1e-3, 5e-3, 9.9e-3, 1.0001e-2, 2e-2})
     {
         const Eigen::Vector3d g = p + Eigen::Vector3d(dx, 0.0, 0.0);
-        const long double d = (g - p).norm(); // the distance as represented, not dx
+        const long double d = (g - p).norm();   // the distance as represented, not dx
         const long double gamma = 151.9 / 1e-4; // the double value the kernel holds
         const long double reach = 1e-2;
-        const long double ref = d < reach ? std::exp(-gamma * d * d) - std::exp(-gamma * reach * reach) : 0.0L;
+        const long double ref
+            = d < reach ? std::exp(-gamma * d * d) - std::exp(-gamma * reach * reach) : 0.0L;
         EXPECT_NEAR(w.omega(g), static_cast<double>(ref), 1e-10 * static_cast<double>(ref)) << dx;
     }
 }
@@ -279,7 +281,8 @@ TEST(PathWeight, NearestPointBeyondThePathEnds)
         c.node = Eigen::Vector3d(side, 0.9 * (unit(rng) - 0.5), 0.0);
         ASSERT_TRUE(agrees(c)) << "case " << i;
     }
-    Case beyond{100.0, 1.0, Eigen::Vector3d::Zero(), Eigen::Vector3d(1.0, 0.0, 0.0), Eigen::Vector3d(2.5, 0.1, 0.0)};
+    Case beyond{100.0, 1.0, Eigen::Vector3d::Zero(), Eigen::Vector3d(1.0, 0.0, 0.0),
+                Eigen::Vector3d(2.5, 0.1, 0.0)};
     EXPECT_EQ(closedForm(beyond), 0.0); // distance to the segment 1.5 > reach
 }
 
@@ -314,9 +317,9 @@ TEST(PathWeight, LongPathTendsToGaussianLineIntegral)
     const ParcelKernel kernel = ParcelKernel::fromShape(gamma, reach);
     const PathWeight w(kernel, Eigen::Vector3d(-5.0, 0.0, 0.0), Eigen::Vector3d(length, 0.0, 0.0));
     const double h = std::sqrt(reach * reach - d0 * d0);
-    const double expected
-        = (std::exp(-gamma * d0 * d0) * std::sqrt(3.14159265358979323846 / gamma) * std::erf(std::sqrt(gamma) * h)
-              - 2.0 * h * std::exp(-gamma * reach * reach))
+    const double expected = (std::exp(-gamma * d0 * d0) * std::sqrt(3.14159265358979323846 / gamma)
+                                 * std::erf(std::sqrt(gamma) * h)
+                             - 2.0 * h * std::exp(-gamma * reach * reach))
         / length;
     EXPECT_NEAR(w.omega(Eigen::Vector3d(0.0, d0, 0.0)), expected, 1e-14 * expected);
 }

@@ -15,13 +15,15 @@ TEST(ScaledErfc, MatchesLongDoubleReference)
     for (int i = 0; i <= 200000; ++i)
     {
         const double x = 1e-4 * i; // 0 .. 20, all three intervals of the approximation
-        const long double reference = std::erfc(static_cast<long double>(x)) * std::exp(static_cast<long double>(x) * x);
+        const long double reference
+            = std::erfc(static_cast<long double>(x)) * std::exp(static_cast<long double>(x) * x);
         const double got = erfcScaled(x);
         const double error = std::abs(static_cast<double>((got - reference) / reference));
         worst = std::max(worst, error);
         ASSERT_LT(error, 2e-15) << "x = " << x;
         const Fraction f = erfcScaledFraction(x);
-        ASSERT_LT(std::abs(static_cast<double>((f.numerator / f.denominator - reference) / reference)), 2e-15);
+        ASSERT_LT(std::abs(static_cast<double>((f.numerator / f.denominator - reference) / reference)),
+                  2e-15);
     }
     char text[32];
     std::snprintf(text, sizeof text, "%.3e", worst);

@@ -30,7 +30,8 @@ struct UniformStream
         GridSpec s;
         s.lower = Eigen::Vector3d(0.0, 0.0, 0.0);
         s.upper = Eigen::Vector3d(width, height, depth);
-        s.nodes = {{static_cast<int>(width / spacing + 0.5) + 1, static_cast<int>(height / spacing + 0.5) + 1, 1}};
+        s.nodes = {
+            {static_cast<int>(width / spacing + 0.5) + 1, static_cast<int>(height / spacing + 0.5) + 1, 1}};
         return s;
     }
 

@@ -13,13 +13,13 @@ FiberInjectorSpec stream()
     FiberInjectorSpec s;
     s.name = "stream";
     s.position = Eigen::Vector3d(0.0, 1.0, 0.0);
-    s.direction = Eigen::Vector3d(2.0, 0.0, 0.0);  // normalised by the injector
+    s.direction = Eigen::Vector3d(2.0, 0.0, 0.0); // normalised by the injector
     s.velocity = Eigen::Vector3d(0.0, -0.5, 0.0);
     s.length = 0.1;
     s.points = 11;
-    s.rate = 10.0;  // one fiber every 0.1 s
+    s.rate = 10.0; // one fiber every 0.1 s
     s.startTime = 0.05;
-    s.endTime = 0.35;  // births at 0.05, 0.15, 0.25 only
+    s.endTime = 0.35; // births at 0.05, 0.15, 0.25 only
     s.material = {4e-6, 2500.0, 7e10};
     return s;
 }
@@ -29,10 +29,10 @@ TEST(FiberInjector, countsBirthsInsideTheWindowOnly)
 {
     FiberInjector injector(stream());
     EXPECT_EQ(injector.bornBy(0.0), 0);
-    EXPECT_EQ(injector.bornBy(0.05), 1);  // born exactly at the start
+    EXPECT_EQ(injector.bornBy(0.05), 1); // born exactly at the start
     EXPECT_EQ(injector.bornBy(0.149), 1);
     EXPECT_EQ(injector.bornBy(0.15), 2);
-    EXPECT_EQ(injector.bornBy(10.0), 3);  // 0.35 is the end: no fourth fiber
+    EXPECT_EQ(injector.bornBy(10.0), 3); // 0.35 is the end: no fourth fiber
 }
 
 TEST(FiberInjector, sameFibersWhateverTheStepSize)
@@ -64,11 +64,11 @@ TEST(FiberInjector, sameFibersWhateverTheStepSize)
 TEST(FiberInjector, restartFromCountContinuesTheStream)
 {
     FiberInjector first(stream());
-    first.inject(0.2);  // two fibers
+    first.inject(0.2); // two fibers
     FiberInjector restarted(stream());
     restarted.setInjectedCount(first.injectedCount());
     const auto next = restarted.inject(0.3);
-    ASSERT_EQ(next.size(), 1u);  // only the one born at 0.25
+    ASSERT_EQ(next.size(), 1u); // only the one born at 0.25
     EXPECT_NEAR(next[0].positions()(1, 0), 1.0 - 0.5 * 0.05, 1e-12);
 }
 

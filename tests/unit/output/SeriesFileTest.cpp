@@ -41,10 +41,10 @@ TEST(SeriesFile, restartDropsLaterTimesAndReplacesSameTime)
         series.add("fibers_0.3.vtp", 0.3);
     }
     dropletFiber::SeriesFile restarted(path);
-    restarted.load(0.2);  // restart from t = 0.2: 0.2 and 0.3 are written again
+    restarted.load(0.2); // restart from t = 0.2: 0.2 and 0.3 are written again
     EXPECT_EQ(restarted.size(), 1u);
     restarted.add("fibers_0.2.vtp", 0.2);
-    restarted.add("fibers_0.2.vtp", 0.2);  // same time twice: one entry
+    restarted.add("fibers_0.2.vtp", 0.2); // same time twice: one entry
     const std::string text = slurp(path);
     EXPECT_EQ(count(text, "\"name\""), 2);
     EXPECT_LT(text.find("fibers_0.1.vtp"), text.find("fibers_0.2.vtp"));

@@ -42,8 +42,10 @@ TEST(VtkNumbers, imageDataValuesReadBackBitForBit)
 {
     const double nan = std::numeric_limits<double>::quiet_NaN();
     const double inf = std::numeric_limits<double>::infinity();
-    const std::vector<double> written{0.1, 1.0 / 3.0, -2.5e-300, 4.9e-324, 1.7976931348623157e308,
-                                      0.0, -0.0, 123456789.123456789, 2.0 / 3.0 * 1e-7, nan, inf, -inf};
+    const std::vector<double> written{
+        0.1, 1.0 / 3.0, -2.5e-300,           4.9e-324,         1.7976931348623157e308,
+        0.0, -0.0,      123456789.123456789, 2.0 / 3.0 * 1e-7, nan,
+        inf, -inf};
     const std::string path = testing::TempDir() + "numbers.vti";
     dropletFiber::writeImageData(path, 0.25, Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones(),
                                  {{static_cast<int>(written.size()), 1, 1}}, {{"rho", 1, written}});
