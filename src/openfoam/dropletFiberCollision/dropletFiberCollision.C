@@ -11,6 +11,7 @@ Description
 
 #include "dropletFiberCollision.H"
 #include "dictionaryChecks.H"
+#include "dictionaryKeys.H"
 #include "collisionSettings.H"
 #include "fiberStateIO.H"
 #include "fiberDistribution.H"
@@ -36,6 +37,36 @@ namespace functionObjects
     );
 }
 }
+
+
+// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- The entries of the function object's dictionary: its own, read by
+//  readOutputAndClouds() and read(), and those OpenFOAM v1912 reads from
+//  every function object's dictionary
+const Foam::wordList functionObjectKeys
+{
+    "clouds", "gather", "grid", "collision", "air", "fibers",
+    "writeVtk", "writeGridVtk",
+    // functionObject, functionObjectList: the object itself
+    "type", "libs", "functionObjectLibs", "enabled", "log",
+    // regionFunctionObject (fvMeshFunctionObject)
+    "region", "subRegion",
+    // timeControl: when execute() and write() are called
+    "executeControl", "executeInterval", "writeControl", "writeInterval",
+    "outputControl", "outputInterval",
+    "timeStart", "timeEnd", "triggerStart", "triggerEnd", "controlMode",
+    "deltaTCoeff", "nStepsToStartTimeChange",
+    // writeFile: the per-step table
+    "writePrecision", "writeToFile", "useUserTime",
+    // set by postProcess -func 'name(field, ...)'
+    "field", "fields"
+};
+
+} // End anonymous namespace
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -564,6 +595,7 @@ bool Foam::functionObjects::dropletFiberCollision::read(const dictionary& dict)
     // during the run (runTimeModifiable): what carries no state is applied,
     // an edit of what does stops the run (checkStatefulPartsUnchanged)
     const bool running = bool(grid_);
+    dropletFiber::checkKeys(dict, functionObjectKeys);
     fvMeshFunctionObject::read(dict);
     readOutputAndClouds(dict);
     const dropletFiber::gridSettings grid =
