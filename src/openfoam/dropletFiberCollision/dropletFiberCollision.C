@@ -66,6 +66,21 @@ const Foam::wordList functionObjectKeys
     "field", "fields"
 };
 
+
+//- dict with the per-step table's writePrecision: the entry, else 10 (more
+//  digits than OpenFOAM's default: the table is compared across runs).
+//  writeFile opens the table in its constructor with the precision in force
+//  then, so the constructor must be given this too.
+Foam::dictionary tableFileDict(const Foam::dictionary& dict)
+{
+    Foam::dictionary fileDict(dict);
+    if (!fileDict.found("writePrecision"))
+    {
+        fileDict.add("writePrecision", 10);
+    }
+    return fileDict;
+}
+
 } // End anonymous namespace
 
 
@@ -76,13 +91,7 @@ void Foam::functionObjects::dropletFiberCollision::readOutputAndClouds
     const dictionary& dict
 )
 {
-    // More digits than OpenFOAM's default: the table is compared across runs
-    dictionary fileDict(dict);
-    if (!fileDict.found("writePrecision"))
-    {
-        fileDict.add("writePrecision", 10);
-    }
-    writeFile::read(fileDict);
+    writeFile::read(tableFileDict(dict));
     writeVtk_ = dropletFiber::getSwitch(dict, "writeVtk", true);
     writeGridVtk_ = dropletFiber::getSwitch(dict, "writeGridVtk", true);
 
@@ -541,7 +550,7 @@ Foam::functionObjects::dropletFiberCollision::dropletFiberCollision
 )
 :
     fvMeshFunctionObject(name, runTime, dict),
-    writeFile(mesh_, name, "dropletFiber", dict),
+    writeFile(mesh_, name, "dropletFiber", tableFileDict(dict)),
     dict_(dict),
     cloudNames_(),
     gatherWriteObjects_(false),
