@@ -9,6 +9,13 @@ cp system/controlDict system/controlDict.good
 passed=0; failed=0
 fo=functions/dropletFiber
 
+# Every run starts at time 0 (startFrom latestTime: a run that went on to
+# endTime would make the next one start there and end at once)
+freshStart() {
+    foamListTimes -rm > /dev/null 2>&1
+    rm -rf postProcessing
+}
+
 # expectError ENTRY VALUE PATTERN: set ENTRY to VALUE, run, expect PATTERN
 # (in a copy of $base, the good controlDict unless set)
 expectError() {
@@ -19,6 +26,7 @@ expectError() {
     else
         foamDictionary system/controlDict -entry "$fo/$entry" -set "$value" > /dev/null
     fi
+    freshStart
     pimpleFoam > log.bad 2>&1
     local status=$?
     if [ $status -ne 0 ] && grep -q "FOAM FATAL IO ERROR" log.bad && grep -q -E "$pattern" log.bad; then
@@ -54,6 +62,21 @@ expectError air "{ mu noSuchField; }" "Entry 'mu' names field 'noSuchField'"
 expectError fibers/fixed/across/points "((0.05 0.01 0.005))" "Entry 'points' has 1 points"
 expectError fibers/fixed/across/hold glued "Entry 'hold' is 'glued'"
 
+# A misspelled or unknown entry, in every dictionary read: stops, naming the
+# entry, its dictionary and the closest allowed entry (or all of them)
+unknown() { echo "Entry '$1' in dictionary '[^']*$2' is not known: $3"; }
+expectError grid/spacng 0.002 "$(unknown spacng grid "did you mean 'spacing'\\?")"
+expectError collision "{ samplng integrated; }" "$(unknown samplng collision "did you mean 'sampling'\\?")"
+expectError air "{ rhoo 1.2; }" "$(unknown rhoo air "did you mean 'rho'\\?")"
+expectError air "{ temperature 300; }" "$(unknown temperature air "allowed are U, rho, mu\\.")"
+expectError fibers/radus 1e-4 "$(unknown radus fibers "did you mean 'radius'\\?")"
+expectError fibers/injectors \
+    "{ spinner { position (0.01 0.04 0.005); direction (1 0 0); velocity (0 0 0); length 0.01; rat 10; } }" \
+    "$(unknown rat injectors.spinner "did you mean 'rate'\\?")"
+expectError fibers/fixed/across/hld pinned "$(unknown hld fixed.across "did you mean 'hold'\\?")"
+expectError fiber "{ radius 1e-4; }" "$(unknown fiber dropletFiber "did you mean 'fibers'\\?")"
+expectError writeVTK false "$(unknown writeVTK dropletFiber "did you mean 'writeVtk'\\?")"
+
 # radiusAverage, a collision option, in both places: stops
 cp system/controlDict.good system/controlDict.collisionMass
 foamDictionary system/controlDict.collisionMass -entry "$fo/collision" -set "{ radiusAverage mass; }" > /dev/null
@@ -64,6 +87,7 @@ base=system/controlDict.collisionMass \
 cp system/controlDict.good system/controlDict
 foamDictionary system/controlDict -entry "$fo/grid/radiusAverage" -set number > /dev/null
 foamDictionary system/controlDict -entry endTime -set 0.004 > /dev/null
+freshStart
 pimpleFoam > log.oldPlace 2>&1
 status=$?
 if [ $status -eq 0 ] \
@@ -83,6 +107,7 @@ fi
 cp system/controlDict.good system/controlDict
 foamDictionary system/controlDict -entry "$fo/grid/lower" -set "(0.06 0 0)" > /dev/null
 foamDictionary system/controlDict -entry endTime -set 0.006 > /dev/null
+freshStart
 pimpleFoam > log.outside 2>&1
 status=$?
 if [ $status -eq 0 ] \
@@ -96,6 +121,39 @@ else
     failed=$((failed+1))
     echo "FAILED: grid/lower = (0.06 0 0) (exit $status): no single warning about samples outside the grid; log:"
     grep -A3 "outside the grid" log.outside | head -10
+fi
+
+# A misspelled entry in an edit of the dictionary during the run (read
+# again, runTimeModifiable) stops the run too: collision carries no state, so
+# only the check of the keys can stop it. The edit is made by OpenFOAM's
+# timeActivatedFileUpdate at time 0.01, so it does not race the run.
+cp system/controlDict.good system/controlDict
+foamDictionary system/controlDict -entry runTimeModifiable -set true > /dev/null
+foamDictionary system/controlDict -entry endTime -set 0.02 > /dev/null
+foamDictionary system/controlDict -entry OptimisationSwitches \
+    -add "{ fileModificationSkew 0; fileModificationChecking timeStamp; }" > /dev/null
+foamDictionary system/controlDict -entry functions/editControlDict \
+    -add "{ type timeActivatedFileUpdate; libs (\"libutilityFunctionObjects.so\"); fileToUpdate \"\$FOAM_CASE/system/controlDict\"; timeVsFile ((0.01 \"\$FOAM_CASE/system/controlDict.typo\")); }" > /dev/null
+cp system/controlDict system/controlDict.start
+foamDictionary system/controlDict -entry "$fo/collision" -set "{ samplng integrated; }" > /dev/null
+cp system/controlDict system/controlDict.typo
+cp system/controlDict.start system/controlDict
+touch -d "1 hour ago" system/controlDict
+freshStart
+pimpleFoam > log.runTimeTypo 2>&1
+status=$?
+if [ $status -ne 0 ] \
+    && grep -q "^Time = 0.01$" log.runTimeTypo \
+    && ! grep -q "^Time = 0.02$" log.runTimeTypo \
+    && grep -q "FOAM FATAL IO ERROR" log.runTimeTypo \
+    && grep -q -E "$(unknown samplng collision "did you mean 'sampling'\\?")" log.runTimeTypo
+then
+    passed=$((passed+1))
+    echo "ok: collision = { samplng integrated; } edited during the run -> $(grep -A1 'FOAM FATAL IO ERROR' log.runTimeTypo | tail -1)"
+else
+    failed=$((failed+1))
+    echo "FAILED: collision = { samplng integrated; } edited during the run (exit $status): not stopped at the edit; log:"
+    grep -A4 "FOAM FATAL" log.runTimeTypo || tail -5 log.runTimeTypo
 fi
 
 cp system/controlDict.good system/controlDict

@@ -7,6 +7,7 @@
 #include "polyMeshTetDecomposition.H"
 #include "IOdictionary.H"
 #include "dictionaryChecks.H"
+#include "dictionaryKeys.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -211,6 +212,8 @@ Foam::dropletFiber::airSampler::airSampler
 
 void Foam::dropletFiber::airSampler::read(const dictionary& airDict)
 {
+    // The entries read below; any other stops the run
+    checkKeys(airDict, {"U", "rho", "mu"});
     UName_ = airDict.lookupOrDefault<word>("U", "U");
     if (!mesh_.foundObject<volVectorField>(UName_))
     {

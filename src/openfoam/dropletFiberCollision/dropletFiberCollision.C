@@ -11,6 +11,7 @@ Description
 
 #include "dropletFiberCollision.H"
 #include "dictionaryChecks.H"
+#include "dictionaryKeys.H"
 #include "collisionSettings.H"
 #include "fiberStateIO.H"
 #include "fiberDistribution.H"
@@ -38,6 +39,51 @@ namespace functionObjects
 }
 
 
+// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- The entries of the function object's dictionary: its own, read by
+//  readOutputAndClouds() and read(), and those OpenFOAM v1912 reads from
+//  every function object's dictionary
+const Foam::wordList functionObjectKeys
+{
+    "clouds", "gather", "grid", "collision", "air", "fibers",
+    "writeVtk", "writeGridVtk",
+    // functionObject, functionObjectList: the object itself
+    "type", "libs", "functionObjectLibs", "enabled", "log",
+    // regionFunctionObject (fvMeshFunctionObject)
+    "region", "subRegion",
+    // timeControl: when execute() and write() are called
+    "executeControl", "executeInterval", "writeControl", "writeInterval",
+    "outputControl", "outputInterval",
+    "timeStart", "timeEnd", "triggerStart", "triggerEnd", "controlMode",
+    "deltaTCoeff", "nStepsToStartTimeChange",
+    // writeFile: the per-step table
+    "writePrecision", "writeToFile", "useUserTime",
+    // set by postProcess -func 'name(field, ...)'
+    "field", "fields"
+};
+
+
+//- dict with the per-step table's writePrecision: the entry, else 10 (more
+//  digits than OpenFOAM's default: the table is compared across runs).
+//  writeFile opens the table in its constructor with the precision in force
+//  then, so the constructor must be given this too.
+Foam::dictionary tableFileDict(const Foam::dictionary& dict)
+{
+    Foam::dictionary fileDict(dict);
+    if (!fileDict.found("writePrecision"))
+    {
+        fileDict.add("writePrecision", 10);
+    }
+    return fileDict;
+}
+
+} // End anonymous namespace
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 void Foam::functionObjects::dropletFiberCollision::readOutputAndClouds
@@ -45,13 +91,7 @@ void Foam::functionObjects::dropletFiberCollision::readOutputAndClouds
     const dictionary& dict
 )
 {
-    // More digits than OpenFOAM's default: the table is compared across runs
-    dictionary fileDict(dict);
-    if (!fileDict.found("writePrecision"))
-    {
-        fileDict.add("writePrecision", 10);
-    }
-    writeFile::read(fileDict);
+    writeFile::read(tableFileDict(dict));
     writeVtk_ = dropletFiber::getSwitch(dict, "writeVtk", true);
     writeGridVtk_ = dropletFiber::getSwitch(dict, "writeGridVtk", true);
 
@@ -510,7 +550,7 @@ Foam::functionObjects::dropletFiberCollision::dropletFiberCollision
 )
 :
     fvMeshFunctionObject(name, runTime, dict),
-    writeFile(mesh_, name, "dropletFiber", dict),
+    writeFile(mesh_, name, "dropletFiber", tableFileDict(dict)),
     dict_(dict),
     cloudNames_(),
     gatherWriteObjects_(false),
@@ -564,6 +604,7 @@ bool Foam::functionObjects::dropletFiberCollision::read(const dictionary& dict)
     // during the run (runTimeModifiable): what carries no state is applied,
     // an edit of what does stops the run (checkStatefulPartsUnchanged)
     const bool running = bool(grid_);
+    dropletFiber::checkKeys(dict, functionObjectKeys);
     fvMeshFunctionObject::read(dict);
     readOutputAndClouds(dict);
     const dropletFiber::gridSettings grid =

@@ -4,6 +4,7 @@
 
 #include "collisionSettings.H"
 #include "dictionaryChecks.H"
+#include "dictionaryKeys.H"
 
 // * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
 
@@ -11,6 +12,10 @@ namespace
 {
 
 using namespace Foam;
+
+//- The entries of collision: read by readSamples and readCollisionSettings
+const wordList collisionKeys{"sampling", "samplesPerSegment", "radiusAverage"};
+
 
 //- Sample points per segment: midpoint 1 (the paper); integrated:
 //  samplesPerSegment equal sub-segments, 0 = one per grid spacing spanned
@@ -74,6 +79,7 @@ const dictionary& radiusAverageDict
 {
     const dictionary collisionDict = dict.subOrEmptyDict("collision");
     const dictionary gridDict = dict.subOrEmptyDict("grid");
+    checkKeys(collisionDict, collisionKeys);
     ::dropletFiber::CollisionOptions options;
     options.samples = readSamples(collisionDict);
     const word radius =

@@ -4,6 +4,7 @@
 
 #include "fiberSettings.H"
 #include "dictionaryChecks.H"
+#include "dictionaryKeys.H"
 #include "fiberStateIO.H"
 #include "uniformDimensionedFields.H"
 #include "IOobject.H"
@@ -11,7 +12,72 @@
 #include "vectorList.H"
 #include "OStringStream.H"
 
+// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
+
+namespace
+{
+
+using Foam::wordList;
+
+//- The material entries, of fibers and of each injector and fixed fiber:
+//  read by readFiberMaterial
+const wordList materialKeys{"radius", "density", "youngsModulus"};
+
+//- The entries of fibers besides the material: read by
+//  readFiberSolverSettings, readFiberInjectors (points, injectors) and
+//  readFixedFibers (fixed)
+const wordList fibersKeys
+{
+    "gravity", "drag", "normalDragCoefficient", "tangentialDragCoefficient",
+    "maxSubSteps", "theta", "points", "injectors", "fixed"
+};
+
+//- The entries of an injector besides the material: read by readFiberInjectors
+const wordList injectorKeys
+{
+    "position", "direction", "velocity", "length", "rate", "startTime",
+    "endTime", "points"
+};
+
+//- The entries of a fixed fiber besides the material: read by readFixedFibers
+const wordList fixedFiberKeys{"points", "hold"};
+
+
+//- checkKeys for each sub-dictionary of fibersDict.listName
+void checkEachKeys
+(
+    const Foam::dictionary& fibersDict,
+    const Foam::word& listName,
+    const wordList& allowed
+)
+{
+    const Foam::dictionary* listPtr = fibersDict.findDict(listName);
+    if (!listPtr)
+    {
+        return;
+    }
+    for (const Foam::entry& e : *listPtr)
+    {
+        // An entry that is no dictionary is stopped by its reader
+        if (e.isDict())
+        {
+            Foam::dropletFiber::checkKeys(e.dict(), allowed);
+        }
+    }
+}
+
+} // End anonymous namespace
+
+
 // * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * //
+
+void Foam::dropletFiber::checkFiberKeys(const dictionary& fibersDict)
+{
+    checkKeys(fibersDict, joinedKeys(materialKeys, fibersKeys));
+    checkEachKeys(fibersDict, "injectors", joinedKeys(materialKeys, injectorKeys));
+    checkEachKeys(fibersDict, "fixed", joinedKeys(materialKeys, fixedFiberKeys));
+}
+
 
 ::dropletFiber::FiberMaterial Foam::dropletFiber::readFiberMaterial
 (
@@ -45,6 +111,7 @@
     const Time& runTime
 )
 {
+    checkFiberKeys(fibersDict);
     ::dropletFiber::FiberSolverSettings s;
 
     // Gravity: the entry, else the case's constant/g, else none

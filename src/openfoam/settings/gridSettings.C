@@ -4,6 +4,7 @@
 
 #include "gridSettings.H"
 #include "dictionaryChecks.H"
+#include "dictionaryKeys.H"
 #include "fiberStateIO.H"
 #include "OStringStream.H"
 
@@ -16,6 +17,18 @@ namespace
 {
 
 using namespace Foam;
+
+//- The entries of grid: read by readBounds, readNodeCounts,
+//  readGridSettings and readKernelSettings below; radiusAverage, a
+//  collision option, is still read here from its old place
+//  (collisionSettings.C)
+const wordList gridKeys
+{
+    "lower", "upper", "nodes", "spacing", "averagingSteps",
+    "beta", "rMaxCap", "cloudInCellBelow", "negligibleWeight", "vectorised",
+    "dimension", "radiusAverage"
+};
+
 
 //- The grid's lower and upper bounds: the entries, else the mesh's bounds
 std::pair<vector, vector> readBounds
@@ -126,6 +139,7 @@ Foam::dropletFiber::gridSettings Foam::dropletFiber::readGridSettings
     const fvMesh& mesh
 )
 {
+    checkKeys(gridDict, gridKeys);
     gridSettings s;
     const std::pair<vector, vector> bounds = readBounds(gridDict, mesh.bounds());
     const Vector<label> nodes =
