@@ -4,6 +4,7 @@
 
 #include "gridSettings.H"
 #include "dictionaryChecks.H"
+#include "memoryEstimate.H"
 #include "fiberStateIO.H"
 #include "OStringStream.H"
 
@@ -42,8 +43,9 @@ std::pair<vector, vector> readBounds
 
 
 //- Nodes per direction: entry nodes, or from entry spacing, else 50; a 2D
-//  mesh's empty direction is flat (one node layer) unless given
-Vector<label> readNodeCounts
+//  mesh's empty direction is flat (one node layer) unless given. Doubles:
+//  a tiny spacing gives counts no label holds (checkGridSize stops those)
+vector readNodeCounts
 (
     const dictionary& gridDict,
     const Vector<label>& geometricD,
@@ -51,7 +53,7 @@ Vector<label> readNodeCounts
     const vector& upper
 )
 {
-    Vector<label> nodes(50, 50, 50);
+    vector nodes(50, 50, 50);
     for (direction d = 0; d < vector::nComponents; ++d)
     {
         if (geometricD[d] < 0)
@@ -67,7 +69,8 @@ Vector<label> readNodeCounts
     }
     if (gridDict.found("nodes"))
     {
-        nodes = gridDict.get<Vector<label>>("nodes");
+        const Vector<label> given = gridDict.get<Vector<label>>("nodes");
+        nodes = vector(given.x(), given.y(), given.z());
     }
     else if (gridDict.found("spacing"))
     {
@@ -76,7 +79,7 @@ Vector<label> readNodeCounts
         {
             if (nodes[d] != 1)
             {
-                nodes[d] = max(2, label(std::round((upper[d] - lower[d])/h)) + 1);
+                nodes[d] = max(scalar(2), std::round((upper[d] - lower[d])/h) + 1);
             }
         }
     }
@@ -128,16 +131,22 @@ Foam::dropletFiber::gridSettings Foam::dropletFiber::readGridSettings
 {
     gridSettings s;
     const std::pair<vector, vector> bounds = readBounds(gridDict, mesh.bounds());
-    const Vector<label> nodes =
+    const vector nodes =
         readNodeCounts(gridDict, mesh.geometricD(), bounds.first, bounds.second);
+    s.averagingSteps = getLabelInRange(gridDict, "averagingSteps", 1, 1, 100000);
+    checkGridSize(gridDict, nodes, s.averagingSteps);
 
     s.spec.lower = toEigen(bounds.first);
     s.spec.upper = toEigen(bounds.second);
     s.spec.nodes = {{int(nodes.x()), int(nodes.y()), int(nodes.z())}};
     checkedCoreCall(gridDict, [&s]() { s.spec.validate(); });
 
-    s.averagingSteps = getLabelInRange(gridDict, "averagingSteps", 1, 1, 100000);
     s.kernel = readKernelSettings(gridDict);
+
+    // --- Entries not of the grid's state: a run-time edit is not compared
+    // by checkGridUnchanged (the memory check is made once, at the start)
+    // maxMemory [MB]: the user's limit on the memory per processor
+    s.maxMemory = bytesPerMB*getNonNegative(gridDict, "maxMemory", 0);
     return s;
 }
 
