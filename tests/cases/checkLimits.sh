@@ -72,6 +72,15 @@ check '! grep -q "outside the mesh" log.highRate' "a good case warned about some
 check 'grep -q "memory per processor (estimate): grid 1.05 MB (2626 nodes" log.highRate' "memory estimate not printed with the settings"
 grep -m1 "memory per processor" log.highRate
 
+# A rate no memory holds (2e9 fibers of 11 points per step of 0.002 s) stops
+# at the start, naming the rate
+mutate fibers/injectors/spinner/rate 1e12 fibers/injectors/spinner/endTime REMOVE
+run log.hugeRate
+status=$?
+check "[ $status -ne 0 ] && noCrash log.hugeRate && grep -q 'FOAM FATAL IO ERROR' log.hugeRate" "rate 1e12: exit $status, no FatalIOError, or a crash"
+check "grep -q \"Entry 'rate' 1e+12 of injector 'spinner': the fibers injected in one step of 0.002 s need an estimated 8.8e+06 MB\" log.hugeRate" "rate 1e12: message does not name the rate and the estimate"
+grep -A2 "FOAM FATAL IO ERROR" log.hugeRate | tail -2
+
 # --- Memory: a spacing typo (1e-9 m: 1e16 nodes) stops, naming spacing and the estimate
 mutate grid/nodes REMOVE grid/spacing 1e-9
 run log.tinySpacing
