@@ -66,9 +66,8 @@ void GridSpec::validate() const
     {
         throw std::invalid_argument("grid: at least one direction needs 2 or more nodes");
     }
-    // Flat indices are std::size_t; node counts beyond that are a configuration error.
     const double total = static_cast<double>(nodes[0]) * nodes[1] * nodes[2];
-    if (total > 1e10)
+    if (total > maxNodes)
     {
         throw std::invalid_argument("grid: more than 1e10 nodes");
     }

@@ -82,12 +82,17 @@ void forEachRow(const IndexBox& box, const std::array<int, 3>& nodes, F&& f)
 
 struct GridSpec
 {
+    // Largest node count validate() accepts (flat indices are std::size_t; beyond this
+    // a grid is a configuration error, e.g. a spacing typo).
+    static constexpr double maxNodes = 1e10;
+
     Eigen::Vector3d lower{0.0, 0.0, 0.0};
     Eigen::Vector3d upper{1.0, 1.0, 1.0};
     std::array<int, 3> nodes{{2, 2, 2}};
 
     // Throws std::invalid_argument naming the offending entry: nodes < 1, all directions
-    // flat, upper <= lower (a flat direction needs a positive thickness too), non-finite.
+    // flat, upper <= lower (a flat direction needs a positive thickness too), non-finite,
+    // more than maxNodes nodes.
     void validate() const;
 
     bool flat(int d) const { return nodes[d] == 1; }

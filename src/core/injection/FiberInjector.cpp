@@ -47,14 +47,26 @@ long FiberInjector::bornBy(double t) const
     {
         return 0;
     }
+    // Counted in double and converted once, after the cap by endTime: without an
+    // endTime (a huge one) (end - start) rate exceeds every integer type, and its
+    // conversion would overflow (SIGFPE, or no fibers at all).
     // t_k <= t  <=>  k <= (t - start) rate; a relative tolerance keeps a birth that
-    // falls on a step boundary in that step, whatever the rounding of t.
+    // falls on a step boundary in that step, whatever the rounding of t (at most half
+    // a birth interval: beyond 5e8 births it would count whole fibers early).
+    const auto tolerance = [](double k) { return std::min(1e-9 * std::max(1.0, k), 0.5); };
     const double kMax = (t - spec_.startTime) * spec_.rate;
-    const long upToT = static_cast<long>(std::floor(kMax + 1e-9 * std::max(1.0, kMax))) + 1;
+    const double upToT = std::floor(kMax + tolerance(kMax)) + 1.0;
     // t_k < endTime  <=>  k < (end - start) rate
     const double kEnd = (spec_.endTime - spec_.startTime) * spec_.rate;
-    const long beforeEnd = static_cast<long>(std::ceil(kEnd - 1e-9 * std::max(1.0, kEnd)));
-    return std::min(upToT, beforeEnd);
+    const double beforeEnd = std::ceil(kEnd - tolerance(kEnd));
+    const double born = std::min(upToT, beforeEnd);
+    if (!(born <= maxBirths))
+    {
+        throw std::overflow_error("injector '" + spec_.name + "': entry 'rate' " + std::to_string(spec_.rate)
+                                  + " gives more than 2^53 fibers by time " + std::to_string(t)
+                                  + " (births are no longer counted exactly)");
+    }
+    return static_cast<long>(born);
 }
 
 std::vector<Fiber> FiberInjector::inject(double t)

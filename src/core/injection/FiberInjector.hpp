@@ -45,7 +45,12 @@ public:
 
     const FiberInjectorSpec& spec() const { return spec_; }
 
-    // Number of fibers born at or before time t (and before endTime).
+    // Births counted exactly: 2^53, the largest count a double holds to the unit.
+    static constexpr double maxBirths = 9007199254740992.0;
+
+    // Number of fibers born at or before time t (and before endTime): any rate, also
+    // with no endTime (a huge one). Throws std::overflow_error naming `rate` beyond
+    // maxBirths (a count no run could hold in memory anyway).
     long bornBy(double t) const;
 
     // The fibers born in (.., t] not injected yet, placed as they are at time t.

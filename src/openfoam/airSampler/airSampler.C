@@ -8,6 +8,9 @@
 #include "IOdictionary.H"
 #include "dictionaryChecks.H"
 #include "dictionaryKeys.H"
+#include "PstreamReduceOps.H"
+
+#include <cmath>
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -92,6 +95,35 @@ Foam::scalar Foam::dropletFiber::airSampler::cellValue
         return s.value;
     }
     return mesh_.lookupObject<volScalarField>(s.fieldName)[celli];
+}
+
+
+Foam::label Foam::dropletFiber::airSampler::countNonFinite
+(
+    const volVectorField& U
+)
+{
+    // std::isfinite only: arithmetic on them would trap
+    auto nonFinite = [](const vector& u)
+    {
+        return
+            !std::isfinite(u.x())
+         || !std::isfinite(u.y())
+         || !std::isfinite(u.z());
+    };
+    label count = 0;
+    for (const vector& u : U.primitiveField())
+    {
+        count += nonFinite(u) ? 1 : 0;
+    }
+    for (const fvPatchVectorField& patchU : U.boundaryField())
+    {
+        for (const vector& u : patchU)
+        {
+            count += nonFinite(u) ? 1 : 0;
+        }
+    }
+    return returnReduce(count, sumOp<label>());
 }
 
 
@@ -251,7 +283,16 @@ Foam::scalar Foam::dropletFiber::airSampler::referenceViscosity() const
 {
     const label n = points.cols();
     const volVectorField& U = mesh_.lookupObject<volVectorField>(UName_);
-    interpolationCellPoint<vector> interpU(U);
+    // A diverged flow: OpenFOAM's cell-point interpolation traps on
+    // non-finite values (SIGFPE: its parallel synchronisation compares
+    // them), so then the points get their cells' values, and the caller
+    // stops on the first that is not finite
+    nonFiniteVelocityCells_ = countNonFinite(U);
+    autoPtr<interpolationCellPoint<vector>> interpU;
+    if (!nonFiniteVelocityCells_)
+    {
+        interpU.reset(new interpolationCellPoint<vector>(U));
+    }
 
     // Per point: U (3), rho, mu, number of processors that found it; summed
     // across processors in one reduction
@@ -275,7 +316,10 @@ Foam::scalar Foam::dropletFiber::airSampler::referenceViscosity() const
         {
             continue;
         }
-        const vector u = interpolateU(interpU, p, celli, tetHint_[i]);
+        const vector u =
+            interpU.valid()
+          ? interpolateU(*interpU, p, celli, tetHint_[i])
+          : U[celli];
         scalar* v = &values[width*i];
         v[0] = u.x();
         v[1] = u.y();
@@ -311,6 +355,49 @@ Foam::scalar Foam::dropletFiber::airSampler::referenceViscosity() const
         }
     }
     return air;
+}
+
+
+Foam::label Foam::dropletFiber::airSampler::firstNonFinite
+(
+    const ::dropletFiber::AirSample& air,
+    string& quantity
+) const
+{
+    auto describe = [](const source& s)
+    {
+        return
+            s.fieldName.empty()
+          ? "value " + Foam::name(s.value)
+          : "field " + s.fieldName;
+    };
+    // std::isfinite only: arithmetic on inf (Eigen's allFinite) would raise
+    // the floating-point exception this check is there to prevent
+    for (Eigen::Index i = 0; i < air.pointCount(); ++i)
+    {
+        const bool velocityFinite =
+            std::isfinite(air.velocity(0, i))
+         && std::isfinite(air.velocity(1, i))
+         && std::isfinite(air.velocity(2, i));
+        if (!velocityFinite)
+        {
+            quantity = "velocity (field " + UName_ + ")";
+        }
+        else if (!std::isfinite(air.density(i)))
+        {
+            quantity = "density (" + describe(rho_) + ")";
+        }
+        else if (!std::isfinite(air.viscosity(i)))
+        {
+            quantity = "viscosity (" + describe(mu_) + ")";
+        }
+        else
+        {
+            continue;
+        }
+        return label(i);
+    }
+    return -1;
 }
 
 

@@ -20,6 +20,7 @@ Description
 #include "fvMesh.H"
 #include "PstreamReduceOps.H"
 #include "clockValue.H"
+#include "OStringStream.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -81,6 +82,12 @@ Foam::dictionary tableFileDict(const Foam::dictionary& dict)
     return fileDict;
 }
 
+
+Foam::point toPoint(const Eigen::Vector3d& x)
+{
+    return Foam::point(x.x(), x.y(), x.z());
+}
+
 } // End anonymous namespace
 
 
@@ -111,6 +118,13 @@ void Foam::functionObjects::dropletFiberCollision::buildStatefulParts
     const dictionary& dict
 )
 {
+    // The injectors first: the memory check counts the fibers they give
+    const dictionary fibersDict = dict.subOrEmptyDict("fibers");
+    for (const auto& spec : dropletFiber::readFiberInjectors(fibersDict))
+    {
+        injectors_.emplace_back(spec);
+    }
+    checkMemory(dict);
     grid_.reset
     (
         dropletFiber::checkedCoreCall
@@ -127,11 +141,22 @@ void Foam::functionObjects::dropletFiberCollision::buildStatefulParts
             }
         )
     );
-    const dictionary fibersDict = dict.subOrEmptyDict("fibers");
-    for (const auto& spec : dropletFiber::readFiberInjectors(fibersDict))
+}
+
+
+void Foam::functionObjects::dropletFiberCollision::checkMemory
+(
+    const dictionary& dict
+)
+{
+    std::vector<::dropletFiber::FiberInjectorSpec> specs;
+    for (const auto& injector : injectors_)
     {
-        injectors_.emplace_back(spec);
+        specs.push_back(injector.spec());
     }
+    const scalar deltaT = time_.deltaTValue();
+    memory_ = dropletFiber::estimateMemory(gridSettings_, specs, deltaT);
+    dropletFiber::checkMemory(dict, memory_, specs, deltaT);
 }
 
 
@@ -208,6 +233,12 @@ void Foam::functionObjects::dropletFiberCollision::reportSettings() const
             << " 'vectorised false;' for bitwise reproducible runs." << endl;
     }
     air_->report(Info);
+    scalar fiberPoints = 0;
+    for (const auto& fiber : fibers_)
+    {
+        fiberPoints += fiber.pointCount();
+    }
+    dropletFiber::reportMemory(Info, memory_, fiberPoints);
     const auto& s = solverSettings_;
     Info<< "    fibers: gravity (" << s.gravity.x() << ' ' << s.gravity.y() << ' '
         << s.gravity.z() << "), drag "
@@ -216,6 +247,114 @@ void Foam::functionObjects::dropletFiberCollision::reportSettings() const
         << ", fibers now " << label(fibers_.size()) << nl
         << "    output: writeVtk " << Switch(writeVtk_).c_str()
         << ", writeGridVtk " << Switch(writeGridVtk_).c_str() << nl << endl;
+}
+
+
+Foam::boolList Foam::functionObjects::dropletFiberCollision::insideMesh
+(
+    const List<point>& points
+) const
+{
+    // Found on any processor
+    labelList found(points.size(), 0);
+    forAll(points, i)
+    {
+        found[i] = mesh_.findCell(points[i]) >= 0 ? 1 : 0;
+    }
+    Pstream::listCombineGather(found, maxEqOp<label>());
+    Pstream::listCombineScatter(found);
+    boolList inside(points.size());
+    forAll(found, i)
+    {
+        inside[i] = found[i] > 0;
+    }
+    return inside;
+}
+
+
+void Foam::functionObjects::dropletFiberCollision::warnPlacedOutside
+(
+    const std::vector<dropletFiber::namedFiber>& fixed
+) const
+{
+    // Nothing of these is wrong enough to stop (a mesh may grow, a fiber
+    // may reach in), but each runs on without a word otherwise
+    const boundBox& meshBox = mesh_.bounds();
+    const auto& g = gridSettings_.spec;
+    const boundBox gridBox(toPoint(g.lower), toPoint(g.upper));
+    if (!gridBox.overlaps(meshBox))
+    {
+        WarningInFunction
+            << type() << " " << name() << ": the grid box, lower "
+            << gridBox.min() << " upper " << gridBox.max() << ", lies "
+            << "entirely outside the mesh bounds " << meshBox.min() << " "
+            << meshBox.max() << ": no droplet reaches it, so the fibers "
+            << "capture nothing." << nl
+            << "    Set grid lower/upper inside the mesh." << endl;
+    }
+    for (const auto& named : fixed)
+    {
+        const Eigen::Matrix3Xd& x = named.fiber.positions();
+        List<point> points(label(x.cols()));
+        forAll(points, i)
+        {
+            points[i] = toPoint(x.col(i));
+        }
+        warnPointsOutside
+        (
+            "fixed fiber '" + named.name + "': points", points,
+            "there the fiber sees still air and no droplets, and a fiber "
+            "with no point in the mesh bounds is removed at the first step"
+        );
+    }
+    List<point> positions(label(injectors_.size()));
+    forAll(positions, k)
+    {
+        positions[k] = toPoint(injectors_[k].spec().position);
+    }
+    const boolList inside = insideMesh(positions);
+    forAll(inside, k)
+    {
+        if (!inside[k])
+        {
+            WarningInFunction
+                << type() << " " << name() << ": injector '"
+                << injectors_[k].spec().name.c_str() << "': position "
+                << positions[k] << " lies outside the mesh: its fibers start"
+                << " outside (in still air, with no droplets), and are "
+                << "removed at once unless a point lies in the mesh bounds."
+                << endl;
+        }
+    }
+}
+
+
+void Foam::functionObjects::dropletFiberCollision::warnPointsOutside
+(
+    const string& what,
+    const List<point>& points,
+    const string& consequence
+) const
+{
+    const boolList inside = insideMesh(points);
+    OStringStream outside;
+    label first = -1;
+    forAll(inside, i)
+    {
+        if (!inside[i])
+        {
+            outside << (first < 0 ? "" : " ") << i;
+            first = first < 0 ? i : first;
+        }
+    }
+    if (first >= 0)
+    {
+        WarningInFunction
+            << type() << " " << name() << ": " << what.c_str() << " "
+            << outside.str().c_str() << " of its " << points.size()
+            << " lie outside the mesh (the first at " << points[first]
+            << "): " << consequence.c_str() << "." << endl;
+    }
 }
 
 
@@ -235,6 +374,8 @@ Foam::functionObjects::dropletFiberCollision::selectClouds() const
         {
             const wordList available =
                 dropletFiber::cloudParcels::cloudNames(mesh_);
+            const word startTimeName =
+                time_.timeName(time_.startTime().value());
             FatalIOErrorInFunction(dict_)
                 << "Cloud '" << cloudName << "' named in entry 'clouds' of "
                 << type() << " '" << name() << "' does not exist at time "
@@ -242,6 +383,18 @@ Foam::functionObjects::dropletFiberCollision::selectClouds() const
                 << "    Clouds that exist: " << available << nl
                 << "    (A cloud created by another function object exists "
                 << "from the first time step on, wherever it is listed.)"
+                << nl << "    Check:" << nl
+                << "    - the cloud's name in 'clouds';" << nl
+                << "    - a warning or error of the cloud's own loading above in"
+                << " the log (a cloud function object that fails to load is"
+                << " only warned about, and the run goes on without it);" << nl
+                << "    - its files in " << startTimeName << "/" << cloud::prefix
+                << "/" << cloudName
+                << (Pstream::parRun() ? " of every processor" : "")
+                << ": reconstructPar does not carry over a colliding cloud's"
+                << " collision records (collisionRecords*), so a cloud"
+                << " reconstructed that way may fail to load; restart from the"
+                << " decomposed case, or from a time the cloud wrote itself."
                 << exit(FatalIOError);
         }
     }
@@ -400,7 +553,20 @@ void Foam::functionObjects::dropletFiberCollision::injectFibers(const scalar t)
 {
     for (auto& injector : injectors_)
     {
-        for (auto& fiber : injector.inject(t))
+        std::vector<::dropletFiber::Fiber> born;
+        try
+        {
+            born = injector.inject(t);
+        }
+        catch (const std::exception& e)
+        {
+            // A count beyond what a double holds exactly (a rate of ~1e12
+            // per second for hours): no run could hold those fibers anyway
+            FatalErrorInFunction
+                << type() << " " << name() << ": cannot inject fibers at time "
+                << time_.timeName() << ": " << e.what() << exit(FatalError);
+        }
+        for (auto& fiber : born)
         {
             totals_.fiberMassAdded += fiber.totalMass();
             fibers_.push_back(std::move(fiber));
@@ -564,15 +730,17 @@ Foam::functionObjects::dropletFiberCollision::dropletFiberCollision
 
     // Fibers: from the restart state of the start time, else from the
     // dictionary
+    std::vector<dropletFiber::namedFiber> fixed;
     if (!readState())
     {
-        const dictionary fibersDict = dict.subOrEmptyDict("fibers");
-        for (auto& named : dropletFiber::readFixedFibers(fibersDict))
-        {
-            totals_.fiberMassAdded += named.fiber.totalMass();
-            fibers_.push_back(std::move(named.fiber));
-            fiberOrigin_.push_back(named.name);
-        }
+        fixed = dropletFiber::readFixedFibers(dict.subOrEmptyDict("fibers"));
+    }
+    warnPlacedOutside(fixed);
+    for (auto& named : fixed)
+    {
+        totals_.fiberMassAdded += named.fiber.totalMass();
+        fibers_.push_back(std::move(named.fiber));
+        fiberOrigin_.push_back(named.name);
     }
 
     const fileName vtkDir = baseFileDir()/name/time_.timeName(time_.startTime().value());

@@ -33,7 +33,54 @@ Foam::functionObjects::dropletFiberCollision::sampleAir() const
     {
         return {};
     }
-    return air_->sample(points);
+    const ::dropletFiber::AirSample air = air_->sample(points);
+    stopIfAirNotFinite(air);
+    return air;
+}
+
+
+void Foam::functionObjects::dropletFiberCollision::stopIfAirNotFinite
+(
+    const ::dropletFiber::AirSample& air
+) const
+{
+    // The same sample on every processor: all stop, with the same message
+    string quantity;
+    const label p = air_->firstNonFinite(air, quantity);
+    if (p < 0 && air_->nonFiniteVelocityCells() == 0)
+    {
+        return;
+    }
+    if (p < 0)
+    {
+        FatalErrorInFunction
+            << type() << " " << name() << ": the air velocity is not finite"
+            << " in " << air_->nonFiniteVelocityCells() << " cells or"
+            << " boundary faces at time " << time_.timeName()
+            << " (at no fiber point)." << nl
+            << "    The flow has diverged: the fibers cannot be advanced in"
+            << " it." << exit(FatalError);
+    }
+    const ::dropletFiber::AirSampleLayout layout =
+        ::dropletFiber::airSampleLayout(fibers_);
+    std::size_t f = 0;
+    while
+    (
+        p >= layout.firstPoint[f]
+           + ::dropletFiber::airSamplePointCount(fibers_[f])
+    )
+    {
+        ++f;   // p is a point of a later fiber (immobile ones have none)
+    }
+    const label i = p - label(layout.firstPoint[f]);
+    const Eigen::Vector3d x = fibers_[f].positions().col(i);
+    FatalErrorInFunction
+        << type() << " " << name() << ": the air " << quantity.c_str()
+        << " is not finite at time " << time_.timeName() << " at point " << i
+        << " (" << x.x() << ' ' << x.y() << ' ' << x.z() << ") of fiber " << f
+        << " (from '" << fiberOrigin_[f] << "')." << nl
+        << "    The flow has diverged there (or the field holds nan/inf):"
+        << " the fibers cannot be advanced in it." << exit(FatalError);
 }
 
 

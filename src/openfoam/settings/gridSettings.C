@@ -5,6 +5,7 @@
 #include "gridSettings.H"
 #include "dictionaryChecks.H"
 #include "dictionaryKeys.H"
+#include "memoryEstimate.H"
 #include "fiberStateIO.H"
 #include "OStringStream.H"
 
@@ -26,7 +27,7 @@ const wordList gridKeys
 {
     "lower", "upper", "nodes", "spacing", "averagingSteps",
     "beta", "rMaxCap", "cloudInCellBelow", "negligibleWeight", "vectorised",
-    "dimension", "radiusAverage"
+    "dimension", "radiusAverage", "maxMemory"
 };
 
 
@@ -55,8 +56,9 @@ std::pair<vector, vector> readBounds
 
 
 //- Nodes per direction: entry nodes, or from entry spacing, else 50; a 2D
-//  mesh's empty direction is flat (one node layer) unless given
-Vector<label> readNodeCounts
+//  mesh's empty direction is flat (one node layer) unless given. Doubles:
+//  a tiny spacing gives counts no label holds (checkGridSize stops those)
+vector readNodeCounts
 (
     const dictionary& gridDict,
     const Vector<label>& geometricD,
@@ -64,7 +66,7 @@ Vector<label> readNodeCounts
     const vector& upper
 )
 {
-    Vector<label> nodes(50, 50, 50);
+    vector nodes(50, 50, 50);
     for (direction d = 0; d < vector::nComponents; ++d)
     {
         if (geometricD[d] < 0)
@@ -80,7 +82,8 @@ Vector<label> readNodeCounts
     }
     if (gridDict.found("nodes"))
     {
-        nodes = gridDict.get<Vector<label>>("nodes");
+        const Vector<label> given = gridDict.get<Vector<label>>("nodes");
+        nodes = vector(given.x(), given.y(), given.z());
     }
     else if (gridDict.found("spacing"))
     {
@@ -89,7 +92,7 @@ Vector<label> readNodeCounts
         {
             if (nodes[d] != 1)
             {
-                nodes[d] = max(2, label(std::round((upper[d] - lower[d])/h)) + 1);
+                nodes[d] = max(scalar(2), std::round((upper[d] - lower[d])/h) + 1);
             }
         }
     }
@@ -142,16 +145,22 @@ Foam::dropletFiber::gridSettings Foam::dropletFiber::readGridSettings
     checkKeys(gridDict, gridKeys);
     gridSettings s;
     const std::pair<vector, vector> bounds = readBounds(gridDict, mesh.bounds());
-    const Vector<label> nodes =
+    const vector nodes =
         readNodeCounts(gridDict, mesh.geometricD(), bounds.first, bounds.second);
+    s.averagingSteps = getLabelInRange(gridDict, "averagingSteps", 1, 1, 100000);
+    checkGridSize(gridDict, nodes, s.averagingSteps);
 
     s.spec.lower = toEigen(bounds.first);
     s.spec.upper = toEigen(bounds.second);
     s.spec.nodes = {{int(nodes.x()), int(nodes.y()), int(nodes.z())}};
     checkedCoreCall(gridDict, [&s]() { s.spec.validate(); });
 
-    s.averagingSteps = getLabelInRange(gridDict, "averagingSteps", 1, 1, 100000);
     s.kernel = readKernelSettings(gridDict);
+
+    // --- Entries not of the grid's state: a run-time edit is not compared
+    // by checkGridUnchanged (the memory check is made once, at the start)
+    // maxMemory [MB]: the user's limit on the memory per processor
+    s.maxMemory = bytesPerMB*getNonNegative(gridDict, "maxMemory", 0);
     return s;
 }
 

@@ -3,6 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <stdexcept>
+#include <string>
+
 using dropletFiber::FiberInjector;
 using dropletFiber::FiberInjectorSpec;
 
@@ -88,4 +91,54 @@ TEST(FiberInjector, badEntriesAreNamed)
     s = stream();
     s.endTime = s.startTime;
     EXPECT_THROW(FiberInjector{s}, std::invalid_argument);
+}
+
+// Rates above ~9,000 per second without an endTime: the adapter's default endTime is
+// 1e15 s, and (endTime - startTime) * rate no longer fits a 64-bit integer.
+TEST(FiberInjector, highRateWithoutEndTimeCountsExactly)
+{
+    auto s = stream();
+    s.rate = 2e4; // one fiber every 50 microseconds
+    s.startTime = 0.0;
+    s.endTime = 1e15; // no endTime given
+    FiberInjector injector(s);
+    // t = 1 ms: births at k * 50 us for k = 0..20 (0.001 * 2e4 rounds to 20 exactly)
+    EXPECT_EQ(injector.bornBy(0.001), 21);
+    EXPECT_EQ(injector.inject(0.001).size(), 21u);
+    EXPECT_EQ(injector.injectedCount(), 21);
+    // t = 1 s: k = 0..20000
+    EXPECT_EQ(injector.bornBy(1.0), 20001);
+
+    // 1e12 per second for 1000 s: k = 0..1e15 (1000 * 1e12 is exact)
+    s.rate = 1e12;
+    EXPECT_EQ(FiberInjector(s).bornBy(1000.0), 1000000000000001L);
+}
+
+TEST(FiberInjector, endTimeStillCapsHighRates)
+{
+    auto s = stream();
+    s.rate = 1e6;
+    s.startTime = 0.0;
+    s.endTime = 2.5e-5; // births at 0, 1, ..., 24 microseconds: 25
+    EXPECT_EQ(FiberInjector(s).bornBy(1.0), 25);
+}
+
+TEST(FiberInjector, countsBeyondExactIntegersNameTheRate)
+{
+    auto s = stream();
+    s.rate = 1e300;
+    s.startTime = 0.0;
+    s.endTime = 1e15;
+    FiberInjector injector(s);
+    EXPECT_EQ(injector.bornBy(-1.0), 0);
+    try
+    {
+        injector.bornBy(1.0);
+        FAIL() << "no exception";
+    }
+    catch (const std::overflow_error& e)
+    {
+        EXPECT_NE(std::string(e.what()).find("'rate'"), std::string::npos);
+        EXPECT_NE(std::string(e.what()).find("'stream'"), std::string::npos);
+    }
 }
