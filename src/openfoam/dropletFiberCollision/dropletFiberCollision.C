@@ -517,6 +517,7 @@ Foam::functionObjects::dropletFiberCollision::dropletFiberCollision
     lastTimeIndex_(-1),
     parcels_(),
     warnedSamplesOutside_(false),
+    restartFresh_(false),
     writeVtk_(true),
     writeGridVtk_(true)
 {
@@ -524,7 +525,7 @@ Foam::functionObjects::dropletFiberCollision::dropletFiberCollision
 
     // Fibers: from the restart state of the start time, else from the
     // dictionary
-    if (!readState())
+    if (!readStateOnEveryProcessor())
     {
         const dictionary fibersDict = dict.subOrEmptyDict("fibers");
         for (auto& named : dropletFiber::readFixedFibers(fibersDict))
@@ -542,8 +543,22 @@ Foam::functionObjects::dropletFiberCollision::dropletFiberCollision
     }
     fibersSeries_.reset(new ::dropletFiber::SeriesFile(vtkDir/"fibers.vtp.series"));
     gridSeries_.reset(new ::dropletFiber::SeriesFile(vtkDir/"grid.vti.series"));
-    fibersSeries_->load(time_.value() + 0.5*time_.deltaTValue());
-    gridSeries_->load(time_.value() + 0.5*time_.deltaTValue());
+    dropletFiber::checkedCoreCall
+    (
+        dict,
+        [this]()
+        {
+            fibersSeries_->load(time_.value() + 0.5*time_.deltaTValue());
+            gridSeries_->load(time_.value() + 0.5*time_.deltaTValue());
+        }
+    );
+    stateMarker_.reset
+    (
+        new dropletFiber::restartStateMarker
+        (
+            time_, name, [this]() { return stateFollowsWrite(); }
+        )
+    );
 
     reportSettings();
     if (writeToFile())
@@ -566,6 +581,12 @@ bool Foam::functionObjects::dropletFiberCollision::read(const dictionary& dict)
     const bool running = bool(grid_);
     fvMeshFunctionObject::read(dict);
     readOutputAndClouds(dict);
+    // Read at construction only: fresh ignores the restart state
+    restartFresh_ =
+        dropletFiber::getChoice
+        (
+            dict, "restart", "continue", {"continue", "fresh"}
+        ) == "fresh";
     const dropletFiber::gridSettings grid =
         dropletFiber::readGridSettings(dict.subOrEmptyDict("grid"), mesh_);
     collision_ = dropletFiber::readCollisionSettings(dict);
@@ -614,7 +635,8 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
     step.droplets = returnReduce(parcels_.nDroplets(), sumOp<scalar>());
 
     // 2. Onto the grid; summed across processors; averaged over the window
-    step.deposit = depositParcels(dt);
+    step.deposit =
+        coreCall("depositing the parcels", [&]() { return depositParcels(dt); });
     totals_.parcelMass += step.deposit.massIn;
     totals_.deposited += step.deposit.massDeposited;
     totals_.outside += step.deposit.massOutside;
@@ -622,15 +644,20 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
 
     // 3. New fibers
     clockValue fiberStart(true);
-    injectFibers(t);
+    coreCall("injecting fibers", [&]() { injectFibers(t); });
 
     // 4. Stochastic collision mass of every segment, from the grid (in
     //    parallel: of the fibers this processor advances)
-    ::dropletFiber::CaptureSources capture = collide(dt);
+    ::dropletFiber::CaptureSources capture =
+        coreCall("colliding fibers and droplets", [&]() { return collide(dt); });
 
     // 5. Advance the fibers: capture, air drag, bending, inextensibility;
     //    afterwards every processor holds every fiber and its capture
-    const ::dropletFiber::StepReport report = advanceFibers(dt, capture);
+    const ::dropletFiber::StepReport report =
+        coreCall
+        (
+            "advancing the fibers", [&]() { return advanceFibers(dt, capture); }
+        );
     step.capturedStep = capturedMass(capture);
     step.maxSegmentLengthError = report.maxSegmentLengthError;
     step.subSteps = report.subSteps;
@@ -644,7 +671,7 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
     reportStep(step);
     if (time_.writeTime())
     {
-        writeState();
+        coreCall("writing the restart state", [this]() { writeState(); });
         reportConservation();
     }
     return true;
@@ -653,7 +680,7 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
 
 bool Foam::functionObjects::dropletFiberCollision::write()
 {
-    writeVtkFiles();
+    coreCall("writing the VTK files", [this]() { writeVtkFiles(); });
     return true;
 }
 
