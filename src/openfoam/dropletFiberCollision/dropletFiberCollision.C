@@ -51,7 +51,7 @@ namespace
 const Foam::wordList functionObjectKeys
 {
     "clouds", "gather", "grid", "collision", "air", "fibers",
-    "writeVtk", "writeGridVtk",
+    "writeVtk", "writeGridVtk", "restart",
     // functionObject, functionObjectList: the object itself
     "type", "libs", "functionObjectLibs", "enabled", "log",
     // regionFunctionObject (fvMeshFunctionObject)
@@ -723,6 +723,7 @@ Foam::functionObjects::dropletFiberCollision::dropletFiberCollision
     lastTimeIndex_(-1),
     parcels_(),
     warnedSamplesOutside_(false),
+    restartFresh_(false),
     writeVtk_(true),
     writeGridVtk_(true)
 {
@@ -731,7 +732,7 @@ Foam::functionObjects::dropletFiberCollision::dropletFiberCollision
     // Fibers: from the restart state of the start time, else from the
     // dictionary
     std::vector<dropletFiber::namedFiber> fixed;
-    if (!readState())
+    if (!readStateOnEveryProcessor())
     {
         fixed = dropletFiber::readFixedFibers(dict.subOrEmptyDict("fibers"));
     }
@@ -750,8 +751,22 @@ Foam::functionObjects::dropletFiberCollision::dropletFiberCollision
     }
     fibersSeries_.reset(new ::dropletFiber::SeriesFile(vtkDir/"fibers.vtp.series"));
     gridSeries_.reset(new ::dropletFiber::SeriesFile(vtkDir/"grid.vti.series"));
-    fibersSeries_->load(time_.value() + 0.5*time_.deltaTValue());
-    gridSeries_->load(time_.value() + 0.5*time_.deltaTValue());
+    dropletFiber::checkedCoreCall
+    (
+        dict,
+        [this]()
+        {
+            fibersSeries_->load(time_.value() + 0.5*time_.deltaTValue());
+            gridSeries_->load(time_.value() + 0.5*time_.deltaTValue());
+        }
+    );
+    stateMarker_.reset
+    (
+        new dropletFiber::restartStateMarker
+        (
+            time_, name, [this]() { return stateFollowsWrite(); }
+        )
+    );
 
     reportSettings();
     if (writeToFile())
@@ -775,6 +790,12 @@ bool Foam::functionObjects::dropletFiberCollision::read(const dictionary& dict)
     dropletFiber::checkKeys(dict, functionObjectKeys);
     fvMeshFunctionObject::read(dict);
     readOutputAndClouds(dict);
+    // Read at construction only: fresh ignores the restart state
+    restartFresh_ =
+        dropletFiber::getChoice
+        (
+            dict, "restart", "continue", {"continue", "fresh"}
+        ) == "fresh";
     const dropletFiber::gridSettings grid =
         dropletFiber::readGridSettings(dict.subOrEmptyDict("grid"), mesh_);
     collision_ = dropletFiber::readCollisionSettings(dict);
@@ -823,7 +844,8 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
     step.droplets = returnReduce(parcels_.nDroplets(), sumOp<scalar>());
 
     // 2. Onto the grid; summed across processors; averaged over the window
-    step.deposit = depositParcels(dt);
+    step.deposit =
+        coreCall("depositing the parcels", [&]() { return depositParcels(dt); });
     totals_.parcelMass += step.deposit.massIn;
     totals_.deposited += step.deposit.massDeposited;
     totals_.outside += step.deposit.massOutside;
@@ -831,15 +853,20 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
 
     // 3. New fibers
     clockValue fiberStart(true);
-    injectFibers(t);
+    coreCall("injecting fibers", [&]() { injectFibers(t); });
 
     // 4. Stochastic collision mass of every segment, from the grid (in
     //    parallel: of the fibers this processor advances)
-    ::dropletFiber::CaptureSources capture = collide(dt);
+    ::dropletFiber::CaptureSources capture =
+        coreCall("colliding fibers and droplets", [&]() { return collide(dt); });
 
     // 5. Advance the fibers: capture, air drag, bending, inextensibility;
     //    afterwards every processor holds every fiber and its capture
-    const ::dropletFiber::StepReport report = advanceFibers(dt, capture);
+    const ::dropletFiber::StepReport report =
+        coreCall
+        (
+            "advancing the fibers", [&]() { return advanceFibers(dt, capture); }
+        );
     step.capturedStep = capturedMass(capture);
     step.maxSegmentLengthError = report.maxSegmentLengthError;
     step.subSteps = report.subSteps;
@@ -853,7 +880,7 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
     reportStep(step);
     if (time_.writeTime())
     {
-        writeState();
+        coreCall("writing the restart state", [this]() { writeState(); });
         reportConservation();
     }
     return true;
@@ -862,7 +889,7 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
 
 bool Foam::functionObjects::dropletFiberCollision::write()
 {
-    writeVtkFiles();
+    coreCall("writing the VTK files", [this]() { writeVtkFiles(); });
     return true;
 }
 

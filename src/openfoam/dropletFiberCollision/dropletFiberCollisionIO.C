@@ -2,18 +2,16 @@
   dropletFiber: stochastic droplet-fiber coupling for OpenFOAM
 -------------------------------------------------------------------------------
 Description
-    Output (per-step table, VTK files) and the restart state of
-    dropletFiberCollision.
+    Output of dropletFiberCollision: the per-step table, the log and the VTK
+    files (the restart state: dropletFiberCollisionRestart.C).
 
 \*---------------------------------------------------------------------------*/
 
 #include "dropletFiberCollision.H"
-#include "fiberStateIO.H"
 #include "dictionaryChecks.H"
 #include "Time.H"
 #include "fvMesh.H"
 #include "OFstream.H"
-#include "IFstream.H"
 #include "OSspecific.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -92,178 +90,6 @@ void Foam::functionObjects::dropletFiberCollision::reportConservation() const
         << " (balance " << balance << " kg)" << nl
         << "    parcel-steps with the influence radius capped at rMaxCap: "
         << totals_.parcelsCapped << nl << endl;
-}
-
-
-Foam::fileName Foam::functionObjects::dropletFiberCollision::statePath
-(
-    const word& timeName
-) const
-{
-    return time_.path()/timeName/"uniform"/"dropletFiber"/name();
-}
-
-
-void Foam::functionObjects::dropletFiberCollision::writeState() const
-{
-    // Every processor holds the same fibers and grid: each writes its own
-    // copy (processorN/<time>/uniform/...), so that every processor reads its
-    // own on restart, also after a change of the number of processors
-    // through reconstructPar/decomposePar (which copy uniform/).
-    // Entries added to a dictionary are turned into tokens at the default
-    // precision: raise it for the restart state (bit-for-bit restart).
-    const unsigned oldPrecision = IOstream::defaultPrecision(17);
-    dictionary state;
-    state.add("time", time_.value());
-    state.add("timeIndex", time_.timeIndex());
-
-    dictionary fibers;
-    for (std::size_t f = 0; f < fibers_.size(); ++f)
-    {
-        dictionary d = dropletFiber::fiberStateDict(fibers_[f].state());
-        d.add("origin", fiberOrigin_[f]);
-        fibers.add(word("fiber" + Foam::name(label(f))), d);
-    }
-    state.add("fibers", fibers);
-
-    dictionary injectors;
-    for (const auto& injector : injectors_)
-    {
-        injectors.add(word(injector.spec().name), label(injector.injectedCount()));
-    }
-    state.add("injectors", injectors);
-
-    dictionary totals;
-    totals.add("parcelMass", totals_.parcelMass);
-    totals.add("deposited", totals_.deposited);
-    totals.add("outside", totals_.outside);
-    totals.add("captured", totals_.captured);
-    totals.add("fiberMassAdded", totals_.fiberMassAdded);
-    totals.add("fiberMassRemoved", totals_.fiberMassRemoved);
-    totals.add("fibersRemoved", totals_.fibersRemoved);
-    totals.add("parcelsCapped", totals_.parcelsCapped);
-    state.add("totals", totals);
-
-    const ::dropletFiber::WindowState window = grid_->saveWindow();
-    state.add
-    (
-        "gridWindowCounters",
-        dropletFiber::toScalarList
-        (
-            std::vector<double>(window.counters.begin(), window.counters.end())
-        )
-    );
-    // The window's values are the bulk of the state (nodes x 7 x steps): they
-    // go to a binary OpenFOAM list beside it, exact and ten times faster to
-    // write than 17-digit text
-    state.add("gridWindowValueCount", label(window.values.size()));
-
-    IOstream::defaultPrecision(oldPrecision);
-
-    const fileName path = statePath(time_.timeName());
-    mkDir(path.path());
-    {
-        OFstream ws(path + ".gridWindow", IOstream::BINARY);
-        // Written straight from the window's buffer (a view, no copy)
-        ws << UList<scalar>
-        (
-            const_cast<scalar*>(window.values.data()),
-            label(window.values.size())
-        );
-        if (!ws.good())
-        {
-            FatalErrorInFunction
-                << "Cannot write restart state " << ws.name() << exit(FatalError);
-        }
-    }
-    OFstream os(path);
-    os.precision(17);
-    os  << "// dropletFiber restart state of function object " << name()
-        << " at time " << time_.timeName() << nl;
-    state.write(os, false);
-    if (!os.good())
-    {
-        FatalErrorInFunction
-            << "Cannot write restart state " << path << exit(FatalError);
-    }
-}
-
-
-bool Foam::functionObjects::dropletFiberCollision::readState()
-{
-    const word startName = time_.timeName();
-    const fileName path = statePath(startName);
-    if (!isFile(path))
-    {
-        Info<< type() << " " << name() << ": no restart state " << path
-            << nl << "    "
-            << (time_.value() > 0 ? "restart without state: " : "")
-            << "starting fresh (fibers from the dictionary, empty grid window)"
-            << nl;
-        return false;
-    }
-
-    IFstream is(path);
-    const dictionary state(is);
-
-    const dictionary& fibers = state.subDict("fibers");
-    fibers_.clear();
-    fiberOrigin_.clear();
-    for (const entry& e : fibers)
-    {
-        const dictionary& d = e.dict();
-        fibers_.emplace_back(dropletFiber::fiberStateFromDict(d));
-        fiberOrigin_.push_back(d.get<word>("origin"));
-    }
-
-    const dictionary& injectors = state.subDict("injectors");
-    for (auto& injector : injectors_)
-    {
-        injector.setInjectedCount
-        (
-            injectors.lookupOrDefault<label>(word(injector.spec().name), 0)
-        );
-    }
-
-    const dictionary& totals = state.subDict("totals");
-    totals_.parcelMass = totals.get<scalar>("parcelMass");
-    totals_.deposited = totals.get<scalar>("deposited");
-    totals_.outside = totals.get<scalar>("outside");
-    totals_.captured = totals.get<scalar>("captured");
-    totals_.fiberMassAdded = totals.get<scalar>("fiberMassAdded");
-    totals_.fiberMassRemoved = totals.get<scalar>("fiberMassRemoved");
-    totals_.fibersRemoved = totals.get<label>("fibersRemoved");
-    totals_.parcelsCapped = totals.lookupOrDefault<label>("parcelsCapped", 0);
-
-    dropletFiber::checkedCoreCall
-    (
-        state,
-        [&]()
-        {
-            ::dropletFiber::WindowState window;
-            for (const scalar c : state.get<scalarList>("gridWindowCounters"))
-            {
-                window.counters.push_back(std::int64_t(c));
-            }
-            IFstream ws(path + ".gridWindow", IOstream::BINARY);
-            const scalarList values(ws);
-            if (!ws.good() || values.size() != state.get<label>("gridWindowValueCount"))
-            {
-                FatalIOErrorInFunction(state)
-                    << "Restart state " << ws.name() << " is missing or does "
-                    << "not hold the " << state.get<label>("gridWindowValueCount")
-                    << " values of the averaging window: delete "
-                    << path << " to start fresh." << exit(FatalIOError);
-            }
-            window.values = dropletFiber::toStdVector(values);
-            grid_->restoreWindow(window);
-        }
-    );
-
-    Info<< type() << " " << name() << ": restarted from " << path << ": "
-        << label(fibers_.size()) << " fibers, captured mass so far "
-        << totals_.captured << " kg" << nl;
-    return true;
 }
 
 

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "fiberStateIO.H"
+#include "dictionaryChecks.H"
 
 // * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
 
@@ -24,33 +25,72 @@ dictionary endDict(const ::dropletFiber::EndCondition& end)
     return d;
 }
 
+//- Entry key of d: a list of finite values, size values if size >= 0, else
+//  a non-empty multiple of 3; each allowed(value) (allowedText says what)
+template<class Predicate>
+scalarList checkedList
+(
+    const dictionary& d,
+    const word& key,
+    const label size,
+    Predicate allowed,
+    const char* allowedText
+)
+{
+    const scalarList values = d.get<scalarList>(key);
+    if (size >= 0 ? values.size() != size : values.empty() || values.size() % 3)
+    {
+        FatalIOErrorInFunction(d)
+            << "Entry '" << key << "' has " << values.size() << " values: "
+            << "expected " << (size >= 0 ? Foam::name(size) : word("3 per point"))
+            << " (positions and velocities: 3 per point, segment entries:"
+            << " one per segment, points - 1)." << exit(FatalIOError);
+    }
+    forAll(values, i)
+    {
+        if (!std::isfinite(values[i]) || !allowed(values[i]))
+        {
+            FatalIOErrorInFunction(d)
+                << "Entry '" << key << "': value " << i << " is " << values[i]
+                << ": allowed are finite values" << allowedText << "."
+                << exit(FatalIOError);
+        }
+    }
+    return values;
+}
+
+bool anyValue(scalar)
+{
+    return true;
+}
+
+template<class EigenType>
+void readInto
+(
+    const dictionary& d,
+    const word& key,
+    EigenType& m,
+    const label rows,
+    const label cols
+)
+{
+    const scalarList values = checkedList(d, key, rows*cols, anyValue, "");
+    m.resize(rows, cols);
+    std::copy(values.begin(), values.end(), m.data());
+}
+
 ::dropletFiber::EndCondition endFromDict(const dictionary& d)
 {
     ::dropletFiber::EndCondition end;
-    const word type = d.get<word>("type");
+    const word type =
+        Foam::dropletFiber::getChoice(d, "type", "", {"free", "pinned", "clamped"});
     end.type =
         type == "free" ? ::dropletFiber::EndType::free
       : type == "pinned" ? ::dropletFiber::EndType::pinned
       : ::dropletFiber::EndType::clamped;
-    const scalarList v = d.get<scalarList>("anchorVelocity");
-    const scalarList c = d.get<scalarList>("clampDirection");
-    end.anchorVelocity = Eigen::Vector3d(v[0], v[1], v[2]);
-    end.clampDirection = Eigen::Vector3d(c[0], c[1], c[2]);
+    readInto(d, "anchorVelocity", end.anchorVelocity, 3, 1);
+    readInto(d, "clampDirection", end.clampDirection, 3, 1);
     return end;
-}
-
-template<class EigenType>
-void readInto(const dictionary& d, const word& key, EigenType& m, const label rows)
-{
-    const scalarList values = d.get<scalarList>(key);
-    if (values.size() % rows != 0)
-    {
-        FatalIOErrorInFunction(d)
-            << "Entry '" << key << "' has " << values.size()
-            << " values, not a multiple of " << rows << exit(FatalIOError);
-    }
-    m.resize(rows, values.size()/rows);
-    std::copy(values.begin(), values.end(), m.data());
 }
 
 } // End anonymous namespace
@@ -115,22 +155,36 @@ Foam::dictionary Foam::dropletFiber::fiberStateDict
     const dictionary& d
 )
 {
+    // Every value checked here, naming the entry: the core's own checks
+    // (Fiber::validate) do not see NaN and name no file
     ::dropletFiber::FiberState s;
-    s.material.radius = d.get<scalar>("radius");
-    s.material.density = d.get<scalar>("density");
-    s.material.youngsModulus = d.get<scalar>("youngsModulus");
+    s.material.radius = getPositive(d, "radius");
+    s.material.density = getPositive(d, "density");
+    s.material.youngsModulus = getCheckedScalar
+    (
+        d, "youngsModulus", nullptr, [](scalar v) { return v >= 0; }, ">= 0"
+    );
     s.immobile = d.get<bool>("immobile");
     s.startEnd = endFromDict(d.subDict("startEnd"));
     s.endEnd = endFromDict(d.subDict("endEnd"));
-    readInto(d, "positions", s.positions, 3);
-    readInto(d, "velocities", s.velocities, 3);
-    readInto(d, "externalForce", s.externalForce, 3);
+    const label points =
+        checkedList(d, "positions", -1, anyValue, "").size()/3;
+    readInto(d, "positions", s.positions, 3, points);
+    readInto(d, "velocities", s.velocities, 3, points);
+    readInto(d, "externalForce", s.externalForce, 3, points);
+    const label segments = points - 1;
     Eigen::Matrix<double, 1, Eigen::Dynamic> row;
-    readInto(d, "restLengths", row, 1);
-    s.restLengths = row.transpose();
-    readInto(d, "capturedMass", row, 1);
-    s.segmentCapturedMass = row.transpose();
-    readInto(d, "tension", row, 1);
+    const scalarList restLengths = checkedList
+    (
+        d, "restLengths", segments, [](scalar v) { return v > 0; }, " > 0"
+    );
+    s.restLengths = Eigen::Map<const Eigen::VectorXd>(restLengths.cdata(), segments);
+    const scalarList captured = checkedList
+    (
+        d, "capturedMass", segments, [](scalar v) { return v >= 0; }, " >= 0"
+    );
+    s.segmentCapturedMass = Eigen::Map<const Eigen::VectorXd>(captured.cdata(), segments);
+    readInto(d, "tension", row, 1, segments);
     s.tension = row.transpose();
     return s;
 }

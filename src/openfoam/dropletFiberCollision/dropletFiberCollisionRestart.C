@@ -1,0 +1,466 @@
+/*---------------------------------------------------------------------------*\
+  dropletFiber: stochastic droplet-fiber coupling for OpenFOAM
+-------------------------------------------------------------------------------
+Description
+    The restart state of dropletFiberCollision: written atomically at every
+    write time, and at a restart read back with every value checked, so that
+    a run either continues exactly or stops naming the file and the entry.
+
+    Files, in \<time\>/uniform/dropletFiber/ (of every processor in parallel):
+      \<name\>             fibers, injector counters, totals (dictionary)
+      \<name\>.gridWindow  the averaging window's values (binary list)
+      \<name\>.marker      written by OpenFOAM with the fields, when the state
+                           follows (restartStateMarker)
+
+\*---------------------------------------------------------------------------*/
+
+#include "dropletFiberCollision.H"
+#include "fiberStateIO.H"
+#include "dictionaryChecks.H"
+#include "restartStateMarker.H"
+#include "Time.H"
+#include "OFstream.H"
+#include "IFstream.H"
+#include "OStringStream.H"
+#include "OSspecific.H"
+#include "stringOps.H"
+#include "PstreamReduceOps.H"
+
+// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
+
+namespace
+{
+
+using namespace Foam;
+
+//- Write a file through a temporary beside it, renamed when complete: a run
+//  killed meanwhile leaves no file or the complete one (rename is atomic),
+//  never a truncated one
+template<class Write>
+void writeAtomically
+(
+    const fileName& path,
+    const IOstream::streamFormat format,
+    Write&& write
+)
+{
+    const fileName tmp = path + ".tmp";
+    {
+        OFstream os(tmp, format);
+        write(os);
+        os.flush();
+        if (!os.good())
+        {
+            FatalErrorInFunction
+                << "Cannot write restart state " << tmp << exit(FatalError);
+        }
+    }
+    if (!Foam::mv(tmp, path))
+    {
+        FatalErrorInFunction
+            << "Cannot rename " << tmp << " to " << path << exit(FatalError);
+    }
+}
+
+
+//- A required count: an integer >= 0
+label requiredCount(const dictionary& dict, const word& key)
+{
+    const label value = dict.get<label>(key);
+    if (value < 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry '" << key << "' is " << value
+            << ": allowed are counts >= 0." << exit(FatalIOError);
+    }
+    return value;
+}
+
+
+//- The window's counters (integers written as scalars), each checked
+std::vector<std::int64_t> windowCounters(const dictionary& state)
+{
+    const scalarList counters = state.get<scalarList>("gridWindowCounters");
+    std::vector<std::int64_t> result;
+    result.reserve(counters.size());
+    forAll(counters, i)
+    {
+        const scalar c = counters[i];
+        if (!std::isfinite(c) || c != std::floor(c) || mag(c) > 1e15)
+        {
+            FatalIOErrorInFunction(state)
+                << "Entry 'gridWindowCounters': value " << i << " is " << c
+                << ": allowed are integers (the window's layout)."
+                << exit(FatalIOError);
+        }
+        result.push_back(std::int64_t(c));
+    }
+    return result;
+}
+
+
+//- The window's values, read from file and each checked: finite, and the
+//  sums of masses, counts and radii not negative (momenta may be)
+std::vector<double> windowValues(const fileName& file, const label expected)
+{
+    if (!isFile(file))
+    {
+        FatalIOErrorInFunction(file)
+            << "Restart state " << file << " is missing: it holds the "
+            << expected << " values of the averaging window." << nl
+            << "    Restart from an earlier time, or set 'restart fresh;'."
+            << exit(FatalIOError);
+    }
+    IFstream is(file, IOstream::BINARY);
+    const scalarList values(is);
+    if (!is.good() || values.size() != expected)
+    {
+        FatalIOErrorInFunction(file)
+            << "Restart state " << file << " holds " << values.size()
+            << " values, the state's entry 'gridWindowValueCount' says "
+            << expected << "." << exit(FatalIOError);
+    }
+    const label nQ = ::dropletFiber::nQuantities;
+    forAll(values, i)
+    {
+        const bool mayBeNegative = i % nQ >= ::dropletFiber::quantityMomentumX;
+        if (!std::isfinite(values[i]) || (!mayBeNegative && values[i] < 0))
+        {
+            FatalIOErrorInFunction(file)
+                << "Restart state " << file << ": value " << i
+                << " (quantity " << i % nQ << " of " << nQ << ") is "
+                << values[i] << ": allowed are finite values, >= 0 for the"
+                << " droplet mass, count and radius sums (quantities 0 to 3)."
+                << exit(FatalIOError);
+        }
+    }
+    return Foam::dropletFiber::toStdVector(values);
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::fileName Foam::functionObjects::dropletFiberCollision::statePath
+(
+    const word& timeName
+) const
+{
+    return time_.path()/timeName/"uniform"/"dropletFiber"/name();
+}
+
+
+bool Foam::functionObjects::dropletFiberCollision::stateFollowsWrite() const
+{
+    // Asked at OpenFOAM's write of the fields: execute() writes the state
+    // after it when it ran the step before (or the run started then) and the
+    // time lies within timeStart/timeEnd as timeControl sees it (triggers,
+    // rarely used, are not looked at)
+    const label previous =
+        lastTimeIndex_ >= 0 ? lastTimeIndex_ : time_.startTimeIndex();
+    const scalar t = time_.value();
+    const scalar halfStep = 0.5*time_.deltaTValue();
+    const scalar timeStart = dict_.lookupOrDefault<scalar>("timeStart", -VGREAT);
+    const scalar timeEnd = dict_.lookupOrDefault<scalar>("timeEnd", VGREAT);
+    return
+        previous == time_.timeIndex() - 1
+     && t >= time_.userTimeToTime(timeStart) - halfStep
+     && t <= time_.userTimeToTime(timeEnd) + halfStep;
+}
+
+
+Foam::dictionary Foam::functionObjects::dropletFiberCollision::stateDict
+(
+    const ::dropletFiber::WindowState& window
+) const
+{
+    // Entries added to a dictionary are turned into tokens at the default
+    // precision: raise it for the restart state (bit-for-bit restart).
+    const unsigned oldPrecision = IOstream::defaultPrecision(17);
+    dictionary state;
+    state.add("time", time_.value());
+    state.add("timeIndex", time_.timeIndex());
+
+    dictionary fibers;
+    for (std::size_t f = 0; f < fibers_.size(); ++f)
+    {
+        dictionary d = dropletFiber::fiberStateDict(fibers_[f].state());
+        d.add("origin", fiberOrigin_[f]);
+        fibers.add(word("fiber" + Foam::name(label(f))), d);
+    }
+    state.add("fibers", fibers);
+
+    dictionary injectors;
+    for (const auto& injector : injectors_)
+    {
+        injectors.add(word(injector.spec().name), label(injector.injectedCount()));
+    }
+    state.add("injectors", injectors);
+
+    dictionary totals;
+    totals.add("parcelMass", totals_.parcelMass);
+    totals.add("deposited", totals_.deposited);
+    totals.add("outside", totals_.outside);
+    totals.add("captured", totals_.captured);
+    totals.add("fiberMassAdded", totals_.fiberMassAdded);
+    totals.add("fiberMassRemoved", totals_.fiberMassRemoved);
+    totals.add("fibersRemoved", totals_.fibersRemoved);
+    totals.add("parcelsCapped", totals_.parcelsCapped);
+    state.add("totals", totals);
+
+    state.add
+    (
+        "gridWindowCounters",
+        dropletFiber::toScalarList
+        (
+            std::vector<double>(window.counters.begin(), window.counters.end())
+        )
+    );
+    // The window's values are the bulk of the state (nodes x 7 x steps): they
+    // go to a binary OpenFOAM list beside it, exact and ten times faster to
+    // write than 17-digit text
+    state.add("gridWindowValueCount", label(window.values.size()));
+
+    IOstream::defaultPrecision(oldPrecision);
+    return state;
+}
+
+
+void Foam::functionObjects::dropletFiberCollision::writeState() const
+{
+    // Every processor holds the same fibers and grid: each writes its own
+    // copy (processorN/<time>/uniform/...), so that every processor reads its
+    // own on restart, also after a change of the number of processors
+    // through reconstructPar/decomposePar (which copy uniform/).
+    // The window first, the dictionary last: a dictionary that exists
+    // belongs to a complete state.
+    const ::dropletFiber::WindowState window = grid_->saveWindow();
+    const fileName path = statePath(time_.timeName());
+    mkDir(path.path());
+    writeAtomically
+    (
+        path + ".gridWindow",
+        IOstream::BINARY,
+        [&window](OFstream& os)
+        {
+            // Written straight from the window's buffer (a view, no copy)
+            os  << UList<scalar>
+            (
+                const_cast<scalar*>(window.values.data()),
+                label(window.values.size())
+            );
+        }
+    );
+    const dictionary state = stateDict(window);
+    writeAtomically
+    (
+        path,
+        IOstream::ASCII,
+        [&](OFstream& os)
+        {
+            os.precision(17);
+            os  << "// dropletFiber restart state of function object " << name()
+                << " at time " << time_.timeName() << nl;
+            state.write(os, false);
+        }
+    );
+}
+
+
+void Foam::functionObjects::dropletFiberCollision::stopIfStateMissing
+(
+    const fileName& path
+) const
+{
+    const fileName marker =
+        dropletFiber::restartStateMarker::path(time_, time_.timeName(), name());
+    if (isFile(marker))
+    {
+        FatalIOErrorInFunction(path)
+            << "Restart state " << path << " is missing, but " << marker
+            << " says that " << type() << " '" << name() << "' ran up to"
+            << " time " << time_.timeName() << ": the run was stopped"
+            << " between OpenFOAM's write of the fields and the write of the"
+            << " state (fibers, captured mass, averaging window)." << nl
+            << "    Restart from an earlier time, or set 'restart fresh;' in"
+            << " the function object to start again from the dictionary's"
+            << " fibers and an empty window." << exit(FatalIOError);
+    }
+}
+
+
+bool Foam::functionObjects::dropletFiberCollision::readState()
+{
+    const fileName path = statePath(time_.timeName());
+    if (restartFresh_)
+    {
+        Info<< type() << " " << name() << ": restart fresh: ";
+        if (isFile(path))
+        {
+            Info<< "the restart state " << path << " is not read, ";
+        }
+        Info<< "starting from the dictionary's fibers and an empty grid"
+            << " window" << nl;
+        return false;
+    }
+    if (!isFile(path))
+    {
+        stopIfStateMissing(path);
+        Info<< type() << " " << name() << ": no restart state " << path
+            << nl << "    "
+            << (time_.value() > 0 ? "restart without state: " : "")
+            << "starting fresh (fibers from the dictionary, empty grid window)"
+            << nl;
+        return false;
+    }
+
+    IFstream is(path);
+    const dictionary state(is);
+    restoreFibers(state.subDict("fibers"));
+    restoreInjectorCounts(state.subDict("injectors"));
+    restoreTotals(state.subDict("totals"));
+    restoreWindow(state, path);
+
+    Info<< type() << " " << name() << ": restarted from " << path << ": "
+        << label(fibers_.size()) << " fibers, captured mass so far "
+        << totals_.captured << " kg" << nl;
+    return true;
+}
+
+
+bool Foam::functionObjects::dropletFiberCollision::readStateOnEveryProcessor()
+{
+    // Each processor reads its own copy. OpenFOAM prints an error of a
+    // function object's construction on the master only: the message of a
+    // processor whose copy is missing or damaged goes to all of them, and
+    // all stop.
+    if (!Pstream::parRun())
+    {
+        return readState();
+    }
+    bool restored = false;
+    List<string> failures(Pstream::nProcs());
+    try
+    {
+        restored = readState();
+    }
+    catch (const Foam::IOerror& err)
+    {
+        OStringStream os;
+        err.write(os, false);
+        failures[Pstream::myProcNo()] = stringOps::trim(os.str());
+    }
+    catch (const Foam::error& err)
+    {
+        OStringStream os;
+        err.write(os, false);
+        failures[Pstream::myProcNo()] = stringOps::trim(os.str());
+    }
+    const bool someRestored = returnReduce(restored, orOp<bool>());
+    if (someRestored && !restored && failures[Pstream::myProcNo()].empty())
+    {
+        failures[Pstream::myProcNo()] =
+            "Restart state " + statePath(time_.timeName()) + " is missing,"
+            " while other processors have theirs.";
+    }
+    Pstream::gatherList(failures);
+    Pstream::scatterList(failures);
+    forAll(failures, proci)
+    {
+        if (!failures[proci].empty())
+        {
+            FatalIOErrorInFunction(dict_)
+                << "processor " << proci << ": " << failures[proci].c_str()
+                << exit(FatalIOError);
+        }
+    }
+    return restored;
+}
+
+
+void Foam::functionObjects::dropletFiberCollision::restoreFibers
+(
+    const dictionary& fibers
+)
+{
+    fibers_.clear();
+    fiberOrigin_.clear();
+    for (const entry& e : fibers)
+    {
+        const dictionary& d = dropletFiber::requiredSubDict
+        (
+            fibers, e.keyword(), "the state of one fiber"
+        );
+        ::dropletFiber::FiberState s = dropletFiber::fiberStateFromDict(d);
+        dropletFiber::checkedCoreCall
+        (
+            d, [&]() { fibers_.emplace_back(std::move(s)); }
+        );
+        fiberOrigin_.push_back(d.get<word>("origin"));
+    }
+}
+
+
+void Foam::functionObjects::dropletFiberCollision::restoreInjectorCounts
+(
+    const dictionary& injectors
+)
+{
+    // An injector new to this run has injected none yet
+    for (auto& injector : injectors_)
+    {
+        const word key(injector.spec().name);
+        injector.setInjectedCount
+        (
+            dropletFiber::getLabelInRange(injectors, key, 0, 0, labelMax)
+        );
+    }
+}
+
+
+void Foam::functionObjects::dropletFiberCollision::restoreTotals
+(
+    const dictionary& totals
+)
+{
+    // All are sums of non-negative masses and counts
+    const auto nonNegative = [&totals](const word& key)
+    {
+        return dropletFiber::getCheckedScalar
+        (
+            totals, key, nullptr, [](scalar v) { return v >= 0; }, ">= 0"
+        );
+    };
+    totals_.parcelMass = nonNegative("parcelMass");
+    totals_.deposited = nonNegative("deposited");
+    totals_.outside = nonNegative("outside");
+    totals_.captured = nonNegative("captured");
+    totals_.fiberMassAdded = nonNegative("fiberMassAdded");
+    totals_.fiberMassRemoved = nonNegative("fiberMassRemoved");
+    totals_.fibersRemoved = requiredCount(totals, "fibersRemoved");
+    totals_.parcelsCapped =
+        dropletFiber::getLabelInRange(totals, "parcelsCapped", 0, 0, labelMax);
+}
+
+
+void Foam::functionObjects::dropletFiberCollision::restoreWindow
+(
+    const dictionary& state,
+    const fileName& path
+)
+{
+    ::dropletFiber::WindowState window;
+    window.counters = windowCounters(state);
+    window.values = windowValues
+    (
+        path + ".gridWindow", requiredCount(state, "gridWindowValueCount")
+    );
+    // The core checks the layout against this grid (sizes, slot boxes)
+    dropletFiber::checkedCoreCall
+    (
+        state, [&]() { grid_->restoreWindow(window); }
+    );
+}
+
+// ************************************************************************* //
