@@ -3,7 +3,8 @@
 # warns ("Unknown function type dropletFiberCollision") and runs the case without the
 # function object, exit 0; the project's runner (runCase.sh, through
 # bin/checkFunctionObjectRan) must fail instead, saying that the function object did
-# not run and the likely cause. The library is hidden: FOAM_USER_LIBBIN is an empty
+# not run and the likely cause; so must the tutorial's Allrun (through the
+# regression check). The library is hidden: FOAM_USER_LIBBIN is an empty
 # folder and no folder of LD_LIBRARY_PATH holds libdropletFiber.so.
 # Usage: checkLibraryNotLoaded.sh CASE_DIR WORK_DIR [serial|parallel]
 set -uo pipefail
@@ -39,4 +40,11 @@ check 'grep -q "nor on LD_LIBRARY_PATH" "$work/runCase.log" && grep -q "$FOAM_US
 # The same check from POSIX sh, as the tutorial's /bin/sh Allrun calls it
 sh "$here/../../bin/checkFunctionObjectRan" "$work/case" > /dev/null 2>&1
 check "[ $? -eq 1 ]" "bin/checkFunctionObjectRan under sh does not fail on that run"
+# The tutorial's Allrun (/bin/sh) through the regression check (a few seconds
+# without the function object)
+"$here/../regression/channelSpray/check.sh" "$mode" "$work/tutorial" > "$work/tutorial.log" 2>&1
+status=$?
+check "[ $status -ne 0 ]" "the regression check passed a tutorial run whose library was not loaded"
+check 'grep -q "the dropletFiberCollision function object did not run" "$work/tutorial.log"' \
+    "the tutorial's Allrun does not say that the function object did not run"
 checkSummary
