@@ -53,6 +53,11 @@ for mode in serial parallel; do
         echo "tutorialShare: Allrun $args failed, see $scratch/$mode/Allrun.log and $dir/log.*" >&2
         exit 1
     }
+    # a run without the function object would report a share of nothing
+    "$root/bin/checkFunctionObjectRan" "$dir" || {
+        echo "tutorialShare: the $mode run went on without the function object" >&2
+        exit 1
+    }
     echo "  done in $(( $(date +%s) - start )) s"
 done
 

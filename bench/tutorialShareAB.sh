@@ -126,6 +126,10 @@ for round in $(seq 1 "$rounds"); do
             echo "none round $round: ExecutionTime $execution s (no coupling)"
             continue
         fi
+        "$root/bin/checkFunctionObjectRan" "$dir/log.$app" || {
+            echo "tutorialShareAB: the run of $rev went on without the function object" >&2
+            exit 1
+        }
         line="$(python3 "$here/tutorialShare.py" "$dir" --label "$rev round $round" | grep "function object total")"
         echo "$rev round $round: $line"
         share="$(echo "$line" | sed -n 's/.*= \([0-9.]*\) % of ExecutionTime.*/\1/p')"

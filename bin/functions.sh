@@ -7,7 +7,9 @@
 #   run CMD...             print the command, then run it
 #   haveFoamEnvironment    true when an OpenFOAM environment is loaded
 #   foamKitDir             where installPrerequisites keeps the OpenFOAM kit
-#   loadFoamEnvironment    use the loaded OpenFOAM, else source the kit's bashrc
+#   loadFoamEnvironment    use the loaded OpenFOAM, else source the kit's bashrc;
+#                          exports DROPLETFIBER_DIR (this project), where the case
+#                          scripts find bin/checkFunctionObjectRan
 #------------------------------------------------------------------------------
 
 info() { printf '[dropletFiber] %s\n' "$*"; }
@@ -25,6 +27,10 @@ foamKitDir() {
 loadFoamEnvironment() {
     # OpenFOAM derives user paths from $USER, which batch shells may not set
     export USER="${USER:-$(id -un)}"
+    # The tutorial's Allrun, run from a copy, checks its run with this project's
+    # bin/checkFunctionObjectRan
+    DROPLETFIBER_DIR="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+    export DROPLETFIBER_DIR
     if haveFoamEnvironment; then
         return 0
     fi

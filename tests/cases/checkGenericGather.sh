@@ -14,6 +14,7 @@ foamDictionary system/controlDict -entry functions/dropletFiber/gather -add writ
 "$(foamDictionary -entry application -value system/controlDict)" > log.generic 2>&1
 status=$?
 check "[ $status -eq 0 ]" "the run with 'gather writeObjects' failed ($status), see $2/log.generic"
+check '"$here/../../bin/checkFunctionObjectRan" log.generic' "the run went on without the function object"
 check 'grep -q "gather writeObjects: every cloud through" log.generic' \
     "the entry did not take effect (no generic-route line in the log)"
 check 'grep -q "gather direct: kinematic parcel types read directly" "$(dirname "$defaultTable")/../../../log.pimpleFoam"' \

@@ -25,6 +25,7 @@ cp -r "$caseDir" "$work/split"
 app="$(foamDictionary -entry application -value "$caseDir/system/controlDict")"
 for log in "$work/full/log.$app" "$work/split/log.$app" "$work/split/log.restart"; do
     tail -n 3 "$log" | grep -q "^End" || { tail -n 30 "$log"; die "$log did not end"; }
+    "$here/../../bin/checkFunctionObjectRan" "$log" || die "$log: run without the function object"
 done
 grep -q "restarted from" "$work/split/log.restart" || die "the restarted run did not read the restart state"
 state=uniform/dropletFiber/dropletFiber

@@ -5,7 +5,9 @@
 # Usage: runCase.sh CASE_DIR WORK_DIR serial|parallel [CHECK_COMMAND ...]
 #   The case is copied to WORK_DIR (replaced if present), its Allrun is run
 #   (with -parallel for parallel), and CHECK_COMMAND is run with the copy's
-#   path appended. A failed step prints the tail of the case's logs.
+#   path appended. A failed step prints the tail of the case's logs; a run
+#   without the dropletFiberCollision function object (library not loaded) fails
+#   (bin/checkFunctionObjectRan).
 #------------------------------------------------------------------------------
 set -euo pipefail
 caseDir="$1"; workDir="$2"; mode="$3"; shift 3
@@ -39,6 +41,9 @@ for log in "$workDir"/log.*; do
         die "$log shows a fatal error"
     fi
 done
+# OpenFOAM v1912 runs on, exit 0, without a function object it cannot load
+"$here/../../bin/checkFunctionObjectRan" "$workDir" \
+    || die "the run of $workDir went on without the function object"
 if [ "$#" -gt 0 ]; then
     "$@" "$workDir"
 fi

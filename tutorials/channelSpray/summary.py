@@ -12,9 +12,18 @@ import sys
 
 case = sys.argv[1] if len(sys.argv) > 1 else "."
 log = sys.argv[2] if len(sys.argv) > 2 else os.path.join(case, "log.pimpleFoam")
+table = os.path.join(case, "postProcessing/dropletFiber/0/dropletFiber.dat")
+if not os.path.isfile(table):
+    # OpenFOAM v1912 runs a case on, exit 0, without a function object it cannot load
+    sys.exit("summary.py: no table %s: the dropletFiberCollision function object did not run.\n"
+             "    Look in %s for 'Unknown function type dropletFiberCollision' or\n"
+             "    'Could not load \"libdropletFiber.so\"': the library is then neither in\n"
+             "    $FOAM_USER_LIBBIN nor on LD_LIBRARY_PATH of the environment the case ran in\n"
+             "    (build it there with ./Allwmake, or load the environment it was built in)."
+             % (table, log))
 rows = []
 names = None
-for line in open(os.path.join(case, "postProcessing/dropletFiber/0/dropletFiber.dat")):
+for line in open(table):
     if line.startswith("#"):
         names = [c.strip() for c in line[1:].split("\t") if c.strip()]
     elif line.strip():

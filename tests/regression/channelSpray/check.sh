@@ -28,8 +28,11 @@ cp -r "$root/tutorials/channelSpray" "$work"
 (cd "$work" && ./Allclean > /dev/null)
 args=(-short); [ "$mode" = parallel ] && args+=(-parallel)
 if ! (cd "$work" && ./Allrun "${args[@]}"); then
-    tail -30 "$work"/log.* ; die "Allrun ${args[*]} failed"
+    tail -n 30 "$work"/log.* ; die "Allrun ${args[*]} failed"
 fi
+# A run without the function object (library not loaded) fails here too, whatever
+# the Allrun does
+"$root/bin/checkFunctionObjectRan" "$work" || die "the run of $work went on without the function object"
 table="$work/postProcessing/dropletFiber/0/dropletFiber.dat"
 reference="$here/reference.$mode.dat"
 if [ "$update" = --update ]; then
