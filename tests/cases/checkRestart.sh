@@ -30,9 +30,11 @@ done
 grep -q "restarted from" "$work/split/log.restart" || die "the restarted run did not read the restart state"
 state=uniform/dropletFiber/dropletFiber
 "$PY" "$here/compareState.py" "$work/full/$end/$state" "$work/split/$end/$state" 1e-10
-# the averaging window (binary list): bit for bit
-cmp "$work/full/$end/$state.gridWindow" "$work/split/$end/$state.gridWindow" \
-    && echo "averaging window identical, bit for bit"
+# the averaging window (binary list), value by value. Not bit for bit: OpenFOAM's own
+# time value after a restart differs from the continuous run's in the last bits
+# (0.20000000000000009 against ...15 here), and with it the parcels at round-off
+"$PY" "$here/compareWindow.py" "$work/full/$end/$state.gridWindow" \
+    "$work/split/$end/$state.gridWindow" 1e-10
 "$PY" "$here/compareTables.py" --after "$half" \
     "$work/full/postProcessing/dropletFiber/0/dropletFiber.dat" \
     "$work/split/postProcessing/dropletFiber/$half/dropletFiber.dat" 1e-10
