@@ -278,7 +278,8 @@ Foam::scalar Foam::dropletFiber::airSampler::referenceViscosity() const
 
 ::dropletFiber::AirSample Foam::dropletFiber::airSampler::sample
 (
-    const Eigen::Matrix3Xd& points
+    const Eigen::Matrix3Xd& points,
+    parallelStatistics& statistics
 ) const
 {
     const label n = points.cols();
@@ -330,6 +331,7 @@ Foam::scalar Foam::dropletFiber::airSampler::referenceViscosity() const
     }
     Pstream::listCombineGather(values, plusEqOp<scalar>());
     Pstream::listCombineScatter(values);
+    statistics.countCombineGatherScatter(values.byteSize());
 
     const scalar rhoRef = referenceDensity();
     const scalar muRef = referenceViscosity();

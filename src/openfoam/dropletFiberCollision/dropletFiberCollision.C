@@ -474,6 +474,7 @@ Foam::functionObjects::dropletFiberCollision::stepBoxOfAllProcessors() const
     }
     Pstream::listCombineGather(bounds, maxEqOp<label>());
     Pstream::listCombineScatter(bounds);
+    parallelStatistics_.countCombineGatherScatter(bounds.byteSize());
     if (bounds[0] == labelMin)
     {
         return ::dropletFiber::IndexBox{};
@@ -504,6 +505,7 @@ void Foam::functionObjects::dropletFiberCollision::sumStepAcrossProcessors()
     grid_->packStep(box, values.data());
     Pstream::listCombineGather(values, plusEqOp<scalar>());
     Pstream::listCombineScatter(values);
+    parallelStatistics_.countCombineGatherScatter(values.byteSize());
     grid_->unpackStep(box, values.cdata(), std::size_t(values.size()));
 }
 
@@ -836,6 +838,7 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
     const scalar t = time_.value();
     const scalar dt = time_.deltaTValue();
     stepSummary step;
+    parallelStatistics_.startStep();
 
     // 1. The parcels of this step, on this processor
     clockValue depositionStart(true);
@@ -878,6 +881,7 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
 
     // 7. Report; at write times the restart state and the mass balances
     reportStep(step);
+    writeParallelStatistics();
     if (time_.writeTime())
     {
         coreCall("writing the restart state", [this]() { writeState(); });

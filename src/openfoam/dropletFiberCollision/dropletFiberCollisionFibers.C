@@ -33,7 +33,7 @@ Foam::functionObjects::dropletFiberCollision::sampleAir() const
     {
         return {};
     }
-    const ::dropletFiber::AirSample air = air_->sample(points);
+    const ::dropletFiber::AirSample air = air_->sample(points, parallelStatistics_);
     stopIfAirNotFinite(air);
     return air;
 }
@@ -192,7 +192,7 @@ Foam::functionObjects::dropletFiberCollision::advanceFibers
     outcome.subSteps = report.subSteps;
     outcome = dropletFiber::fiberDistribution::exchange
     (
-        fibers_, capture, outcome
+        fibers_, capture, outcome, parallelStatistics_
     );
 
     // A fiber that cannot be advanced even at the smallest sub-step stops

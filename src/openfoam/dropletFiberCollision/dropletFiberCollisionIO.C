@@ -72,6 +72,36 @@ void Foam::functionObjects::dropletFiberCollision::reportStep
 }
 
 
+void Foam::functionObjects::dropletFiberCollision::writeParallelStatistics()
+{
+    // Today every processor stores the whole grid and every fiber
+    parallelStatistics_.holding(grid_->spec().nodeCount(), fibers_.size());
+    const dropletFiber::parallelStatistics::figures maxima =
+        parallelStatistics_.maxOverProcessors();
+    if (!writeToFile())
+    {
+        return;
+    }
+    if (!parallelStatisticsFile_.valid())
+    {
+        parallelStatisticsFile_ = createFile("parallelStatistics");
+        OFstream& os = parallelStatisticsFile_();
+        writeHeader(os, "Per time step, maxima over processors");
+        writeCommented(os, "Time");
+        writeTabbed(os, "nodesHeldMax");
+        writeTabbed(os, "fibersHeldMax");
+        writeTabbed(os, "bytesSentMax");
+        os  << endl;
+    }
+    OFstream& os = parallelStatisticsFile_();
+    writeCurrentTime(os);
+    os  << tab << maxima.nodesHeld
+        << tab << maxima.fibersHeld
+        << tab << maxima.bytesSent
+        << endl;
+}
+
+
 void Foam::functionObjects::dropletFiberCollision::reportConservation() const
 {
     const scalar balance =

@@ -190,7 +190,8 @@ Foam::dropletFiber::fiberDistribution::exchange
 (
     std::vector<::dropletFiber::Fiber>& fibers,
     ::dropletFiber::CaptureSources& capture,
-    const stepOutcome& local
+    const stepOutcome& local,
+    parallelStatistics& statistics
 )
 {
     if (!Pstream::parRun())
@@ -203,6 +204,12 @@ Foam::dropletFiber::fiberDistribution::exchange
     // Exact copies (not a sum): every processor ends with the same bits
     Pstream::gatherList(perProcessor);
     Pstream::scatterList(perProcessor);
+    std::vector<std::size_t> entryBytes;
+    for (const scalarList& theirs : perProcessor)
+    {
+        entryBytes.push_back(std::size_t(theirs.byteSize()));
+    }
+    statistics.countGatherScatterList(entryBytes);
 
     unpackTheirs(perProcessor, fibers, capture);
     return combinedOutcome(perProcessor);

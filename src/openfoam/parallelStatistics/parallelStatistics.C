@@ -1,0 +1,118 @@
+/*---------------------------------------------------------------------------*\
+  dropletFiber: stochastic droplet-fiber coupling for OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "parallelStatistics.H"
+#include "Pstream.H"
+#include "List.H"
+#include "ops.H"
+
+// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- The schedule of Pstream's gathers and scatters on the world
+//  communicator (every processor's place: what is sent to a neighbour below
+//  depends on the neighbour's place)
+const Foam::List<Foam::UPstream::commsStruct>& allComms()
+{
+    using Foam::UPstream;
+    return
+        UPstream::nProcs() < UPstream::nProcsSimpleSum
+      ? UPstream::linearCommunication()
+      : UPstream::treeCommunication();
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::dropletFiber::parallelStatistics::startStep()
+{
+    step_.bytesSent = 0;
+}
+
+
+void Foam::dropletFiber::parallelStatistics::holding
+(
+    const std::size_t nodes,
+    const std::size_t fibers
+)
+{
+    step_.nodesHeld = scalar(nodes);
+    step_.fibersHeld = scalar(fibers);
+}
+
+
+void Foam::dropletFiber::parallelStatistics::countCombineGatherScatter
+(
+    const std::size_t listBytes
+)
+{
+    if (!Pstream::parRun())
+    {
+        return;
+    }
+    // The gather sends the combined list up once, the scatter down to each
+    // neighbour below
+    const UPstream::commsStruct& my = allComms()[Pstream::myProcNo()];
+    const std::size_t messages =
+        (my.above() >= 0 ? 1 : 0) + std::size_t(my.below().size());
+    step_.bytesSent += scalar(messages*listBytes);
+}
+
+
+void Foam::dropletFiber::parallelStatistics::countGatherScatterList
+(
+    const std::vector<std::size_t>& entryBytes
+)
+{
+    if (!Pstream::parRun())
+    {
+        return;
+    }
+    const List<UPstream::commsStruct>& comms = allComms();
+    const UPstream::commsStruct& my = comms[Pstream::myProcNo()];
+    std::size_t bytes = 0;
+    // Gather: my entry and those of all processors below me, up
+    if (my.above() >= 0)
+    {
+        bytes += entryBytes[Pstream::myProcNo()];
+        for (const label leaf : my.allBelow())
+        {
+            bytes += entryBytes[leaf];
+        }
+    }
+    // Scatter: to each neighbour below, the entries of all processors not
+    // below it
+    for (const label below : my.below())
+    {
+        for (const label leaf : comms[below].allNotBelow())
+        {
+            bytes += entryBytes[leaf];
+        }
+    }
+    step_.bytesSent += scalar(bytes);
+}
+
+
+Foam::dropletFiber::parallelStatistics::figures
+Foam::dropletFiber::parallelStatistics::maxOverProcessors() const
+{
+    // One gather to the master, which writes them (counts are exact in a
+    // double)
+    List<scalar> values(3);
+    values[0] = step_.nodesHeld;
+    values[1] = step_.fibersHeld;
+    values[2] = step_.bytesSent;
+    Pstream::listCombineGather(values, maxEqOp<scalar>());
+    figures maxima;
+    maxima.nodesHeld = values[0];
+    maxima.fibersHeld = values[1];
+    maxima.bytesSent = values[2];
+    return maxima;
+}
+
+// ************************************************************************* //
