@@ -34,7 +34,8 @@
 //  6. Fallback when sum omega == 0 (r_max smaller than the distance from the path to
 //     every node, e.g. n = 1, or only weights that underflow): the mass goes to the cell
 //     corners with multilinear (cloud-in-cell) weights, averaged over points spaced at
-//     most half a node spacing along the path. Mass is conserved;
+//     most half a node spacing along the path (1/16 where the path's cells touch a face
+//     node, faceRefinement). Mass is conserved;
 //     StepStatistics::parcelsFallback counts these parcels.
 //  7. Per node: mass w f n m, droplet count w f n, count*radius, mass*radius, mass*velocity
 //     (GridQuantities.hpp).
@@ -191,6 +192,9 @@ private:
     bool withinGrid(const IndexBox& box) const;
     // True when the box holds a node on a face of the grid box (active directions).
     bool touchesFace(const IndexBox& box) const;
+    // Cloud-in-cell paths whose cells touch a face node: points faceRefinement times closer
+    // (the midpoint rule's error along diagonal paths cancels between the cells around an
+    // interior node, not at a face; docs/model.md sec. 4, edge nodes).
     static constexpr double faceRefinement = 8.0;
     // Step 4: omega of every node of the box; the nodes with omega > 0 go to scratch_, in
     // node order. Returns sum omega. Batched (AVX2 + FMA, moving parcels) or node by node.
