@@ -601,12 +601,14 @@ void DensityGrid::accumulate(std::size_t node, double weight,
 void DensityGrid::depositFallback(const Eigen::Vector3d& start, const Eigen::Vector3d& displacement,
                                   const std::array<double, nQuantities>& parcelTotals)
 {
-    const PathPoints coarse(start, displacement, smallestSpacing_);
-    const bool nearFace = touchesFace(pathCells(spec_, spacing_, coarse).box);
-    const PathPoints points = nearFace && coarse.count > 0
-        ? PathPoints(start, displacement, smallestSpacing_ / faceRefinement)
-        : coarse;
-    const PathCells cells = pathCells(spec_, spacing_, points);
+    PathPoints points(start, displacement, smallestSpacing_);
+    PathCells cells = pathCells(spec_, spacing_, points);
+    if (displacement.squaredNorm() > 0.0 && touchesFace(cells.box))
+    {
+        // Near a face: finer points (faceRefinement; a stationary parcel is one point).
+        points = PathPoints(start, displacement, smallestSpacing_ / faceRefinement);
+        cells = pathCells(spec_, spacing_, points);
+    }
     stepBox_ = stepBox_.united(cells.box);
     const int corners = (spec_.flat(0) ? 1 : 2) * (spec_.flat(1) ? 1 : 2) * (spec_.flat(2) ? 1 : 2);
     stepStatistics_.nodesVisited += static_cast<std::int64_t>(points.count) * corners;
