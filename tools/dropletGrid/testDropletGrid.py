@@ -20,7 +20,14 @@ os.makedirs(work, exist_ok=True)
 failures = []
 
 GRID = ["--lower", "0,0,0", "--upper", "0.05,0.07,0.001", "--nodes", "51,71,1", "--dt", "1e-4"]
-NODE_VOLUME = 0.001 * 0.001 * 0.001  # h_x h_y depth
+NODE_VOLUME = 0.001 * 0.001 * 0.001  # h_x h_y depth, an interior node's volume
+
+
+def node_volume(row):
+    # The node's dual cell (docs/model.md sec. 4, edge nodes): half a cell per active
+    # direction in which the node lies on a face of the 51 x 71 grid (z is flat).
+    faces = (row["i"] in (0, 50)) + (row["j"] in (0, 70))
+    return NODE_VOLUME / 2 ** faces
 
 
 def check(ok, what):
@@ -78,7 +85,7 @@ def totals():
     header, rows = read_csv(nodes)
     check(header == "i,j,k,x,y,z,rho,rMeanNumber,rMeanMass,ux,uy,uz".split(","), "node CSV columns")
     check(len(rows) == 51 * 71, "one row per node")
-    check(close(sum(r["rho"] for r in rows) * NODE_VOLUME, mass_inside, 1e-11),
+    check(close(sum(r["rho"] * node_volume(r) for r in rows), mass_inside, 1e-11),
           "sum of rho * node volume = mass of the inside parcels")
     check(all(r["rho"] >= 0.0 for r in rows), "rho >= 0 everywhere")
     radii = [r["rMeanMass"] for r in rows if r["rho"] > 0.0]

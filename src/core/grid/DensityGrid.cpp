@@ -228,10 +228,16 @@ DensityGrid::DensityGrid(const GridSpec& spec, const KernelSettings& kernel, int
     kernelSettings_.validate();
     for (int d = 0; d < 3; ++d)
     {
-        coordinates_[d].resize(static_cast<std::size_t>(spec.nodes[d]));
-        for (int i = 0; i < spec.nodes[d]; ++i)
+        // The lattice lower + i h, from one grid length before the box to one after it
+        // (ghost nodes of the folded kernels); the nodes keep GridSpec's coordinates.
+        const int nodes = spec.nodes[d];
+        ghostLayers_[d] = spec.flat(d) ? 0 : nodes - 1;
+        coordinates_[d].resize(static_cast<std::size_t>(nodes + 2 * ghostLayers_[d]));
+        for (int i = -ghostLayers_[d]; i < nodes + ghostLayers_[d]; ++i)
         {
-            coordinates_[d][static_cast<std::size_t>(i)] = spec.nodeCoordinate(d, i);
+            const bool node = i >= 0 && i < nodes;
+            coordinates_[d][static_cast<std::size_t>(i + ghostLayers_[d])]
+                = node ? spec.nodeCoordinate(d, i) : spec.lower[d] + i * spec.spacing(d);
         }
         inverseSpacing_[d] = spec.flat(d) ? 0.0 : 1.0 / spec.spacing(d);
         spacing_[d] = spec.flat(d) ? 0.0 : spec.spacing(d);
@@ -285,12 +291,22 @@ void DensityGrid::deposit(const Parcel& parcel, double dt)
     const double reach = negligibleDistance(kernel, path.displacement.norm());
     pathWeight.limitTo(reach);
 
-    // 4. Weights of the nodes in the bounding box of the swept capsule.
+    // 4. Weights of the lattice nodes in the bounding box of the swept capsule; ghost
+    // nodes beyond the faces are folded onto their mirror images.
     const IndexBox box = nodeBox(path, reach);
     const bool batched
         = batched_ && !pathWeight.stationary() && box.nodeCount() >= PathWeightBatch::minimumBoxNodes;
-    const double omegaSum = batched ? weighNodesBatched(pathWeight, path.start, box)
-                                    : weighNodesOneByOne(pathWeight, path.start, box);
+    IndexBox weightedBox = box;
+    double omegaSum = 0.0;
+    if (!withinGrid(box))
+    {
+        omegaSum = weighAndFold(pathWeight, path.start, box, batched, weightedBox);
+    }
+    else
+    {
+        omegaSum = batched ? weighNodesBatched(pathWeight, path.start, box)
+                           : weighNodesOneByOne(pathWeight, path.start, box);
+    }
     stats.nodesVisited += static_cast<std::int64_t>(box.nodeCount());
 
     // 5-6. Normalise (eq. 24), or fall back to cloud-in-cell weights.
@@ -300,7 +316,7 @@ void DensityGrid::deposit(const Parcel& parcel, double dt)
         depositFallback(path.start, path.displacement, totals);
         return;
     }
-    depositWeighted(1.0 / omegaSum, totals, box);
+    depositWeighted(1.0 / omegaSum, totals, weightedBox);
 }
 
 bool DensityGrid::clipPath(const Parcel& parcel, double dt, double mass, ClippedPath& path)
@@ -334,7 +350,7 @@ bool DensityGrid::clipPath(const Parcel& parcel, double dt, double mass, Clipped
     {
         if (spec_.flat(d))
         {
-            path.start[d] = coordinates_[d][0];
+            path.start[d] = latticeCoordinates(d)[0];
             path.displacement[d] = 0.0;
         }
     }
@@ -351,15 +367,41 @@ IndexBox DensityGrid::nodeBox(const ClippedPath& path, double reach) const
             box.lo[d] = box.hi[d] = 0;
             continue;
         }
+        // Lattice indices, ghost nodes included (at most ghostLayers_ beyond each face).
         const double a = std::min(path.start[d], path.start[d] + path.displacement[d]) - reach;
         const double b = std::max(path.start[d], path.start[d] + path.displacement[d]) + reach;
-        const double last = spec_.nodes[d] - 1;
+        const double lowest = -ghostLayers_[d];
+        const double highest = spec_.nodes[d] - 1 + ghostLayers_[d];
         const double first = std::ceil((a - spec_.lower[d]) * inverseSpacing_[d]);
         const double lastReached = std::floor((b - spec_.lower[d]) * inverseSpacing_[d]);
-        box.lo[d] = static_cast<int>(std::min(std::max(first, 0.0), last));
-        box.hi[d] = static_cast<int>(std::min(std::max(lastReached, -1.0), last));
+        box.lo[d] = static_cast<int>(std::min(std::max(first, lowest), highest));
+        box.hi[d] = static_cast<int>(std::min(std::max(lastReached, lowest - 1.0), highest));
     }
     return box;
+}
+
+bool DensityGrid::touchesFace(const IndexBox& box) const
+{
+    for (int d = 0; d < 3; ++d)
+    {
+        if (!spec_.flat(d) && (box.lo[d] == 0 || box.hi[d] == spec_.nodes[d] - 1))
+        {
+            return true;
+        }
+    }
+    return false;
+}
+
+bool DensityGrid::withinGrid(const IndexBox& box) const
+{
+    for (int d = 0; d < 3; ++d)
+    {
+        if (box.lo[d] < 0 || box.hi[d] > spec_.nodes[d] - 1)
+        {
+            return false;
+        }
+    }
+    return true;
 }
 
 double DensityGrid::weighNodesBatched(const PathWeight& pathWeight, const Eigen::Vector3d& start,
@@ -368,8 +410,8 @@ double DensityGrid::weighNodesBatched(const PathWeight& pathWeight, const Eigen:
     // CPU with AVX2 + FMA (KernelBuild.hpp): project every node of the box, then omega of
     // all of them four at a time without branches (PathWeightBatch); the same sums and the
     // same list of weighted nodes, in node order, as weighNodesOneByOne.
-    const double* boxOmega = batch_.boxOmegas(pathWeight, start, coordinates_[0].data(),
-                                              coordinates_[1].data(), coordinates_[2].data(), box.lo, box.hi);
+    const double* boxOmega = batch_.boxOmegas(pathWeight, start, latticeCoordinates(0), latticeCoordinates(1),
+                                              latticeCoordinates(2), box.lo, box.hi);
     // List the nodes with omega > 0 without a branch: each node is written at the end of
     // the list and kept by advancing the count (omega <= 0 adds 0 to the sum).
     scratch_.clear();
@@ -398,12 +440,12 @@ double DensityGrid::weighNodesOneByOne(const PathWeight& pathWeight, const Eigen
     // small boxes always.
     scratch_.clear();
     double omegaSum = 0.0;
-    const double* x = coordinates_[0].data() + box.lo[0]; // lo >= 0 (nodeBox)
+    const double* x = latticeCoordinates(0) + box.lo[0]; // lo >= 0 (withinGrid)
     forEachRow(box, spec_.nodes,
                [&](const IndexRow& row)
                {
-                   const double oz = coordinates_[2][static_cast<std::size_t>(row.k)] - start.z();
-                   const double oy = coordinates_[1][static_cast<std::size_t>(row.j)] - start.y();
+                   const double oz = latticeCoordinates(2)[row.k] - start.z();
+                   const double oy = latticeCoordinates(1)[row.j] - start.y();
                    for (std::size_t i = 0; i < row.length; ++i)
                    {
                        const Eigen::Vector3d offset(x[i] - start.x(), oy, oz);
@@ -412,6 +454,98 @@ double DensityGrid::weighNodesOneByOne(const PathWeight& pathWeight, const Eigen
                        {
                            scratch_.emplace_back(row.first + i, omega);
                            omegaSum += omega;
+                       }
+                   }
+               });
+    return omegaSum;
+}
+
+double DensityGrid::weighAndFold(const PathWeight& pathWeight, const Eigen::Vector3d& start,
+                                 const IndexBox& box, bool batched, IndexBox& foldedBox)
+{
+    const double* omega = batched
+        ? batch_.boxOmegas(pathWeight, start, latticeCoordinates(0), latticeCoordinates(1),
+                           latticeCoordinates(2), box.lo, box.hi)
+        : latticeOmegas(pathWeight, start, box);
+    foldedBox = mirrorBox(box);
+    return foldOntoNodes(omega, foldedBox);
+}
+
+const double* DensityGrid::latticeOmegas(const PathWeight& pathWeight, const Eigen::Vector3d& start,
+                                         const IndexBox& box)
+{
+    latticeOmega_.resize(box.nodeCount());
+    std::size_t n = 0;
+    for (int k = box.lo[2]; k <= box.hi[2]; ++k)
+    {
+        const double oz = latticeCoordinates(2)[k] - start.z();
+        for (int j = box.lo[1]; j <= box.hi[1]; ++j)
+        {
+            const double oy = latticeCoordinates(1)[j] - start.y();
+            for (int i = box.lo[0]; i <= box.hi[0]; ++i, ++n)
+            {
+                latticeOmega_[n] = pathWeight.omegaFromOffset(
+                    Eigen::Vector3d(latticeCoordinates(0)[i] - start.x(), oy, oz));
+            }
+        }
+    }
+    return latticeOmega_.data();
+}
+
+IndexBox DensityGrid::mirrorBox(const IndexBox& box)
+{
+    IndexBox folded;
+    for (int d = 0; d < 3; ++d)
+    {
+        std::vector<int>& image = mirrorImage_[static_cast<std::size_t>(d)];
+        image.clear();
+        folded.lo[d] = spec_.nodes[d];
+        folded.hi[d] = -1;
+        for (int i = box.lo[d]; i <= box.hi[d]; ++i)
+        {
+            image.push_back(spec_.mirrorIndex(d, i));
+            folded.lo[d] = std::min(folded.lo[d], image.back());
+            folded.hi[d] = std::max(folded.hi[d], image.back());
+        }
+    }
+    return folded;
+}
+
+double DensityGrid::foldOntoNodes(const double* omega, const IndexBox& foldedBox)
+{
+    // Every lattice node's omega is summed (eq. 24 over the unbounded lattice, in node
+    // order) and added to its mirror image (mirrorImage_, set by mirrorBox).
+    foldedOmega_.assign(foldedBox.nodeCount(), 0.0);
+    const std::size_t foldedRow = static_cast<std::size_t>(foldedBox.hi[0] - foldedBox.lo[0] + 1);
+    const std::size_t foldedLayer
+        = foldedRow * static_cast<std::size_t>(foldedBox.hi[1] - foldedBox.lo[1] + 1);
+    double omegaSum = 0.0;
+    std::size_t n = 0;
+    for (const int k : mirrorImage_[2])
+    {
+        for (const int j : mirrorImage_[1])
+        {
+            double* row = foldedOmega_.data() + foldedLayer * static_cast<std::size_t>(k - foldedBox.lo[2])
+                + foldedRow * static_cast<std::size_t>(j - foldedBox.lo[1]);
+            for (const int i : mirrorImage_[0])
+            {
+                const double weight = std::max(omega[n++], 0.0);
+                omegaSum += weight;
+                row[i - foldedBox.lo[0]] += weight;
+            }
+        }
+    }
+    // The weighted nodes in node order, as the other weighNodes functions list them.
+    scratch_.clear();
+    forEachRow(foldedBox, spec_.nodes,
+               [&](const IndexRow& row)
+               {
+                   for (std::size_t i = 0; i < row.length; ++i)
+                   {
+                       const double weight = foldedOmega_[row.offsetInBox + i];
+                       if (weight > 0.0)
+                       {
+                           scratch_.emplace_back(row.first + i, weight);
                        }
                    }
                });
@@ -467,8 +601,14 @@ void DensityGrid::accumulate(std::size_t node, double weight,
 void DensityGrid::depositFallback(const Eigen::Vector3d& start, const Eigen::Vector3d& displacement,
                                   const std::array<double, nQuantities>& parcelTotals)
 {
-    const PathPoints points(start, displacement, smallestSpacing_);
-    const PathCells cells = pathCells(spec_, spacing_, points);
+    PathPoints points(start, displacement, smallestSpacing_);
+    PathCells cells = pathCells(spec_, spacing_, points);
+    if (displacement.squaredNorm() > 0.0 && touchesFace(cells.box))
+    {
+        // Near a face: finer points (faceRefinement; a stationary parcel is one point).
+        points = PathPoints(start, displacement, smallestSpacing_ / faceRefinement);
+        cells = pathCells(spec_, spacing_, points);
+    }
     stepBox_ = stepBox_.united(cells.box);
     const int corners = (spec_.flat(0) ? 1 : 2) * (spec_.flat(1) ? 1 : 2) * (spec_.flat(2) ? 1 : 2);
     stepStatistics_.nodesVisited += static_cast<std::int64_t>(points.count) * corners;
@@ -610,10 +750,26 @@ DropletFieldValue DensityGrid::fieldFromSums(const std::array<double, nQuantitie
     return value;
 }
 
+double DensityGrid::cellsPerNodeVolume(std::size_t flatIndex) const
+{
+    const auto nx = static_cast<std::size_t>(spec_.nodes[0]);
+    const auto ny = static_cast<std::size_t>(spec_.nodes[1]);
+    const int i = static_cast<int>(flatIndex % nx);
+    const int j = static_cast<int>((flatIndex / nx) % ny);
+    const int k = static_cast<int>(flatIndex / (nx * ny));
+    return std::ldexp(1.0, spec_.boundaryDirections(i, j, k));
+}
+
 DropletFieldValue DensityGrid::nodeValue(std::size_t flatIndex) const
 {
     std::array<double, nQuantities> sums{};
     window_.nodeTotal(flatIndex, sums.data());
+    // Sums per whole cell (a power of two: exact; the means are unchanged).
+    const double scale = cellsPerNodeVolume(flatIndex);
+    for (double& sum : sums)
+    {
+        sum *= scale;
+    }
     return fieldFromSums(sums);
 }
 
@@ -635,11 +791,14 @@ DropletFieldValue DensityGrid::sample(const Eigen::Vector3d& point) const
     std::array<double, nQuantities> total{};
     for (int c = 0; c < corners.count; ++c)
     {
-        window_.nodeTotal(corners.node[static_cast<std::size_t>(c)], total.data());
+        const std::size_t node = corners.node[static_cast<std::size_t>(c)];
+        window_.nodeTotal(node, total.data());
         const double w = corners.weight[static_cast<std::size_t>(c)];
+        // Densities are interpolated: the sums per whole cell (scale 1 inside the box).
+        const double scale = cellsPerNodeVolume(node);
         for (int q = 0; q < nQuantities; ++q)
         {
-            sums[static_cast<std::size_t>(q)] += w * total[static_cast<std::size_t>(q)];
+            sums[static_cast<std::size_t>(q)] += w * (scale * total[static_cast<std::size_t>(q)]);
         }
     }
     return fieldFromSums(sums);

@@ -16,8 +16,9 @@
 //     StepStatistics::parcelsCapped counts it (the caller can warn). A kernel narrower
 //     than KernelSettings::cloudInCellBelow times the largest spacing is not resolved by
 //     the grid: the parcel goes to the cell corners as in 6 (parcelsCloudInCell).
-//  4. Every node in the bounding box of the capsule swept by the clipped path (within
-//     reach of the path) gets omega_g (PathWeight, eq. 23); nodes farther than reach from
+//  4. Every node of the unbounded lattice lower + i h in the bounding box of the capsule
+//     swept by the clipped path (within reach of the path; ghost nodes beyond the faces
+//     included, up to one grid length) gets omega_g (PathWeight, eq. 23); nodes farther than reach from
 //     the path are rejected before any exp/erf. Nodes whose weight would be below
 //     KernelSettings::negligibleWeight (1e-17) times the parcel's largest are left out too
 //     (the capsule shrinks to that distance; kernels of large alpha). Cost per parcel ~ nodes in that box,
@@ -26,31 +27,36 @@
 //     CPU has it and KernelSettings::vectorised is set (batchedKernel(); boxes of at least
 //     PathWeightBatch::minimumBoxNodes nodes), else node by node:
 //     the same nodes, boxes and statistics, weights equal to ~1 ulp of exp/erfc.
-//  5. Weights w_g = omega_g / sum omega (eq. 24): the mass given to the grid is f times the
-//     parcel's mass to round-off, also near edges (nodes outside the grid do not exist,
-//     so the normalisation runs over the existing ones).
+//  5. Weights w_g = omega_g / sum omega (eq. 24, the sum over the lattice nodes), and each
+//     ghost node's weight added to its mirror image across the face (folded kernels,
+//     GridSpec::mirrorIndex): the mass given to the grid is f times the parcel's mass to
+//     round-off. A parcel whose box has no ghost node gets eqs. 23-24 unchanged.
 //  6. Fallback when sum omega == 0 (r_max smaller than the distance from the path to
 //     every node, e.g. n = 1, or only weights that underflow): the mass goes to the cell
 //     corners with multilinear (cloud-in-cell) weights, averaged over points spaced at
-//     most half a node spacing along the path. Mass is conserved;
+//     most half a node spacing along the path (1/16 where the path's cells touch a face
+//     node, faceRefinement). Mass is conserved;
 //     StepStatistics::parcelsFallback counts these parcels.
 //  7. Per node: mass w f n m, droplet count w f n, count*radius, mass*radius, mass*velocity
 //     (GridQuantities.hpp).
 //
 // Fields from the window (last W committed steps, equal weight per step, eq. 26), at a
-// node with window sums S_q over s steps (s = min(committed, W)) and node volume V:
+// node with window sums S_q over s steps (s = min(committed, W)) and node volume V (the
+// dual cell, GridSpec::dualVolume):
 //     rho = S_mass / (V s),  number density = S_count / (V s),
 //     rMeanNumber = S_countRadius / S_count (eq. 10),  rMeanMass = S_massRadius / S_mass,
 //     velocity = S_momentum / S_mass (mass-weighted mean droplet velocity).
-// Empty nodes give zeros. sample(point) interpolates the sums S_q multilinearly and then
-// forms the same ratios: rho and the momentum density are exactly bilinear/trilinear
-// between nodes, and the means are not dragged to zero by empty neighbours.
+// Empty nodes give zeros. sample(point) interpolates the densities S_q / V multilinearly
+// and then forms the same ratios: rho and the momentum density are exactly
+// bilinear/trilinear between nodes, and the means are not dragged to zero by empty
+// neighbours.
 // Points outside the box (in active directions) give inside = false and zeros.
 //
-// Edge nodes: every node has the full volume h_x h_y [h_z] of eq. 26. Within about one
-// kernel width of the box boundary the density is biased (mass of parcels near the edge
-// stays inside, normalised over fewer nodes), so compare fields away from the edges or
-// make the grid a little larger than the region of interest.
+// Edge nodes (docs/model.md sec. 4): node volumes of the dual cells (half a cell on a face
+// of the box, a quarter on an edge, an eighth at a corner; active directions only) and
+// folded kernels (step 5) together make a uniform spray filling the box read its density
+// at every node, faces, edges and corners included (EdgeNodesTest). Cloud-in-cell
+// deposits need no folding (the corners of a point inside the box are nodes).
 //
 // Parallel runs (MPI, done by the caller): each rank deposits its parcels; then the step
 // accumulator (stepValues(), nodes * nQuantities doubles) is summed over ranks within the
@@ -160,8 +166,17 @@ private:
         double fraction = 0.0;
     };
 
-    // Window sums S_q (any weights) -> field values.
+    // Window sums S_q per whole cell volume (any weights) -> field values.
     DropletFieldValue fieldFromSums(const std::array<double, nQuantities>& sums) const;
+    // Whole cells per dual-cell volume of the node: 1 inside, 2 on a face, 4 on an edge,
+    // 8 at a corner (GridSpec::dualVolume).
+    double cellsPerNodeVolume(std::size_t flatIndex) const;
+    // Coordinates of the lattice nodes in direction d, indexed by lattice index (node 0
+    // at 0; ghost nodes from -ghostLayers_[d] to nodes - 1 + ghostLayers_[d]).
+    const double* latticeCoordinates(int d) const
+    {
+        return coordinates_[static_cast<std::size_t>(d)].data() + ghostLayers_[static_cast<std::size_t>(d)];
+    }
 
     // --- deposit(), in the order of its steps (top of this file) ------------------------
     // Steps 1-2: clips the parcel's path and books the mass outside the box; false when
@@ -170,13 +185,36 @@ private:
     // Distance from the path beyond which a node's weight is below
     // KernelSettings::negligibleWeight times the parcel's largest (<= reach).
     double negligibleDistance(const ParcelKernel& kernel, double pathLength) const;
-    // Step 4: the nodes within `reach` of the path (may be empty).
+    // Step 4: the lattice nodes within `reach` of the path (may be empty), ghost nodes
+    // beyond the faces included (at most one grid length beyond each face).
     IndexBox nodeBox(const ClippedPath& path, double reach) const;
+    // True when the box holds no ghost node (the kernel stays inside the grid).
+    bool withinGrid(const IndexBox& box) const;
+    // True when the box holds a node on a face of the grid box (active directions).
+    bool touchesFace(const IndexBox& box) const;
+    // Cloud-in-cell paths whose cells touch a face node: points faceRefinement times closer
+    // (the midpoint rule's error along diagonal paths cancels between the cells around an
+    // interior node, not at a face; docs/model.md sec. 4, edge nodes).
+    static constexpr double faceRefinement = 8.0;
     // Step 4: omega of every node of the box; the nodes with omega > 0 go to scratch_, in
     // node order. Returns sum omega. Batched (AVX2 + FMA, moving parcels) or node by node.
     double weighNodesBatched(const PathWeight& pathWeight, const Eigen::Vector3d& start, const IndexBox& box);
     double weighNodesOneByOne(const PathWeight& pathWeight, const Eigen::Vector3d& start,
                               const IndexBox& box);
+    // Step 4 for a box with ghost nodes: omega of every lattice node of the box (batched or
+    // node by node), each added to its mirror image (folded kernels); the nodes of
+    // foldedBox that got weight go to scratch_, in node order. Returns sum omega over the
+    // lattice nodes.
+    double weighAndFold(const PathWeight& pathWeight, const Eigen::Vector3d& start, const IndexBox& box,
+                        bool batched, IndexBox& foldedBox);
+    // omega of every lattice node of the box node by node (i fastest), valid until the next call.
+    const double* latticeOmegas(const PathWeight& pathWeight, const Eigen::Vector3d& start,
+                                const IndexBox& box);
+    // The mirror images of the box's lattice indices per direction (mirrorImage_), and the
+    // box of the nodes they name.
+    IndexBox mirrorBox(const IndexBox& box);
+    // Sums omega over the lattice box of mirrorBox and folds it onto foldedBox's nodes.
+    double foldOntoNodes(const double* omega, const IndexBox& foldedBox);
     // Steps 5 and 7: scratch_'s nodes get omega / sum omega of the parcel's totals.
     void depositWeighted(double inverseSum, const std::array<double, nQuantities>& parcelTotals,
                          const IndexBox& box);
@@ -195,13 +233,14 @@ private:
     KernelSettings kernelSettings_;
     int kernelDimension_;
     bool batched_;                                   // batchedKernel()
-    std::array<std::vector<double>, 3> coordinates_; // node coordinates per direction
+    std::array<std::vector<double>, 3> coordinates_; // lattice coordinates per direction (latticeCoordinates)
+    std::array<int, 3> ghostLayers_{};               // ghost nodes beyond each face: nodes - 1 (flat: 0)
     std::array<double, 3> inverseSpacing_{};
     std::array<double, 3> spacing_{}; // 0 in flat directions
     double smallestSpacing_ = 0.0;    // over the active directions (cloud-in-cell path points)
     double largestSpacing_ = 0.0;     // over the active directions (KernelSettings::cloudInCellBelow)
     double halfCellDiagonal_ = 0.0;   // over the active directions (negligible weights)
-    double nodeVolume_;
+    double nodeVolume_;               // of an interior node (whole cell)
     AveragingWindow window_;
     std::vector<double> step_;
     IndexBox stepBox_;
@@ -213,6 +252,11 @@ private:
     // onto the grid point by point)
     static constexpr std::size_t maximumPathBoxNodes = 1024;
     std::vector<double> pathWeights_;
+    // Folded kernels: the current parcel's lattice omegas (node by node), the mirror image
+    // of each lattice index per direction, and the omegas folded onto the nodes.
+    std::vector<double> latticeOmega_;
+    std::array<std::vector<int>, 3> mirrorImage_;
+    std::vector<double> foldedOmega_;
     PathWeightBatch batch_; // the batched deposit (batchedKernel(); unused, empty, otherwise)
 };
 

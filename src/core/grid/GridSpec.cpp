@@ -93,6 +93,37 @@ double GridSpec::nodeVolume() const
     return spacing(0) * spacing(1) * spacing(2);
 }
 
+int GridSpec::boundaryDirections(int i, int j, int k) const
+{
+    const std::array<int, 3> index{{i, j, k}};
+    int count = 0;
+    for (int d = 0; d < 3; ++d)
+    {
+        const bool onFace
+            = index[static_cast<std::size_t>(d)] == 0 || index[static_cast<std::size_t>(d)] == nodes[d] - 1;
+        count += !flat(d) && onFace ? 1 : 0;
+    }
+    return count;
+}
+
+double GridSpec::dualVolume(int i, int j, int k) const
+{
+    return std::ldexp(nodeVolume(), -boundaryDirections(i, j, k));
+}
+
+int GridSpec::mirrorIndex(int d, int index) const
+{
+    if (flat(d))
+    {
+        return 0;
+    }
+    const int last = nodes[d] - 1;
+    const int period = 2 * last;
+    int folded = index % period;
+    folded += folded < 0 ? period : 0;
+    return folded > last ? period - folded : folded;
+}
+
 std::size_t GridSpec::nodeCount() const
 {
     return static_cast<std::size_t>(nodes[0]) * static_cast<std::size_t>(nodes[1])

@@ -11,8 +11,11 @@
 // flat coordinate (the 2D model has all parcels in one plane), but the box still
 // decides which parcels are inside.
 //
-// Every node gets the full volume h_x h_y [h_z] of eq. 26, also nodes on the edge of
-// the box (see DensityGrid.hpp on what that means for edge nodes).
+// Node volumes are those of the dual cells (docs/model.md sec. 4, edge nodes): the cell
+// h_x h_y [h_z] around an interior node, half of it on a face of the box, a quarter on an
+// edge, an eighth at a corner, counting the active directions only (a flat direction's
+// thickness is the slab, not a face). mirrorIndex folds the unbounded lattice
+// lower + i h onto the nodes (the folded kernels of DensityGrid.hpp).
 //
 // Flat node index: i + nx * (j + ny * k) (i fastest).
 #pragma once
@@ -100,8 +103,19 @@ struct GridSpec
     int activeDimensions() const;
     // Node spacing; for a flat direction the thickness upper - lower.
     double spacing(int d) const;
-    // h_x h_y h_z with the thickness for flat directions: the volume of eq. 26.
+    // h_x h_y h_z with the thickness for flat directions: the volume of eq. 26 of an
+    // interior node (a whole cell).
     double nodeVolume() const;
+    // Active directions in which node (i, j, k) lies on a face of the box (index 0 or
+    // nodes - 1): 0 interior, 1 face, 2 edge, 3 corner.
+    int boundaryDirections(int i, int j, int k) const;
+    // The node's dual-cell volume: nodeVolume() / 2^boundaryDirections(i, j, k).
+    double dualVolume(int i, int j, int k) const;
+    // The node that lattice index `index` (any integer; the lattice lower[d] + index h[d]
+    // extends beyond the box) maps to when the lattice is folded onto the box by mirroring
+    // at its faces, repeatedly (period 2 (nodes - 1)): -1 -> 1, nodes -> nodes - 2, ...
+    // Flat directions: 0.
+    int mirrorIndex(int d, int index) const;
     std::size_t nodeCount() const;
     IndexBox fullBox() const;
 

@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -120,8 +121,9 @@ TEST(DensityGridVectorised, SettingChoosesTheKernel)
 
 TEST(DensityGridVectorised, PortablePathIsThePerNodeDeposit)
 {
-    // Reference: eq. 24 written out for each parcel, every node of the grid in storage order
-    // (i fastest), omega from PathWeight::omegaFromOffset; exact tails (negligibleWeight 0),
+    // Reference: eq. 24 written out for each parcel, every node of the lattice in storage order
+    // (i fastest), omega from PathWeight::omegaFromOffset, ghost nodes beyond the faces folded
+    // onto their mirror images; exact tails (negligibleWeight 0),
     // so that every node within reach counts. Parcels inside the grid (no clipping), several
     // per step, so that the step's sums are compared too.
     std::mt19937_64 random(20260611);
@@ -153,23 +155,39 @@ TEST(DensityGridVectorised, PortablePathIsThePerNodeDeposit)
                 const Eigen::Vector3d displacement = parcel.velocity * dt;
                 const Eigen::Vector3d start = parcel.position - displacement;
                 const PathWeight path(kernel, start, displacement);
+                // Every node of the unbounded lattice lower + i h within one grid length of
+                // the box (ghost nodes beyond the faces), in storage order; a ghost node's
+                // omega goes to its mirror image (folded kernel, docs/model.md sec. 4).
+                std::fill(omega.begin(), omega.end(), 0.0);
                 double sum = 0.0;
+                std::array<int, 3> ghosts{};
+                for (int d = 0; d < 3; ++d)
+                {
+                    ghosts[d] = spec.flat(d) ? 0 : spec.nodes[d] - 1;
+                }
+                auto latticeCoordinate = [&](int d, int i) {
+                    return i >= 0 && i < spec.nodes[d] ? spec.nodeCoordinate(d, i)
+                                                       : spec.lower[d] + i * spec.spacing(d);
+                };
+                for (int k = -ghosts[2]; k < spec.nodes[2] + ghosts[2]; ++k)
+                    for (int j = -ghosts[1]; j < spec.nodes[1] + ghosts[1]; ++j)
+                        for (int i = -ghosts[0]; i < spec.nodes[0] + ghosts[0]; ++i)
+                        {
+                            const Eigen::Vector3d offset(latticeCoordinate(0, i) - start.x(),
+                                                         latticeCoordinate(1, j) - start.y(),
+                                                         latticeCoordinate(2, k) - start.z());
+                            const double w = path.omegaFromOffset(offset);
+                            if (w > 0.0)
+                            {
+                                sum += w;
+                                omega[spec.flatIndex(spec.mirrorIndex(0, i), spec.mirrorIndex(1, j),
+                                                     spec.mirrorIndex(2, k))]
+                                    += w;
+                            }
+                        }
                 for (std::size_t n = 0; n < spec.nodeCount(); ++n)
                 {
-                    const int i = static_cast<int>(n % static_cast<std::size_t>(spec.nodes[0]));
-                    const int j = static_cast<int>(n / static_cast<std::size_t>(spec.nodes[0])
-                                                   % static_cast<std::size_t>(spec.nodes[1]));
-                    const int k
-                        = static_cast<int>(n / static_cast<std::size_t>(spec.nodes[0] * spec.nodes[1]));
-                    const Eigen::Vector3d offset(spec.nodeCoordinate(0, i) - start.x(),
-                                                 spec.nodeCoordinate(1, j) - start.y(),
-                                                 spec.nodeCoordinate(2, k) - start.z());
-                    omega[n] = path.omegaFromOffset(offset);
-                    if (omega[n] > 0.0)
-                    {
-                        sum += omega[n];
-                        ++weightedNodes;
-                    }
+                    weightedNodes += omega[n] > 0.0 ? 1 : 0;
                 }
                 ASSERT_GT(sum, 0.0);
                 const double mass = parcelMass(parcel);

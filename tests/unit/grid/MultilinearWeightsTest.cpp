@@ -81,14 +81,14 @@ TEST(MultilinearWeights, DensityGridSampleReproducesLinearRhoAndMomentumDensity)
         const bool planar = spec.flat(2);
         DensityGrid grid(spec);
         // One committed step whose node sums are a linear rho and a linear momentum density:
-        // mass_g = V rho(g), momentum_g = V (rho u)(g).
+        // mass_g = V_g rho(g), momentum_g = V_g (rho u)(g), V_g the node's (dual-cell) volume.
         std::vector<double> values;
         for (int k = 0; k < spec.nodes[2]; ++k)
             for (int j = 0; j < spec.nodes[1]; ++j)
                 for (int i = 0; i < spec.nodes[0]; ++i)
                 {
                     const Eigen::Vector3d g = spec.nodePosition(i, j, k);
-                    const double V = spec.nodeVolume();
+                    const double V = spec.dualVolume(i, j, k);
                     const double rho = linear(g, planar);
                     values.insert(values.end(),
                                   {V * rho, V * 10.0, V * 10.0 * 1e-5, V * rho * 2e-5, V * (0.1 + g.x()),
