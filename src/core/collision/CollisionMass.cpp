@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
 namespace dropletFiber
 {
@@ -19,6 +20,12 @@ double collisionMass(double rho, double meanRadius, double fiberRadius, const Ei
 int collisionSamples(const DensityGrid& grid, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                      const CollisionOptions& options)
 {
+    return collisionSamples(grid.spec(), a, b, options);
+}
+
+int collisionSamples(const GridSpec& spec, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                     const CollisionOptions& options)
+{
     if (options.samples > 0)
     {
         return options.samples;
@@ -28,7 +35,6 @@ int collisionSamples(const DensityGrid& grid, const Eigen::Vector3d& a, const Ei
         throw std::invalid_argument("collisionMass: samples must be >= 0");
     }
     // Automatic: one sample per node spacing spanned in the grid's active directions.
-    const GridSpec& spec = grid.spec();
     double cells = 0.0;
     for (int d = 0; d < 3; ++d)
     {
@@ -40,18 +46,23 @@ int collisionSamples(const DensityGrid& grid, const Eigen::Vector3d& a, const Ei
     return static_cast<int>(std::min(1e6, std::max(1.0, std::ceil(cells))));
 }
 
-SegmentCollision collisionMass(const DensityGrid& grid, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
-                               double fiberRadius, const Eigen::Vector3d& segmentVelocity, double dt,
-                               const CollisionOptions& options)
+Eigen::Vector3d samplePoint(const Eigen::Vector3d& a, const Eigen::Vector3d& b, int samples, int s)
+{
+    const Eigen::Vector3d piece = (b - a) / samples;
+    return a + (s + 0.5) * piece;
+}
+
+SegmentCollision collisionMassFromSamples(const DropletFieldValue* fields, int samples,
+                                          const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                                          double fiberRadius, const Eigen::Vector3d& segmentVelocity,
+                                          double dt, const CollisionOptions& options)
 {
     SegmentCollision result;
-    const int samples = collisionSamples(grid, a, b, options);
     const Eigen::Vector3d piece = (b - a) / samples;
     result.samples = samples;
     for (int s = 0; s < samples; ++s)
     {
-        const Eigen::Vector3d point = a + (s + 0.5) * piece;
-        const DropletFieldValue field = grid.sample(point);
+        const DropletFieldValue& field = fields[s];
         if (!field.inside)
         {
             ++result.samplesOutside;
@@ -69,6 +80,19 @@ SegmentCollision collisionMass(const DensityGrid& grid, const Eigen::Vector3d& a
         result.momentum += mass * field.velocity;
     }
     return result;
+}
+
+SegmentCollision collisionMass(const DensityGrid& grid, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                               double fiberRadius, const Eigen::Vector3d& segmentVelocity, double dt,
+                               const CollisionOptions& options)
+{
+    const int samples = collisionSamples(grid, a, b, options);
+    std::vector<DropletFieldValue> fields(static_cast<std::size_t>(samples));
+    for (int s = 0; s < samples; ++s)
+    {
+        fields[static_cast<std::size_t>(s)] = grid.sample(samplePoint(a, b, samples, s));
+    }
+    return collisionMassFromSamples(fields.data(), samples, a, b, fiberRadius, segmentVelocity, dt, options);
 }
 
 } // namespace dropletFiber

@@ -18,6 +18,11 @@
 //
 // Sample points outside the grid box contribute nothing (the grid knows no droplets
 // there); SegmentCollision::samplesOutside counts them so the caller can warn.
+//
+// Where to sample and the mass from the samples are apart (collisionSamples,
+// samplePoint, collisionMassFromSamples): a grid split into blocks (parallel runs) gets
+// the field values of the points from the blocks that own them, then forms the mass
+// here; collisionMass(grid, ...) is the same with the grid's own sample().
 #pragma once
 
 #include "grid/DensityGrid.hpp"
@@ -63,5 +68,17 @@ SegmentCollision collisionMass(const DensityGrid& grid, const Eigen::Vector3d& a
 // The number of sample points `options` gives for this segment on this grid.
 int collisionSamples(const DensityGrid& grid, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                      const CollisionOptions& options);
+int collisionSamples(const GridSpec& spec, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                     const CollisionOptions& options);
+
+// Sample point s of `samples` along the segment from a to b: the midpoint of its s-th piece.
+Eigen::Vector3d samplePoint(const Eigen::Vector3d& a, const Eigen::Vector3d& b, int samples, int s);
+
+// Eq. 9 and the momentum for the segment from a to b, from the droplet field at its
+// `samples` sample points (fields[s] at samplePoint(a, b, samples, s)).
+SegmentCollision collisionMassFromSamples(const DropletFieldValue* fields, int samples,
+                                          const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                                          double fiberRadius, const Eigen::Vector3d& segmentVelocity,
+                                          double dt, const CollisionOptions& options);
 
 } // namespace dropletFiber

@@ -9,8 +9,27 @@ namespace dropletFiber
 
 namespace
 {
-constexpr std::int64_t formatVersion = 1;
+constexpr std::int64_t formatVersion = 1;      // the whole grid
+constexpr std::int64_t blockFormatVersion = 2; // a block of it: its box after the header
 constexpr std::size_t headerSize = 8;
+
+std::string boxText(const IndexBox& box)
+{
+    return "(" + std::to_string(box.lo[0]) + " " + std::to_string(box.lo[1]) + " " + std::to_string(box.lo[2])
+        + ") to (" + std::to_string(box.hi[0]) + " " + std::to_string(box.hi[1]) + " "
+        + std::to_string(box.hi[2]) + ")";
+}
+
+IndexBox wholeGridBox(const std::array<int, 3>& nodes)
+{
+    IndexBox box;
+    for (int d = 0; d < 3; ++d)
+    {
+        box.lo[d] = 0;
+        box.hi[d] = nodes[d] - 1;
+    }
+    return box;
+}
 
 [[noreturn]] void failRestart(const std::string& what)
 {
@@ -35,19 +54,65 @@ bool AveragingWindow::boxHolds(const IndexBox& box, std::size_t node) const
 }
 
 AveragingWindow::AveragingWindow(const std::array<int, 3>& nodes, int nQuantities, int length)
-    : nodes_(nodes), nQuantities_(nQuantities), length_(length)
+    : AveragingWindow(nodes, wholeGridBox(nodes), nQuantities, length)
+{
+}
+
+AveragingWindow::AveragingWindow(const std::array<int, 3>& gridNodes, const IndexBox& region, int nQuantities,
+                                 int length)
+    : gridNodes_(gridNodes), region_(region), nodes_(region.extents()), nQuantities_(nQuantities),
+      length_(length)
 {
     if (length < 1)
     {
         throw std::invalid_argument("averaging window: length must be at least 1 step, got "
                                     + std::to_string(length));
     }
-    const std::size_t size = static_cast<std::size_t>(nodes[0]) * static_cast<std::size_t>(nodes[1])
-        * static_cast<std::size_t>(nodes[2]) * static_cast<std::size_t>(nQuantities);
+    if (region.empty() || region.intersected(wholeGridBox(gridNodes)) != region)
+    {
+        throw std::invalid_argument("averaging window: region " + boxText(region)
+                                    + " is not a block of the grid");
+    }
+    const std::size_t size = region.nodeCount() * static_cast<std::size_t>(nQuantities);
     slots_.resize(static_cast<std::size_t>(length));
     slotBoxes_.resize(static_cast<std::size_t>(length));
     total_.assign(size, 0.0);
     summedAt_.assign(size / static_cast<std::size_t>(nQuantities), -1);
+}
+
+bool AveragingWindow::wholeGrid() const
+{
+    return region_ == wholeGridBox(gridNodes_);
+}
+
+IndexBox AveragingWindow::toRegion(const IndexBox& box) const
+{
+    if (box.empty())
+    {
+        return IndexBox{};
+    }
+    IndexBox local;
+    for (int d = 0; d < 3; ++d)
+    {
+        local.lo[d] = box.lo[d] - region_.lo[d];
+        local.hi[d] = box.hi[d] - region_.lo[d];
+    }
+    return local;
+}
+
+IndexBox AveragingWindow::toGrid(const IndexBox& box) const
+{
+    if (box.empty())
+    {
+        return IndexBox{};
+    }
+    IndexBox global;
+    for (int d = 0; d < 3; ++d)
+    {
+        global.lo[d] = box.lo[d] + region_.lo[d];
+        global.hi[d] = box.hi[d] + region_.lo[d];
+    }
+    return global;
 }
 
 // Calls f(offset, count) for each contiguous row (fixed j, k) of the box, in values.
@@ -64,6 +129,18 @@ void AveragingWindow::push(const std::vector<double>& step, const IndexBox& box)
     {
         throw std::invalid_argument("averaging window: step array has the wrong size");
     }
+    push(step.data(), region_, box);
+}
+
+void AveragingWindow::push(const double* step, const IndexBox& stepRegion, const IndexBox& box)
+{
+    if (!box.empty() && (box.intersected(region_) != box || box.intersected(stepRegion) != box))
+    {
+        throw std::invalid_argument("averaging window: step box " + boxText(box)
+                                    + " outside the window's region " + boxText(region_)
+                                    + " or the step array's " + boxText(stepRegion));
+    }
+    const IndexBox local = toRegion(box);
     IndexBox evicted;
     std::size_t slot;
     if (filled_ == length_)
@@ -89,16 +166,18 @@ void AveragingWindow::push(const std::vector<double>& step, const IndexBox& box)
     {
         target.assign(total_.size(), 0.0);
     }
-    forEachBoxRow(box,
-                  [&](std::size_t offset, std::size_t count)
-                  {
-                      std::copy(step.begin() + static_cast<std::ptrdiff_t>(offset),
-                                step.begin() + static_cast<std::ptrdiff_t>(offset + count),
-                                target.begin() + static_cast<std::ptrdiff_t>(offset));
-                  });
-    slotBoxes_[slot] = box;
+    const std::size_t q = static_cast<std::size_t>(nQuantities_);
+    forEachRowIn(box, stepRegion,
+                 [&](const IndexRow& row)
+                 {
+                     const std::size_t to = flatIndexInBox(region_, box.lo[0], row.j + stepRegion.lo[1],
+                                                           row.k + stepRegion.lo[2]);
+                     std::copy(step + row.first * q, step + (row.first + row.length) * q,
+                               target.begin() + static_cast<std::ptrdiff_t>(to * q));
+                 });
+    slotBoxes_[slot] = local;
     ++committed_;
-    staleBox_ = staleBox_.united(evicted.united(box));
+    staleBox_ = staleBox_.united(evicted.united(local));
 }
 
 const std::vector<double>& AveragingWindow::total() const
@@ -165,8 +244,21 @@ IndexBox AveragingWindow::box() const
 WindowState AveragingWindow::save() const
 {
     WindowState state;
-    state.counters
-        = {formatVersion, nodes_[0], nodes_[1], nodes_[2], nQuantities_, length_, filled_, committed_};
+    const bool block = !wholeGrid();
+    state.counters = {block ? blockFormatVersion : formatVersion,
+                      gridNodes_[0],
+                      gridNodes_[1],
+                      gridNodes_[2],
+                      nQuantities_,
+                      length_,
+                      filled_,
+                      committed_};
+    if (block)
+    {
+        state.counters.insert(
+            state.counters.end(),
+            {region_.lo[0], region_.lo[1], region_.lo[2], region_.hi[0], region_.hi[1], region_.hi[2]});
+    }
     std::size_t valueCount = 0;
     for (int age = 0; age < filled_; ++age)
     {
@@ -176,7 +268,8 @@ WindowState AveragingWindow::save() const
     for (int age = 0; age < filled_; ++age)
     {
         const IndexBox& b = slotBoxes_[slotIndex(age)];
-        state.counters.insert(state.counters.end(), {b.lo[0], b.lo[1], b.lo[2], b.hi[0], b.hi[1], b.hi[2]});
+        const IndexBox g = block ? toGrid(b) : b;
+        state.counters.insert(state.counters.end(), {g.lo[0], g.lo[1], g.lo[2], g.hi[0], g.hi[1], g.hi[2]});
         const std::vector<double>& slot = slots_[slotIndex(age)];
         forEachBoxRow(b,
                       [&](std::size_t offset, std::size_t count)
@@ -189,26 +282,51 @@ WindowState AveragingWindow::save() const
     return state;
 }
 
-std::vector<IndexBox> AveragingWindow::savedSlotBoxes(const WindowState& state) const
+std::size_t AveragingWindow::savedHeaderSize(const WindowState& state) const
 {
     const std::vector<std::int64_t>& c = state.counters;
-    if (c.size() < headerSize || c[0] != formatVersion)
+    if (c.size() < headerSize || (c[0] != formatVersion && c[0] != blockFormatVersion))
     {
         failRestart("unknown format");
     }
-    if (c[1] != nodes_[0] || c[2] != nodes_[1] || c[3] != nodes_[2])
+    if (c[1] != gridNodes_[0] || c[2] != gridNodes_[1] || c[3] != gridNodes_[2])
     {
         failRestart("saved for a grid of " + std::to_string(c[1]) + "x" + std::to_string(c[2]) + "x"
-                    + std::to_string(c[3]) + " nodes, this grid has " + std::to_string(nodes_[0]) + "x"
-                    + std::to_string(nodes_[1]) + "x" + std::to_string(nodes_[2]));
+                    + std::to_string(c[3]) + " nodes, this grid has " + std::to_string(gridNodes_[0]) + "x"
+                    + std::to_string(gridNodes_[1]) + "x" + std::to_string(gridNodes_[2]));
     }
+    IndexBox saved = wholeGridBox(gridNodes_);
+    if (c[0] == blockFormatVersion)
+    {
+        if (c.size() < headerSize + 6)
+        {
+            failRestart("unknown format");
+        }
+        for (std::size_t d = 0; d < 3; ++d)
+        {
+            saved.lo[d] = static_cast<int>(c[headerSize + d]);
+            saved.hi[d] = static_cast<int>(c[headerSize + 3 + d]);
+        }
+    }
+    if (saved != region_)
+    {
+        failRestart("saved for the block " + boxText(saved) + " of the grid's nodes, this window holds "
+                    + boxText(region_));
+    }
+    return c[0] == blockFormatVersion ? headerSize + 6 : headerSize;
+}
+
+std::vector<IndexBox> AveragingWindow::savedSlotBoxes(const WindowState& state) const
+{
+    const std::size_t header = savedHeaderSize(state);
+    const std::vector<std::int64_t>& c = state.counters;
     if (c[4] != nQuantities_)
     {
         failRestart("different number of quantities per node");
     }
     const std::int64_t savedFilled = c[6];
     if (savedFilled < 0 || savedFilled > c[5]
-        || c.size() != headerSize + 6 * static_cast<std::size_t>(savedFilled))
+        || c.size() != header + 6 * static_cast<std::size_t>(savedFilled))
     {
         failRestart("inconsistent slot count");
     }
@@ -218,13 +336,14 @@ std::vector<IndexBox> AveragingWindow::savedSlotBoxes(const WindowState& state) 
     {
         for (int d = 0; d < 3; ++d)
         {
-            boxes[s].lo[d] = static_cast<int>(c[headerSize + 6 * s + static_cast<std::size_t>(d)]);
-            boxes[s].hi[d] = static_cast<int>(c[headerSize + 6 * s + 3 + static_cast<std::size_t>(d)]);
-            if (!boxes[s].empty() && (boxes[s].lo[d] < 0 || boxes[s].hi[d] >= nodes_[d]))
-            {
-                failRestart("slot box outside the grid");
-            }
+            boxes[s].lo[d] = static_cast<int>(c[header + 6 * s + static_cast<std::size_t>(d)]);
+            boxes[s].hi[d] = static_cast<int>(c[header + 6 * s + 3 + static_cast<std::size_t>(d)]);
         }
+        if (!boxes[s].empty() && boxes[s].intersected(region_) != boxes[s])
+        {
+            failRestart("slot box outside the grid");
+        }
+        boxes[s] = toRegion(boxes[s]);
         expectedValues += boxes[s].nodeCount() * static_cast<std::size_t>(nQuantities_);
     }
     if (expectedValues != state.values.size())

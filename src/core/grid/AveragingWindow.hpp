@@ -21,6 +21,11 @@
 // nodeTotal() keeps what it summed (in the total array, stamped with the step count):
 // the collision samples of one step share most of their nodes (neighbouring samples of
 // a fiber, 1-4 corners each), and each node's W slots are far apart in memory.
+//
+// Region: a window may hold a block of the grid only (the nodes a processor owns,
+// DensityGrid's owned box): slots and total then cover that block, node indices of
+// nodeTotal() and the layout of total() are those of the block (flatIndexInBox), and the
+// boxes given to push() are in the grid's indices. The whole grid is the default.
 #pragma once
 
 #include "grid/GridSpec.hpp"
@@ -37,6 +42,9 @@ namespace dropletFiber
 //               committed steps, then per filled slot, oldest first: lo x y z, hi x y z}
 //   values   = per filled slot, oldest first, that slot's box, nQuantities per node,
 //              i fastest (only the touched box is stored).
+// A window of a block (not the whole grid) writes format version 2: the same, with the
+// block's lo x y z, hi x y z after the committed steps; slot boxes in grid indices.
+// It restores only a state of the same block.
 struct WindowState
 {
     std::vector<std::int64_t> counters;
@@ -47,9 +55,16 @@ class AveragingWindow
 {
 public:
     AveragingWindow(const std::array<int, 3>& nodes, int nQuantities, int length);
+    // A window of the nodes of `region` (a non-empty box of the grid of gridNodes nodes).
+    AveragingWindow(const std::array<int, 3>& gridNodes, const IndexBox& region, int nQuantities, int length);
 
     // Commit one step: `step` is a full per-node array that is zero outside `box`.
     void push(const std::vector<double>& step, const IndexBox& box);
+    // The same from an array laid out over stepRegion (which holds box; box within
+    // region()): the block's part of a larger step array.
+    void push(const double* step, const IndexBox& stepRegion, const IndexBox& box);
+    // The block of the grid this window holds (grid indices).
+    const IndexBox& region() const { return region_; }
 
     // The window total of every node (brings the stale box up to date first).
     const std::vector<double>& total() const;
@@ -58,7 +73,8 @@ public:
     int length() const { return length_; }
     int filled() const { return filled_; } // steps in the window, <= length
     std::int64_t committedSteps() const { return committed_; }
-    // Union of the boxes of the steps in the window (where total can be non-zero).
+    // Union of the boxes of the steps in the window (where total can be non-zero), in the
+    // region's indices.
     IndexBox box() const;
 
     WindowState save() const;
@@ -73,11 +89,20 @@ private:
     // The slot boxes of a saved state, checked against this grid and the state's value
     // count; throws std::invalid_argument naming what does not fit.
     std::vector<IndexBox> savedSlotBoxes(const WindowState& state) const;
+    // Checks the saved format, grid and block; the number of counters before the slot boxes.
+    std::size_t savedHeaderSize(const WindowState& state) const;
     bool boxHolds(const IndexBox& box, std::size_t node) const;
     template <class F>
     void forEachBoxRow(const IndexBox& box, F&& f) const;
 
-    std::array<int, 3> nodes_;
+    // Slot boxes, lo and hi of the region: grid indices <-> indices in the region
+    IndexBox toRegion(const IndexBox& box) const;
+    IndexBox toGrid(const IndexBox& box) const;
+    bool wholeGrid() const;
+
+    std::array<int, 3> gridNodes_;
+    IndexBox region_;
+    std::array<int, 3> nodes_; // of the region (its node indices: flatIndexInBox)
     int nQuantities_;
     int length_;
     std::vector<std::vector<double>> slots_;

@@ -217,13 +217,35 @@ void addCornerWeights(const GridSpec& spec, const std::array<double, 3>& spacing
     }
 }
 
+GridBlock checkedBlock(const GridSpec& spec, const GridBlock& block)
+{
+    spec.validate();
+    const IndexBox grid = spec.fullBox();
+    if (block.owned.empty() || block.storage.intersected(grid) != block.storage
+        || block.owned.intersected(block.storage) != block.owned)
+    {
+        throw std::invalid_argument(
+            "DensityGrid: a block's owned nodes must be a non-empty box inside its storage "
+            "box, inside the grid");
+    }
+    return block;
+}
+
 } // namespace
 
 DensityGrid::DensityGrid(const GridSpec& spec, const KernelSettings& kernel, int windowLength)
+    : DensityGrid(spec, kernel, windowLength, GridBlock{validated(spec).fullBox(), spec.fullBox()})
+{
+}
+
+DensityGrid::DensityGrid(const GridSpec& spec, const KernelSettings& kernel, int windowLength,
+                         const GridBlock& block)
     : spec_(validated(spec)), kernelSettings_(kernel),
       kernelDimension_(resolveDimension(spec, kernel.dimension)),
       batched_(kernel.vectorised && PathWeightBatch::cpuSupported()), nodeVolume_(spec.nodeVolume()),
-      window_(spec.nodes, nQuantities, windowLength)
+      owned_(checkedBlock(spec, block).owned), storage_(block.storage),
+      storesWholeGrid_(block.storage == spec.fullBox()), ownsWholeGrid_(block.owned == spec.fullBox()),
+      window_(spec.nodes, block.owned, nQuantities, windowLength)
 {
     kernelSettings_.validate();
     for (int d = 0; d < 3; ++d)
@@ -250,7 +272,7 @@ DensityGrid::DensityGrid(const GridSpec& spec, const KernelSettings& kernel, int
         halfCellDiagonal_ += spec.flat(d) ? 0.0 : 0.25 * spec.spacing(d) * spec.spacing(d);
     }
     halfCellDiagonal_ = std::sqrt(halfCellDiagonal_);
-    step_.assign(spec.nodeCount() * nQuantities, 0.0);
+    step_.assign(storage_.nodeCount() * nQuantities, 0.0);
 }
 
 void DensityGrid::deposit(const Parcel& parcel, double dt)
@@ -561,7 +583,7 @@ void DensityGrid::depositWeighted(double inverseSum, const std::array<double, nQ
     }
     stepStatistics_.nodesWeighted += static_cast<std::int64_t>(scratch_.size());
     // The touched box: the weighted nodes lie inside it.
-    stepBox_ = stepBox_.united(box);
+    touch(box);
 }
 
 double DensityGrid::negligibleDistance(const ParcelKernel& kernel, double pathLength) const
@@ -588,10 +610,37 @@ double DensityGrid::negligibleDistance(const ParcelKernel& kernel, double pathLe
     return cutoffSquared < reach * reach ? std::sqrt(cutoffSquared) : reach;
 }
 
+std::array<int, 3> DensityGrid::nodeIndices(std::size_t node) const
+{
+    const auto nx = static_cast<std::size_t>(spec_.nodes[0]);
+    const auto ny = static_cast<std::size_t>(spec_.nodes[1]);
+    return {{static_cast<int>(node % nx), static_cast<int>((node / nx) % ny),
+             static_cast<int>(node / (nx * ny))}};
+}
+
+double* DensityGrid::stepValuesOf(std::size_t node)
+{
+    if (storesWholeGrid_)
+    {
+        return step_.data() + node * nQuantities;
+    }
+    const std::array<int, 3> n = nodeIndices(node);
+    if (storage_.holds(n[0], n[1], n[2]))
+    {
+        return step_.data() + flatIndexInBox(storage_, n[0], n[1], n[2]) * nQuantities;
+    }
+    const auto [entry, added] = overflowEntry_.try_emplace(node, overflow_.size());
+    if (added)
+    {
+        overflow_.push_back(OverflowNode{node, {}});
+    }
+    return overflow_[entry->second].values.data();
+}
+
 void DensityGrid::accumulate(std::size_t node, double weight,
                              const std::array<double, nQuantities>& parcelTotals)
 {
-    double* values = step_.data() + node * nQuantities;
+    double* values = stepValuesOf(node);
     for (int q = 0; q < nQuantities; ++q)
     {
         values[q] += weight * parcelTotals[static_cast<std::size_t>(q)];
@@ -609,7 +658,7 @@ void DensityGrid::depositFallback(const Eigen::Vector3d& start, const Eigen::Vec
         points = PathPoints(start, displacement, smallestSpacing_ / faceRefinement);
         cells = pathCells(spec_, spacing_, points);
     }
-    stepBox_ = stepBox_.united(cells.box);
+    touch(cells.box);
     const int corners = (spec_.flat(0) ? 1 : 2) * (spec_.flat(1) ? 1 : 2) * (spec_.flat(2) ? 1 : 2);
     stepStatistics_.nodesVisited += static_cast<std::int64_t>(points.count) * corners;
 
@@ -664,17 +713,41 @@ void DensityGrid::depositPathWeights(const IndexBox& box, const std::array<doubl
 
 void DensityGrid::commitStep()
 {
-    window_.push(step_, stepBox_);
-    forEachRow(stepBox_, spec_.nodes,
-               [&](const IndexRow& row)
-               {
-                   double* values = step_.data() + row.first * nQuantities;
-                   std::fill(values, values + row.length * nQuantities, 0.0);
-               });
+    if (!overflow_.empty())
+    {
+        throw std::logic_error(
+            "DensityGrid::commitStep: the step's overflow (nodes of other blocks) was not taken");
+    }
+    window_.push(step_.data(), storage_, stepBox_.intersected(owned_));
+    forEachRowIn(stepBox_, storage_,
+                 [&](const IndexRow& row)
+                 {
+                     double* values = step_.data() + row.first * nQuantities;
+                     std::fill(values, values + row.length * nQuantities, 0.0);
+                 });
     stepBox_ = IndexBox{};
     lastStepStatistics_ = stepStatistics_;
     stepStatistics_ = StepStatistics{};
 }
+
+std::vector<OverflowNode> DensityGrid::takeOverflow()
+{
+    std::vector<OverflowNode> taken;
+    taken.swap(overflow_);
+    overflowEntry_.clear();
+    return taken;
+}
+
+namespace
+{
+void checkStored(const IndexBox& box, const IndexBox& storage, const char* what)
+{
+    if (!box.empty() && box.intersected(storage) != box)
+    {
+        throw std::invalid_argument(std::string("DensityGrid::") + what + ": box outside the nodes stored");
+    }
+}
+} // namespace
 
 std::vector<double> DensityGrid::packStep(const IndexBox& box) const
 {
@@ -685,12 +758,14 @@ std::vector<double> DensityGrid::packStep(const IndexBox& box) const
 
 void DensityGrid::packStep(const IndexBox& box, double* values) const
 {
-    forEachRow(box, spec_.nodes,
-               [&](const IndexRow& row)
-               {
-                   const double* first = step_.data() + row.first * nQuantities;
-                   std::copy(first, first + row.length * nQuantities, values + row.offsetInBox * nQuantities);
-               });
+    checkStored(box, storage_, "packStep");
+    forEachRowIn(box, storage_,
+                 [&](const IndexRow& row)
+                 {
+                     const double* first = step_.data() + row.first * nQuantities;
+                     std::copy(first, first + row.length * nQuantities,
+                               values + row.offsetInBox * nQuantities);
+                 });
 }
 
 void DensityGrid::unpackStep(const IndexBox& box, const std::vector<double>& values)
@@ -704,23 +779,60 @@ void DensityGrid::unpackStep(const IndexBox& box, const double* values, std::siz
     {
         return;
     }
-    for (int d = 0; d < 3; ++d)
-    {
-        if (box.lo[d] < 0 || box.hi[d] >= spec_.nodes[d])
-        {
-            throw std::invalid_argument("DensityGrid::unpackStep: box outside the grid");
-        }
-    }
+    checkStored(box, storage_, "unpackStep");
     if (count != box.nodeCount() * nQuantities)
     {
         throw std::invalid_argument("DensityGrid::unpackStep: value count does not match the box");
     }
-    forEachRow(box, spec_.nodes,
-               [&](const IndexRow& row)
-               {
-                   const double* first = values + row.offsetInBox * nQuantities;
-                   std::copy(first, first + row.length * nQuantities, step_.data() + row.first * nQuantities);
-               });
+    forEachRowIn(box, storage_,
+                 [&](const IndexRow& row)
+                 {
+                     const double* first = values + row.offsetInBox * nQuantities;
+                     std::copy(first, first + row.length * nQuantities,
+                               step_.data() + row.first * nQuantities);
+                 });
+    stepBox_ = stepBox_.united(box);
+}
+
+void DensityGrid::addStep(const IndexBox& box, const double* values, std::size_t count)
+{
+    if (box.empty())
+    {
+        return;
+    }
+    checkStored(box, storage_, "addStep");
+    if (count != box.nodeCount() * nQuantities)
+    {
+        throw std::invalid_argument("DensityGrid::addStep: value count does not match the box");
+    }
+    forEachRowIn(box, storage_,
+                 [&](const IndexRow& row)
+                 {
+                     const double* from = values + row.offsetInBox * nQuantities;
+                     double* to = step_.data() + row.first * nQuantities;
+                     for (std::size_t n = 0; n < row.length * nQuantities; ++n)
+                     {
+                         to[n] += from[n];
+                     }
+                 });
+    stepBox_ = stepBox_.united(box);
+}
+
+void DensityGrid::addToNode(std::size_t node, const double* values)
+{
+    const std::array<int, 3> n = nodeIndices(node);
+    if (node >= spec_.nodeCount() || !storage_.holds(n[0], n[1], n[2]))
+    {
+        throw std::invalid_argument("DensityGrid::addToNode: node " + std::to_string(node)
+                                    + " is not stored here");
+    }
+    double* to = step_.data() + flatIndexInBox(storage_, n[0], n[1], n[2]) * nQuantities;
+    for (int q = 0; q < nQuantities; ++q)
+    {
+        to[q] += values[q];
+    }
+    IndexBox box;
+    box.lo = box.hi = n;
     stepBox_ = stepBox_.united(box);
 }
 
@@ -760,10 +872,31 @@ double DensityGrid::cellsPerNodeVolume(std::size_t flatIndex) const
     return std::ldexp(1.0, spec_.boundaryDirections(i, j, k));
 }
 
+bool DensityGrid::owns(std::size_t node) const
+{
+    const std::array<int, 3> n = nodeIndices(node);
+    return node < spec_.nodeCount() && owned_.holds(n[0], n[1], n[2]);
+}
+
+void DensityGrid::windowTotal(std::size_t node, double* sums) const
+{
+    if (ownsWholeGrid_)
+    {
+        window_.nodeTotal(node, sums);
+        return;
+    }
+    const std::array<int, 3> n = nodeIndices(node);
+    if (node >= spec_.nodeCount() || !owned_.holds(n[0], n[1], n[2]))
+    {
+        throw std::out_of_range("DensityGrid: node " + std::to_string(node) + " is not owned by this block");
+    }
+    window_.nodeTotal(flatIndexInBox(owned_, n[0], n[1], n[2]), sums);
+}
+
 DropletFieldValue DensityGrid::nodeValue(std::size_t flatIndex) const
 {
     std::array<double, nQuantities> sums{};
-    window_.nodeTotal(flatIndex, sums.data());
+    windowTotal(flatIndex, sums.data());
     // Sums per whole cell (a power of two: exact; the means are unchanged).
     const double scale = cellsPerNodeVolume(flatIndex);
     for (double& sum : sums)
@@ -787,18 +920,27 @@ DropletFieldValue DensityGrid::sample(const Eigen::Vector3d& point) const
         return outside;
     }
     const CornerWeights corners = multilinearWeights(spec_, point);
+    std::array<double, 8 * nQuantities> totals{};
+    for (int c = 0; c < corners.count; ++c)
+    {
+        windowTotal(corners.node[static_cast<std::size_t>(c)], totals.data() + c * nQuantities);
+    }
+    return interpolated(corners, totals.data());
+}
+
+DropletFieldValue DensityGrid::interpolated(const CornerWeights& corners, const double* cornerTotals) const
+{
     std::array<double, nQuantities> sums{};
-    std::array<double, nQuantities> total{};
     for (int c = 0; c < corners.count; ++c)
     {
         const std::size_t node = corners.node[static_cast<std::size_t>(c)];
-        window_.nodeTotal(node, total.data());
+        const double* total = cornerTotals + c * nQuantities;
         const double w = corners.weight[static_cast<std::size_t>(c)];
         // Densities are interpolated: the sums per whole cell (scale 1 inside the box).
         const double scale = cellsPerNodeVolume(node);
         for (int q = 0; q < nQuantities; ++q)
         {
-            sums[static_cast<std::size_t>(q)] += w * (scale * total[static_cast<std::size_t>(q)]);
+            sums[static_cast<std::size_t>(q)] += w * (scale * total[q]);
         }
     }
     return fieldFromSums(sums);
@@ -813,7 +955,7 @@ double DensityGrid::windowMassPerStep() const
     }
     double mass = 0.0;
     const std::vector<double>& total = window_.total();
-    for (std::size_t n = 0; n < spec_.nodeCount(); ++n)
+    for (std::size_t n = 0; n < owned_.nodeCount(); ++n)
     {
         mass += total[n * nQuantities + quantityMass];
     }

@@ -58,10 +58,19 @@
 // at every node, faces, edges and corners included (EdgeNodesTest). Cloud-in-cell
 // deposits need no folding (the corners of a point inside the box are nodes).
 //
-// Parallel runs (MPI, done by the caller): each rank deposits its parcels; then the step
-// accumulator (stepValues(), nodes * nQuantities doubles) is summed over ranks within the
-// union of the ranks' stepBox() (pack/unpackStep help), and every rank calls commitStep().
-// The window is then identical on all ranks.
+// Blocks (parallel runs, MPI done by the caller; docs/model.md sec. 4, grid blocks): a
+// grid may store a block of the global lattice only (GridBlock): the nodes it owns, where
+// its averaging window lives, and a storage box around them (owned plus a halo of guard
+// nodes) for the step's deposit. All lattice arithmetic (path clipping at the global box,
+// kernels, weights normalised over the global lattice, folding, node volumes) is that of
+// the whole grid; only storage and indexing are local, so a block deposits exactly what
+// the whole grid would at the same nodes. What a parcel gives nodes beyond the storage
+// box goes to an overflow list (global node index and the seven quantities). The caller
+// then sends the halo's step values (packStep) and the overflow (takeOverflow) to the
+// nodes' owners, who add them (addStep, addToNode), and calls commitStep(): the owned
+// part of the step enters the window. Queries: windowTotal() at an owned node;
+// interpolated() forms sample()'s value from the totals of a point's corners, wherever
+// they were read. With the whole grid as the block (the default) nothing changes.
 //
 // Restart: saveWindow()/restoreWindow() (AveragingWindow.hpp); the restored grid gives
 // bit-for-bit the same fields and the same results for later steps.
@@ -69,15 +78,17 @@
 // Invalid parcels (non-finite values, negative diameter/nParticle/density) and dt < 0
 // throw std::invalid_argument; nParticle == 0 or diameter == 0 is counted and skipped.
 //
-// Memory: nQuantities = 7 doubles (56 bytes) per node for the step accumulator, the
-// window total, and each of the W window slots (allocated as the window fills):
-// (W + 2) * 56 bytes per node, e.g. 250 x 250 nodes, W = 10: 42 MB.
+// Memory: nQuantities = 7 doubles (56 bytes) per node for the step accumulator (per
+// stored node), the window total and each of the W window slots (allocated as the window
+// fills; per owned node): (W + 2) * 56 bytes per node for the whole grid, e.g.
+// 250 x 250 nodes, W = 10: 42 MB.
 // Time per parcel: ~ nodes within reach of its path (one erf-type evaluation each).
 #pragma once
 
 #include "grid/AveragingWindow.hpp"
 #include "grid/GridQuantities.hpp"
 #include "grid/GridSpec.hpp"
+#include "grid/MultilinearWeights.hpp"
 #include "grid/Parcel.hpp"
 #include "grid/ParcelKernel.hpp"
 #include "grid/PathWeight.hpp"
@@ -88,6 +99,7 @@
 
 #include <array>
 #include <cstddef>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -105,12 +117,30 @@ struct DropletFieldValue
     Eigen::Vector3d velocity{0.0, 0.0, 0.0}; // mass-weighted mean droplet velocity, m/s
 };
 
+// The part of the grid one DensityGrid holds: the nodes it owns (its averaging window)
+// and the nodes it stores the step's deposit for (owned plus halo), grid indices.
+struct GridBlock
+{
+    IndexBox owned;
+    IndexBox storage;
+};
+
+// A node's step values that lie beyond the storage box (deposited by this grid, owned by
+// another): global flat node index and the seven quantities (GridQuantities layout).
+struct OverflowNode
+{
+    std::size_t node = 0;
+    std::array<double, nQuantities> values{};
+};
+
 class DensityGrid
 {
 public:
     // windowLength W >= 1: number of committed steps averaged. Throws std::invalid_argument
     // on an invalid spec or settings.
     DensityGrid(const GridSpec& spec, const KernelSettings& kernel = KernelSettings{}, int windowLength = 1);
+    // A block of the grid: block.owned non-empty, inside block.storage, inside the grid.
+    DensityGrid(const GridSpec& spec, const KernelSettings& kernel, int windowLength, const GridBlock& block);
 
     const GridSpec& spec() const { return spec_; }
     const KernelSettings& kernelSettings() const { return kernelSettings_; }
@@ -127,20 +157,34 @@ public:
     const StepStatistics& stepStatistics() const { return stepStatistics_; }
     const StepStatistics& lastStepStatistics() const { return lastStepStatistics_; }
 
-    // --- step accumulator, for summing across MPI ranks --------------------------------
-    // nodes * nQuantities doubles, GridQuantities layout, zero outside stepBox().
+    // --- step accumulator and the block's exchanges -------------------------------------
+    const IndexBox& ownedBox() const { return owned_; }
+    const IndexBox& storageBox() const { return storage_; }
+    // storage.nodeCount() * nQuantities doubles, GridQuantities layout over the storage box
+    // (flatIndexInBox; the whole grid: flat node index), zero outside stepBox().
     std::vector<double>& stepValues() { return step_; }
     const std::vector<double>& stepValues() const { return step_; }
+    // The stored nodes the step touched (grid indices).
     IndexBox stepBox() const { return stepBox_; }
-    // Copies the box's values (nQuantities per node, i fastest) into a contiguous buffer...
+    // Copies the box's values (nQuantities per node, i fastest; the box inside the storage
+    // box) into a contiguous buffer...
     std::vector<double> packStep(const IndexBox& box) const;
     // The same into the caller's buffer of box.nodeCount() * nQuantities values (the
-    // function object packs straight into its message: 0.4 MB per step in the tutorial).
+    // function object packs straight into its message).
     void packStep(const IndexBox& box, double* values) const;
     // ...and back: overwrites the box (e.g. with the sum over ranks); stepBox() becomes
     // stepBox() united with box. Nodes outside the box are left as they are.
     void unpackStep(const IndexBox& box, const std::vector<double>& values);
     void unpackStep(const IndexBox& box, const double* values, std::size_t count);
+    // Adds the box's values (another block's deposit at nodes stored here) to the step.
+    void addStep(const IndexBox& box, const double* values, std::size_t count);
+    // Adds one node's seven values (an overflow entry of another block); the node must be
+    // stored here.
+    void addToNode(std::size_t node, const double* values);
+    // The step's values at nodes beyond the storage box, in the order first touched;
+    // moved out (commitStep() requires it to be empty: they belong to other blocks).
+    const std::vector<OverflowNode>& overflow() const { return overflow_; }
+    std::vector<OverflowNode> takeOverflow();
 
     // --- averaging window and fields ----------------------------------------------------
     int windowLength() const { return window_.length(); }
@@ -150,10 +194,19 @@ public:
     WindowState saveWindow() const { return window_.save(); }
     void restoreWindow(const WindowState& state) { window_.restore(state); }
 
+    // Fields at an owned node (grid indices / global flat index).
     DropletFieldValue nodeValue(int i, int j, int k) const;
     DropletFieldValue nodeValue(std::size_t flatIndex) const;
+    // The field at a point whose cell corners are owned here (all of them for the whole
+    // grid); throws std::out_of_range otherwise.
     DropletFieldValue sample(const Eigen::Vector3d& point) const;
-    // Window mass per step on the grid: sum over nodes of S_mass / s (kg).
+    // The window sums S_q of an owned node (global flat index), nQuantities values.
+    void windowTotal(std::size_t node, double* sums) const;
+    bool owns(std::size_t node) const;
+    // sample()'s value from the window sums of the corners (corner c's nQuantities values
+    // at cornerTotals + c * nQuantities): the same arithmetic, in the same order.
+    DropletFieldValue interpolated(const CornerWeights& corners, const double* cornerTotals) const;
+    // Window mass per step on the owned nodes: sum over them of S_mass / s (kg).
     double windowMassPerStep() const;
 
 private:
@@ -228,6 +281,12 @@ private:
     void depositPathWeights(const IndexBox& box, const std::array<double, nQuantities>& parcelTotals);
     // Step 7 for one node.
     void accumulate(std::size_t node, double weight, const std::array<double, nQuantities>& parcelTotals);
+    // The step values of a node (global flat index): stored, or its overflow entry.
+    double* stepValuesOf(std::size_t node);
+    // Grid indices of a global flat node index.
+    std::array<int, 3> nodeIndices(std::size_t node) const;
+    // Where a touched box of nodes (grid indices) is stored: stepBox_ grows by it.
+    void touch(const IndexBox& box) { stepBox_ = stepBox_.united(box.intersected(storage_)); }
 
     GridSpec spec_;
     KernelSettings kernelSettings_;
@@ -241,9 +300,15 @@ private:
     double largestSpacing_ = 0.0;     // over the active directions (KernelSettings::cloudInCellBelow)
     double halfCellDiagonal_ = 0.0;   // over the active directions (negligible weights)
     double nodeVolume_;               // of an interior node (whole cell)
+    IndexBox owned_;                  // nodes owned: the window's region
+    IndexBox storage_;                // nodes stored for the step's deposit (owned plus halo)
+    bool storesWholeGrid_;            // storage_ is the whole grid: flat node index = storage index
+    bool ownsWholeGrid_;              // owned_ is the whole grid: flat node index = window index
     AveragingWindow window_;
     std::vector<double> step_;
     IndexBox stepBox_;
+    std::vector<OverflowNode> overflow_;
+    std::unordered_map<std::size_t, std::size_t> overflowEntry_; // node -> position in overflow_
     StepStatistics stepStatistics_;
     StepStatistics lastStepStatistics_;
     std::vector<std::pair<std::size_t, double>> scratch_; // (node, omega) of the current parcel

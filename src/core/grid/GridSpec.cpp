@@ -41,6 +41,26 @@ IndexBox IndexBox::united(const IndexBox& other) const
     return box;
 }
 
+IndexBox IndexBox::intersected(const IndexBox& other) const
+{
+    IndexBox box;
+    for (int d = 0; d < 3; ++d)
+    {
+        box.lo[d] = std::max(lo[d], other.lo[d]);
+        box.hi[d] = std::min(hi[d], other.hi[d]);
+    }
+    return box.empty() ? IndexBox{} : box;
+}
+
+std::array<int, 3> IndexBox::extents() const
+{
+    if (empty())
+    {
+        return {{0, 0, 0}};
+    }
+    return {{hi[0] - lo[0] + 1, hi[1] - lo[1] + 1, hi[2] - lo[2] + 1}};
+}
+
 void GridSpec::validate() const
 {
     static const char* axis[3] = {"x", "y", "z"};

@@ -24,6 +24,7 @@
 
 #include <array>
 #include <cstddef>
+#include <utility>
 
 namespace dropletFiber
 {
@@ -38,6 +39,14 @@ struct IndexBox
     std::size_t nodeCount() const;
     // Smallest box holding both (an empty box is neutral).
     IndexBox united(const IndexBox& other) const;
+    // The nodes in both (empty when they do not overlap).
+    IndexBox intersected(const IndexBox& other) const;
+    bool holds(int i, int j, int k) const
+    {
+        return i >= lo[0] && i <= hi[0] && j >= lo[1] && j <= hi[1] && k >= lo[2] && k <= hi[2];
+    }
+    // Node counts per direction (0 for an empty box).
+    std::array<int, 3> extents() const;
     bool operator==(const IndexBox& other) const { return lo == other.lo && hi == other.hi; }
     bool operator!=(const IndexBox& other) const { return !(*this == other); }
 };
@@ -48,6 +57,17 @@ inline std::size_t flatNodeIndex(const std::array<int, 3>& nodes, int i, int j, 
     return static_cast<std::size_t>(i)
         + static_cast<std::size_t>(nodes[0])
         * (static_cast<std::size_t>(j) + static_cast<std::size_t>(nodes[1]) * static_cast<std::size_t>(k));
+}
+
+// Flat index of node (i, j, k) among the nodes of `region` (i fastest): the storage of a
+// block of the grid (DensityGrid's storage box, AveragingWindow's region).
+inline std::size_t flatIndexInBox(const IndexBox& region, int i, int j, int k)
+{
+    return static_cast<std::size_t>(i - region.lo[0])
+        + static_cast<std::size_t>(region.hi[0] - region.lo[0] + 1)
+        * (static_cast<std::size_t>(j - region.lo[1])
+           + static_cast<std::size_t>(region.hi[1] - region.lo[1] + 1)
+               * static_cast<std::size_t>(k - region.lo[2]));
 }
 
 // One row of an IndexBox: its nodes lo[0]..hi[0] at fixed (j, k), consecutive in the grid.
@@ -81,6 +101,25 @@ void forEachRow(const IndexBox& box, const std::array<int, 3>& nodes, F&& f)
             row.offsetInBox += row.length;
         }
     }
+}
+
+// forEachRow over the rows of `box` (inside `region`), with row.first the flat index of
+// the row's first node among the nodes of region (flatIndexInBox) and row.j, row.k
+// relative to region.lo: loops over a block of the grid stored on its own.
+template <class F>
+void forEachRowIn(const IndexBox& box, const IndexBox& region, F&& f)
+{
+    if (box.empty())
+    {
+        return;
+    }
+    IndexBox local;
+    for (int d = 0; d < 3; ++d)
+    {
+        local.lo[d] = box.lo[d] - region.lo[d];
+        local.hi[d] = box.hi[d] - region.lo[d];
+    }
+    forEachRow(local, region.extents(), std::forward<F>(f));
 }
 
 struct GridSpec

@@ -1,0 +1,73 @@
+// GridPartition: which processor owns which nodes of the density grid (docs/model.md
+// sec. 4, grid blocks). P disjoint boxes of node indices that tile the grid; every
+// processor knows all of them, so the owner of a node is a look-up.
+//
+// From the mesh decomposition (fromSubdomainBounds): processor p's subdomain bounding box
+// [min, max] gives, per active direction, the index range
+//     [ceil((min - lower) / h), ceil((max - lower) / h) - 1],
+// half-open in space, so a node on a plane shared by two subdomains belongs to exactly
+// one of them (both compute the same ceil from the same coordinate); a box reaching the
+// grid's lower face starts at 0, one reaching its upper face ends at the last node. Flat
+// directions: the single node layer belongs to every box that covers the slab. Simple
+// and hierarchical decompositions (and manual ones that happen to be boxes) tile the grid
+// that way and each processor owns the nodes around its own cells, where its parcels and
+// fibers are. When the boxes do not tile the grid (irregular manual decompositions, a
+// grid larger than the mesh, subdomains that are not boxes: tiles() says so), bisection()
+// splits the grid instead: recursively along the longest index direction, the parts'
+// node counts in proportion to their processor counts (deterministic; correct, only the
+// blocks then match the processors' parcels less well: more traffic).
+//
+// Halo (storageBox): a processor stores its owned box grown by `halo` nodes in every
+// active direction, clipped to the grid. neighbours(): the other processors whose owned
+// boxes meet that storage box, with the shared nodes (the halo values they own).
+#pragma once
+
+#include "grid/GridSpec.hpp"
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace dropletFiber
+{
+
+// A subdomain's bounding box: min x y z, max x y z.
+using SubdomainBounds = std::array<double, 6>;
+
+// Another processor's owned nodes within this processor's storage box.
+struct BlockNeighbour
+{
+    int processor = 0;
+    IndexBox shared;
+};
+
+class GridPartition
+{
+public:
+    GridPartition() = default;
+    explicit GridPartition(std::vector<IndexBox> boxes) : boxes_(std::move(boxes)) {}
+
+    // The boxes of the subdomain bounds (one per processor), as above; check tiles().
+    static GridPartition fromSubdomainBounds(const GridSpec& spec,
+                                             const std::vector<SubdomainBounds>& bounds);
+    // Recursive bisection of the grid into `parts` boxes (parts >= 1).
+    static GridPartition bisection(const GridSpec& spec, int parts);
+
+    // True when the boxes are pairwise disjoint, inside the grid, and hold every node.
+    bool tiles(const GridSpec& spec) const;
+    int processors() const { return static_cast<int>(boxes_.size()); }
+    const IndexBox& owned(int processor) const { return boxes_[static_cast<std::size_t>(processor)]; }
+    const std::vector<IndexBox>& boxes() const { return boxes_; }
+    // The processor owning node (i, j, k); -1 when none does (not for a tiling partition).
+    int owner(int i, int j, int k) const;
+    // The processor's owned box grown by halo nodes in the active directions, clipped.
+    IndexBox storageBox(const GridSpec& spec, int processor, int halo) const;
+    // The other processors whose owned nodes lie in `storage`, in processor order.
+    std::vector<BlockNeighbour> neighbours(int processor, const IndexBox& storage) const;
+
+private:
+    std::vector<IndexBox> boxes_;
+    mutable std::size_t lastOwner_ = 0; // owner(): neighbouring look-ups hit the same box
+};
+
+} // namespace dropletFiber

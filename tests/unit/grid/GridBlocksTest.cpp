@@ -1,0 +1,368 @@
+// Grid blocks: a grid split into blocks that each store their owned nodes plus a halo
+// deposits, after the halo and overflow exchange, what the whole grid deposits: one parcel
+// bit for bit (each node gets the same product), many parcels to round-off (the sums at a
+// node add in another order). The partition tiles the grid from subdomain bounds, or by
+// bisection when they do not.
+#include "grid/DensityGrid.hpp"
+#include "grid/GridPartition.hpp"
+#include "grid/MultilinearWeights.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <random>
+
+using namespace dropletFiber;
+
+namespace
+{
+
+GridSpec grid3D()
+{
+    GridSpec spec;
+    spec.lower = Eigen::Vector3d(0.0, 0.0, 0.0);
+    spec.upper = Eigen::Vector3d(0.02, 0.015, 0.01);
+    spec.nodes = {{21, 16, 11}};
+    return spec;
+}
+
+GridSpec grid2D()
+{
+    GridSpec spec;
+    spec.lower = Eigen::Vector3d(0.0, 0.0, 0.0);
+    spec.upper = Eigen::Vector3d(0.03, 0.02, 0.001);
+    spec.nodes = {{31, 21, 1}};
+    return spec;
+}
+
+// Parcels anywhere in and a little beyond the box, wide and narrow kernels (the narrow
+// ones go to the cell corners), moving and still.
+std::vector<Parcel> randomParcels(const GridSpec& spec, int count, unsigned seed)
+{
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    std::vector<Parcel> parcels;
+    for (int n = 0; n < count; ++n)
+    {
+        Parcel p;
+        for (int d = 0; d < 3; ++d)
+        {
+            const double size = spec.upper[d] - spec.lower[d];
+            p.position[d] = spec.flat(d) ? 0.5 * (spec.lower[d] + spec.upper[d])
+                                         : spec.lower[d] - 0.05 * size + 1.1 * size * unit(rng);
+            p.velocity[d] = spec.flat(d) ? 0.0 : (n % 5 == 0 ? 0.0 : 4.0 * (unit(rng) - 0.5));
+        }
+        p.diameter = 2e-5 * (0.5 + unit(rng));
+        p.nParticle = n % 3 == 0 ? 2.0 : 20.0 + 200.0 * unit(rng);
+        p.rhoDroplet = 1000.0;
+        parcels.push_back(p);
+    }
+    return parcels;
+}
+
+struct Blocks
+{
+    GridPartition partition;
+    std::vector<std::unique_ptr<DensityGrid>> grids;
+};
+
+Blocks makeBlocks(const GridSpec& spec, const GridPartition& partition, int halo, int window)
+{
+    Blocks blocks{partition, {}};
+    for (int p = 0; p < partition.processors(); ++p)
+    {
+        const GridBlock block{partition.owned(p), partition.storageBox(spec, p, halo)};
+        blocks.grids.push_back(std::make_unique<DensityGrid>(spec, KernelSettings{}, window, block));
+    }
+    return blocks;
+}
+
+// What the function object does over MPI: halo values and overflow to their owners,
+// who add them, then every block commits.
+void exchangeAndCommit(const GridSpec& spec, Blocks& blocks)
+{
+    const int count = blocks.partition.processors();
+    std::vector<std::vector<OverflowNode>> overflow(static_cast<std::size_t>(count));
+    for (int p = 0; p < count; ++p)
+    {
+        overflow[static_cast<std::size_t>(p)] = blocks.grids[static_cast<std::size_t>(p)]->takeOverflow();
+    }
+    for (int p = 0; p < count; ++p)
+    {
+        DensityGrid& from = *blocks.grids[static_cast<std::size_t>(p)];
+        for (const BlockNeighbour& n : blocks.partition.neighbours(p, from.storageBox()))
+        {
+            const IndexBox box = n.shared.intersected(from.stepBox());
+            const std::vector<double> values = from.packStep(box);
+            blocks.grids[static_cast<std::size_t>(n.processor)]->addStep(box, values.data(), values.size());
+        }
+        for (const OverflowNode& node : overflow[static_cast<std::size_t>(p)])
+        {
+            const std::size_t nx = static_cast<std::size_t>(spec.nodes[0]);
+            const std::size_t ny = static_cast<std::size_t>(spec.nodes[1]);
+            const int owner = blocks.partition.owner(static_cast<int>(node.node % nx),
+                                                     static_cast<int>((node.node / nx) % ny),
+                                                     static_cast<int>(node.node / (nx * ny)));
+            ASSERT_GE(owner, 0);
+            blocks.grids[static_cast<std::size_t>(owner)]->addToNode(node.node, node.values.data());
+        }
+    }
+    for (auto& grid : blocks.grids)
+    {
+        grid->commitStep();
+    }
+}
+
+// The owner's window total of every node, as one grid-sized array.
+std::vector<double> assembledTotals(const GridSpec& spec, const Blocks& blocks)
+{
+    std::vector<double> totals(spec.nodeCount() * nQuantities, 0.0);
+    for (std::size_t node = 0; node < spec.nodeCount(); ++node)
+    {
+        for (const auto& grid : blocks.grids)
+        {
+            if (grid->owns(node))
+            {
+                grid->windowTotal(node, totals.data() + node * nQuantities);
+            }
+        }
+    }
+    return totals;
+}
+
+void expectNear(const std::vector<double>& actual, const std::vector<double>& expected, double relative)
+{
+    ASSERT_EQ(actual.size(), expected.size());
+    double largest = 0.0;
+    for (const double v : expected)
+    {
+        largest = std::max(largest, std::abs(v));
+    }
+    for (std::size_t k = 0; k < expected.size(); ++k)
+    {
+        ASSERT_NEAR(actual[k], expected[k], relative * largest) << "value " << k;
+    }
+}
+
+} // namespace
+
+TEST(GridPartition, SubdomainBoundsOfASimpleDecompositionTileTheGrid)
+{
+    const GridSpec spec = grid3D();
+    // 2 x 2 x 1 subdomains, cut at x = 0.0095 (between nodes) and y = 0.0075 (on node 8 in y)
+    const std::vector<SubdomainBounds> bounds{{{0.0, 0.0, 0.0, 0.0095, 0.0075, 0.01}},
+                                              {{0.0095, 0.0, 0.0, 0.02, 0.0075, 0.01}},
+                                              {{0.0, 0.0075, 0.0, 0.0095, 0.015, 0.01}},
+                                              {{0.0095, 0.0075, 0.0, 0.02, 0.015, 0.01}}};
+    const GridPartition partition = GridPartition::fromSubdomainBounds(spec, bounds);
+    EXPECT_TRUE(partition.tiles(spec));
+    EXPECT_EQ(partition.owned(0).hi[0], 9);
+    EXPECT_EQ(partition.owned(1).lo[0], 10);
+    EXPECT_EQ(partition.owner(20, 15, 10), 3);
+    // The node on the shared plane y = 0.0075 belongs to the upper subdomain only
+    EXPECT_EQ(partition.owner(0, 7, 0), 0);
+    EXPECT_EQ(partition.owner(0, 8, 0), 2);
+    for (int p = 0; p < 4; ++p)
+    {
+        EXPECT_EQ(partition.owned(p).lo[2], 0);
+        EXPECT_EQ(partition.owned(p).hi[2], 10);
+    }
+}
+
+TEST(GridPartition, FlatDirectionBelongsToEveryBoxCoveringTheSlab)
+{
+    const GridSpec spec = grid2D();
+    const std::vector<SubdomainBounds> bounds{{{0.0, 0.0, 0.0, 0.03, 0.01, 0.001}},
+                                              {{0.0, 0.01, 0.0, 0.03, 0.02, 0.001}}};
+    const GridPartition partition = GridPartition::fromSubdomainBounds(spec, bounds);
+    EXPECT_TRUE(partition.tiles(spec));
+    EXPECT_EQ(partition.owned(0).hi[1], 9);
+    EXPECT_EQ(partition.owned(1).lo[1], 10);
+}
+
+TEST(GridPartition, IrregularBoundsDoNotTileAndBisectionDoes)
+{
+    const GridSpec spec = grid3D();
+    // Overlapping boxes (subdomains that are not boxes), and a grid larger than the mesh
+    const std::vector<SubdomainBounds> overlapping{{{0.0, 0.0, 0.0, 0.012, 0.015, 0.01}},
+                                                   {{0.008, 0.0, 0.0, 0.02, 0.015, 0.01}}};
+    EXPECT_FALSE(GridPartition::fromSubdomainBounds(spec, overlapping).tiles(spec));
+    const std::vector<SubdomainBounds> small{{{0.0, 0.0, 0.0, 0.01, 0.015, 0.01}},
+                                             {{0.01, 0.0, 0.0, 0.018, 0.015, 0.01}}};
+    EXPECT_FALSE(GridPartition::fromSubdomainBounds(spec, small).tiles(spec));
+    for (int parts = 1; parts <= 9; ++parts)
+    {
+        const GridPartition partition = GridPartition::bisection(spec, parts);
+        EXPECT_TRUE(partition.tiles(spec)) << parts << " parts";
+        std::size_t largest = 0, smallest = spec.nodeCount();
+        for (const IndexBox& box : partition.boxes())
+        {
+            largest = std::max(largest, box.nodeCount());
+            smallest = std::min(smallest, box.nodeCount());
+        }
+        EXPECT_LE(largest, 2 * smallest + spec.nodeCount() / 10) << parts << " parts";
+    }
+}
+
+TEST(GridBlocks, OneBlocksStorageAndOverflowEqualTheWholeGridBitForBit)
+{
+    // A block deposits a parcel alone: its stored nodes and its overflow list hold every
+    // node the whole grid's deposit touches, each the same product, to the bit.
+    for (const GridSpec& spec : {grid3D(), grid2D()})
+    {
+        const GridPartition partition = GridPartition::bisection(spec, 3);
+        for (const Parcel& parcel : randomParcels(spec, 40, 11))
+        {
+            DensityGrid whole(spec);
+            whole.deposit(parcel, 1e-3);
+            for (int p = 0; p < partition.processors(); ++p)
+            {
+                const IndexBox storage = partition.storageBox(spec, p, 1);
+                DensityGrid block(spec, KernelSettings{}, 1, GridBlock{partition.owned(p), storage});
+                block.deposit(parcel, 1e-3);
+                std::vector<double> assembled(spec.nodeCount() * nQuantities, 0.0);
+                forEachRow(
+                    storage, spec.nodes,
+                    [&](const IndexRow& row)
+                    {
+                        std::copy(
+                            block.stepValues().begin()
+                                + static_cast<std::ptrdiff_t>(row.offsetInBox * nQuantities),
+                            block.stepValues().begin()
+                                + static_cast<std::ptrdiff_t>((row.offsetInBox + row.length) * nQuantities),
+                            assembled.begin() + static_cast<std::ptrdiff_t>(row.first * nQuantities));
+                    });
+                for (const OverflowNode& node : block.overflow())
+                {
+                    std::copy(node.values.begin(), node.values.end(),
+                              assembled.begin() + static_cast<std::ptrdiff_t>(node.node * nQuantities));
+                }
+                ASSERT_TRUE(assembled == whole.stepValues()) << "block " << p;
+            }
+        }
+    }
+}
+
+TEST(GridBlocks, ExchangedBlocksEqualTheWholeGridToRoundOff)
+{
+    for (const GridSpec& spec : {grid3D(), grid2D()})
+    {
+        for (const int halo : {0, 1, 3, 40})
+        {
+            DensityGrid whole(spec, KernelSettings{}, 3);
+            Blocks blocks = makeBlocks(spec, GridPartition::bisection(spec, 4), halo, 3);
+            for (int step = 0; step < 4; ++step)
+            {
+                const std::vector<Parcel> parcels
+                    = randomParcels(spec, 150, 100u + static_cast<unsigned>(step));
+                for (std::size_t n = 0; n < parcels.size(); ++n)
+                {
+                    whole.deposit(parcels[n], 1e-3);
+                    blocks.grids[n % blocks.grids.size()]->deposit(parcels[n], 1e-3);
+                }
+                whole.commitStep();
+                exchangeAndCommit(spec, blocks);
+            }
+            SCOPED_TRACE("halo " + std::to_string(halo) + ", nodes " + std::to_string(spec.nodeCount()));
+            expectNear(assembledTotals(spec, blocks), whole.windowTotals(), 1e-14);
+            // A sample from the corners' owners equals the whole grid's
+            std::mt19937_64 rng(3);
+            std::uniform_real_distribution<double> unit(0.0, 1.0);
+            const std::vector<double> totals = assembledTotals(spec, blocks);
+            for (int s = 0; s < 50; ++s)
+            {
+                const Eigen::Vector3d point = spec.lower
+                    + (spec.upper - spec.lower)
+                          .cwiseProduct(Eigen::Vector3d(unit(rng), unit(rng), unit(rng)));
+                const CornerWeights corners = multilinearWeights(spec, point);
+                std::vector<double> cornerTotals;
+                for (int c = 0; c < corners.count; ++c)
+                {
+                    const double* t = totals.data() + corners.node[static_cast<std::size_t>(c)] * nQuantities;
+                    cornerTotals.insert(cornerTotals.end(), t, t + nQuantities);
+                }
+                const DropletFieldValue expected = whole.sample(point);
+                const DropletFieldValue actual = blocks.grids[0]->interpolated(corners, cornerTotals.data());
+                EXPECT_NEAR(actual.rho, expected.rho, 1e-13 * std::abs(expected.rho));
+                EXPECT_NEAR(actual.rMeanMass, expected.rMeanMass, 1e-13 * std::abs(expected.rMeanMass));
+                EXPECT_NEAR(actual.velocity.x(), expected.velocity.x(),
+                            1e-12 * (expected.velocity.norm() + 1e-30));
+            }
+        }
+    }
+}
+
+TEST(GridBlocks, WholeGridBlockIsTheWholeGridBitForBit)
+{
+    // The interpolation from the corners' totals is sample()'s own arithmetic
+    const GridSpec spec = grid3D();
+    DensityGrid whole(spec, KernelSettings{}, 2);
+    DensityGrid block(spec, KernelSettings{}, 2, GridBlock{spec.fullBox(), spec.fullBox()});
+    for (const Parcel& parcel : randomParcels(spec, 200, 7))
+    {
+        whole.deposit(parcel, 1e-3);
+        block.deposit(parcel, 1e-3);
+    }
+    EXPECT_TRUE(block.overflow().empty());
+    whole.commitStep();
+    block.commitStep();
+    EXPECT_TRUE(whole.windowTotals() == block.windowTotals());
+    const Eigen::Vector3d point(0.0071, 0.0033, 0.0052);
+    const CornerWeights corners = multilinearWeights(spec, point);
+    std::vector<double> cornerTotals(static_cast<std::size_t>(corners.count) * nQuantities);
+    for (int c = 0; c < corners.count; ++c)
+    {
+        block.windowTotal(corners.node[static_cast<std::size_t>(c)], cornerTotals.data() + c * nQuantities);
+    }
+    EXPECT_EQ(block.interpolated(corners, cornerTotals.data()).rho, whole.sample(point).rho);
+    EXPECT_EQ(block.interpolated(corners, cornerTotals.data()).rMeanNumber, whole.sample(point).rMeanNumber);
+}
+
+TEST(GridBlocks, OverflowMustBeTakenAndForeignNodesAreRefused)
+{
+    const GridSpec spec = grid3D();
+    const GridPartition partition = GridPartition::bisection(spec, 2);
+    DensityGrid block(spec, KernelSettings{}, 1,
+                      GridBlock{partition.owned(0), partition.storageBox(spec, 0, 0)});
+    for (const Parcel& parcel : randomParcels(spec, 50, 1))
+    {
+        block.deposit(parcel, 1e-3);
+    }
+    ASSERT_FALSE(block.overflow().empty());
+    EXPECT_THROW(block.commitStep(), std::logic_error);
+    block.takeOverflow();
+    EXPECT_NO_THROW(block.commitStep());
+    const IndexBox other = partition.owned(1);
+    const std::size_t foreign = spec.flatIndex(other.hi[0], other.hi[1], other.hi[2]);
+    EXPECT_FALSE(block.owns(foreign));
+    double sums[nQuantities];
+    EXPECT_THROW(block.windowTotal(foreign, sums), std::out_of_range);
+    EXPECT_THROW(block.addToNode(foreign, sums), std::invalid_argument);
+}
+
+TEST(GridBlocks, WindowStateRestoresOnTheSameBlockOnly)
+{
+    const GridSpec spec = grid3D();
+    const GridPartition two = GridPartition::bisection(spec, 2);
+    const GridPartition three = GridPartition::bisection(spec, 3);
+    Blocks blocks = makeBlocks(spec, two, 2, 2);
+    for (int p = 0; p < 2; ++p)
+    {
+        for (const Parcel& parcel : randomParcels(spec, 30, 5))
+        {
+            blocks.grids[static_cast<std::size_t>(p)]->deposit(parcel, 1e-3);
+        }
+    }
+    exchangeAndCommit(spec, blocks);
+    const WindowState state = blocks.grids[1]->saveWindow();
+    EXPECT_EQ(state.counters[0], 2); // a block's format
+    DensityGrid same(spec, KernelSettings{}, 2, GridBlock{two.owned(1), two.storageBox(spec, 1, 0)});
+    same.restoreWindow(state);
+    EXPECT_TRUE(same.windowTotals() == blocks.grids[1]->windowTotals());
+    DensityGrid other(spec, KernelSettings{}, 2, GridBlock{three.owned(1), three.storageBox(spec, 1, 2)});
+    EXPECT_THROW(other.restoreWindow(state), std::invalid_argument);
+    DensityGrid whole(spec, KernelSettings{}, 2);
+    EXPECT_THROW(whole.restoreWindow(state), std::invalid_argument);
+    EXPECT_EQ(whole.saveWindow().counters[0], 1); // the whole grid's format is unchanged
+}
