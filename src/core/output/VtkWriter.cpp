@@ -150,21 +150,78 @@ void writeImageData(const std::string& path, double time, const Eigen::Vector3d&
                     const Eigen::Vector3d& spacing, const std::array<int, 3>& nodes,
                     const std::vector<VtkField>& pointData)
 {
-    const std::size_t nPoints = static_cast<std::size_t>(nodes[0]) * nodes[1] * nodes[2];
+    writeImageDataPiece(path, time, origin, spacing, {{0, nodes[0] - 1, 0, nodes[1] - 1, 0, nodes[2] - 1}},
+                        pointData);
+}
+
+namespace
+{
+std::string extentText(const VtkExtent& e)
+{
+    std::ostringstream text;
+    text << e[0] << ' ' << e[1] << ' ' << e[2] << ' ' << e[3] << ' ' << e[4] << ' ' << e[5];
+    return text.str();
+}
+
+std::size_t extentPoints(const VtkExtent& e)
+{
+    std::size_t n = 1;
+    for (int d = 0; d < 3; ++d)
+    {
+        n *= static_cast<std::size_t>(
+            std::max(0, e[static_cast<std::size_t>(2 * d + 1)] - e[static_cast<std::size_t>(2 * d)] + 1));
+    }
+    return n;
+}
+} // namespace
+
+void writeImageDataPiece(const std::string& path, double time, const Eigen::Vector3d& origin,
+                         const Eigen::Vector3d& spacing, const VtkExtent& extent,
+                         const std::vector<VtkField>& pointData)
+{
     std::ofstream os = openOrThrow(path);
-    std::ostringstream extent;
-    extent << "0 " << nodes[0] - 1 << " 0 " << nodes[1] - 1 << " 0 " << nodes[2] - 1;
+    const std::string text = extentText(extent);
     os << "<?xml version=\"1.0\"?>\n"
        << "<VTKFile type=\"ImageData\" version=\"1.0\" byte_order=\"LittleEndian\">\n"
-       << "  <ImageData WholeExtent=\"" << extent.str() << "\" Origin=\"" << origin.x() << ' ' << origin.y()
-       << ' ' << origin.z() << "\" Spacing=\"" << spacing.x() << ' ' << spacing.y() << ' ' << spacing.z()
-       << "\">\n";
+       << "  <ImageData WholeExtent=\"" << text << "\" Origin=\"" << origin.x() << ' ' << origin.y() << ' '
+       << origin.z() << "\" Spacing=\"" << spacing.x() << ' ' << spacing.y() << ' ' << spacing.z() << "\">\n";
     writeTimeFieldData(os, time);
-    os << "    <Piece Extent=\"" << extent.str() << "\">\n";
-    writeFieldBlock(os, "PointData", pointData, nPoints);
+    os << "    <Piece Extent=\"" << text << "\">\n";
+    writeFieldBlock(os, "PointData", pointData, extentPoints(extent));
     os << "      <CellData>\n      </CellData>\n"
        << "    </Piece>\n"
        << "  </ImageData>\n"
+       << "</VTKFile>\n";
+    if (!os)
+    {
+        throw std::runtime_error("error writing '" + path + "'");
+    }
+}
+
+void writePImageData(const std::string& path, double time, const Eigen::Vector3d& origin,
+                     const Eigen::Vector3d& spacing, const VtkExtent& wholeExtent,
+                     const std::vector<VtkField>& pointFields, const std::vector<VtkPiece>& pieces)
+{
+    std::ofstream os = openOrThrow(path);
+    os << "<?xml version=\"1.0\"?>\n"
+       << "<VTKFile type=\"PImageData\" version=\"1.0\" byte_order=\"LittleEndian\">\n"
+       << "  <PImageData WholeExtent=\"" << extentText(wholeExtent) << "\" GhostLevel=\"0\" Origin=\""
+       << origin.x() << ' ' << origin.y() << ' ' << origin.z() << "\" Spacing=\"" << spacing.x() << ' '
+       << spacing.y() << ' ' << spacing.z() << "\">\n";
+    writeTimeFieldData(os, time);
+    os << "    <PPointData>\n";
+    for (const VtkField& field : pointFields)
+    {
+        os << "      <PDataArray type=\"Float64\" Name=\"" << field.name << "\" NumberOfComponents=\""
+           << field.components << "\"/>\n";
+    }
+    os << "    </PPointData>\n";
+    for (const VtkPiece& piece : pieces)
+    {
+        os << "    <Piece Extent=\"" << extentText(piece.extent) << "\" Source=\"" << piece.source
+           << "\"/>\n";
+    }
+    os << "  </PImageData>\n"
        << "</VTKFile>\n";
     if (!os)
     {

@@ -4,7 +4,10 @@
 //
 //   writePolylines - fibers: one polyline per fiber (.vtp, PolyData), with point and
 //                    cell (= segment) data;
-//   writeImageData - the regular density grid (.vti, ImageData), with point data.
+//   writeImageData - the regular density grid (.vti, ImageData), with point data, or
+//                    one piece of it (a processor's block);
+//   writePImageData - the index of the pieces of a grid written in parallel (.pvti,
+//                    ParaView's parallel ImageData): whole extent, fields, pieces.
 //   SeriesFile     - the JSON "<file>.series" index (file name and time per entry),
 //                    re-read on restart so that later times replace, never duplicate.
 //
@@ -40,6 +43,28 @@ void writePolylines(const std::string& path, double time, const std::vector<Eige
 void writeImageData(const std::string& path, double time, const Eigen::Vector3d& origin,
                     const Eigen::Vector3d& spacing, const std::array<int, 3>& nodes,
                     const std::vector<VtkField>& pointData);
+
+// Node index extent: x from, x to, y from, y to, z from, z to (inclusive).
+using VtkExtent = std::array<int, 6>;
+
+// One piece of a regular grid: the nodes of `extent` (of the grid whose node 0 sits at
+// origin), point data in VTK order over the piece.
+void writeImageDataPiece(const std::string& path, double time, const Eigen::Vector3d& origin,
+                         const Eigen::Vector3d& spacing, const VtkExtent& extent,
+                         const std::vector<VtkField>& pointData);
+
+// A piece listed in a .pvti: its extent and its file (relative to the .pvti).
+struct VtkPiece
+{
+    VtkExtent extent;
+    std::string source;
+};
+
+// The parallel index of a grid written as pieces: fields named as pointFields (their
+// values are not used), pieces that together cover wholeExtent.
+void writePImageData(const std::string& path, double time, const Eigen::Vector3d& origin,
+                     const Eigen::Vector3d& spacing, const VtkExtent& wholeExtent,
+                     const std::vector<VtkField>& pointFields, const std::vector<VtkPiece>& pieces);
 
 // The ".series" index of one output stream.
 class SeriesFile
