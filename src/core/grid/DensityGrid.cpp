@@ -897,6 +897,13 @@ DropletFieldValue DensityGrid::nodeValue(std::size_t flatIndex) const
 {
     std::array<double, nQuantities> sums{};
     windowTotal(flatIndex, sums.data());
+    return nodeValueFromTotals(flatIndex, sums.data());
+}
+
+DropletFieldValue DensityGrid::nodeValueFromTotals(std::size_t flatIndex, const double* totals) const
+{
+    std::array<double, nQuantities> sums{};
+    std::copy(totals, totals + nQuantities, sums.begin());
     // Sums per whole cell (a power of two: exact; the means are unchanged).
     const double scale = cellsPerNodeVolume(flatIndex);
     for (double& sum : sums)

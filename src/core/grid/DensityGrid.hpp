@@ -197,6 +197,8 @@ public:
     // Fields at an owned node (grid indices / global flat index).
     DropletFieldValue nodeValue(int i, int j, int k) const;
     DropletFieldValue nodeValue(std::size_t flatIndex) const;
+    // nodeValue() from the node's window sums S_q (nQuantities values, wherever read).
+    DropletFieldValue nodeValueFromTotals(std::size_t flatIndex, const double* sums) const;
     // The field at a point whose cell corners are owned here (all of them for the whole
     // grid); throws std::out_of_range otherwise.
     DropletFieldValue sample(const Eigen::Vector3d& point) const;

@@ -56,11 +56,40 @@ void bisect(const IndexBox& box, int first, int parts, std::vector<IndexBox>& bo
     bisect(upper.empty() ? IndexBox{} : upper, first + lowerParts, parts - lowerParts, boxes);
 }
 
+// A simple or hierarchical decomposition splits the cells by count, so the layer of
+// cells at a cut is shared out between the subdomains on either side, and their bounding
+// boxes overlap by that layer. Each subdomain's upper bound is moved down to the nearest
+// lower bound of another subdomain within its span: the cut.
+std::vector<SubdomainBounds> snappedToCuts(std::vector<SubdomainBounds> bounds)
+{
+    const std::vector<SubdomainBounds> original = bounds;
+    for (std::size_t p = 0; p < bounds.size(); ++p)
+    {
+        for (std::size_t d = 0; d < 3; ++d)
+        {
+            const double min = original[p][d];
+            double& max = bounds[p][3 + d];
+            double cut = max;
+            for (const SubdomainBounds& other : original)
+            {
+                const double otherMin = other[d];
+                if (otherMin > min && otherMin < max && (cut == max || otherMin > cut))
+                {
+                    cut = otherMin;
+                }
+            }
+            max = cut;
+        }
+    }
+    return bounds;
+}
+
 } // namespace
 
 GridPartition GridPartition::fromSubdomainBounds(const GridSpec& spec,
-                                                 const std::vector<SubdomainBounds>& bounds)
+                                                 const std::vector<SubdomainBounds>& given)
 {
+    const std::vector<SubdomainBounds> bounds = snappedToCuts(given);
     std::vector<IndexBox> boxes(bounds.size());
     for (std::size_t p = 0; p < bounds.size(); ++p)
     {

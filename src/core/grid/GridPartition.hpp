@@ -7,7 +7,11 @@
 //     [ceil((min - lower) / h), ceil((max - lower) / h) - 1],
 // half-open in space, so a node on a plane shared by two subdomains belongs to exactly
 // one of them (both compute the same ceil from the same coordinate); a box reaching the
-// grid's lower face starts at 0, one reaching its upper face ends at the last node. Flat
+// grid's lower face starts at 0, one reaching its upper face ends at the last node.
+// Decompositions by cell count (simple, hierarchical) share the layer of cells at a cut
+// between the subdomains on either side, so their bounding boxes overlap by a cell: each
+// subdomain's upper bound is first moved down to the nearest lower bound of another
+// subdomain inside its span (the cut). Flat
 // directions: the single node layer belongs to every box that covers the slab. Simple
 // and hierarchical decompositions (and manual ones that happen to be boxes) tile the grid
 // that way and each processor owns the nodes around its own cells, where its parcels and

@@ -170,6 +170,19 @@ TEST(GridPartition, SubdomainBoundsOfASimpleDecompositionTileTheGrid)
     }
 }
 
+TEST(GridPartition, SubdomainsSharingTheCutsCellLayerAreCutThere)
+{
+    // A decomposition by cell count: the cells at y = 0.0065..0.0085 (around node 7) are
+    // shared out; unsnapped both boxes would hold nodes 7 and 8
+    const GridSpec spec = grid3D();
+    const std::vector<SubdomainBounds> bounds{{{0.0, 0.0, 0.0, 0.02, 0.0085, 0.01}},
+                                              {{0.0, 0.0065, 0.0, 0.02, 0.015, 0.01}}};
+    const GridPartition partition = GridPartition::fromSubdomainBounds(spec, bounds);
+    EXPECT_TRUE(partition.tiles(spec));
+    EXPECT_EQ(partition.owned(0).hi[1], 6);
+    EXPECT_EQ(partition.owned(1).lo[1], 7);
+}
+
 TEST(GridPartition, FlatDirectionBelongsToEveryBoxCoveringTheSlab)
 {
     const GridSpec spec = grid2D();
@@ -184,10 +197,10 @@ TEST(GridPartition, FlatDirectionBelongsToEveryBoxCoveringTheSlab)
 TEST(GridPartition, IrregularBoundsDoNotTileAndBisectionDoes)
 {
     const GridSpec spec = grid3D();
-    // Overlapping boxes (subdomains that are not boxes), and a grid larger than the mesh
-    const std::vector<SubdomainBounds> overlapping{{{0.0, 0.0, 0.0, 0.012, 0.015, 0.01}},
-                                                   {{0.008, 0.0, 0.0, 0.02, 0.015, 0.01}}};
-    EXPECT_FALSE(GridPartition::fromSubdomainBounds(spec, overlapping).tiles(spec));
+    // A subdomain inside another (not boxes), and a grid larger than the mesh
+    const std::vector<SubdomainBounds> nested{{{0.0, 0.0, 0.0, 0.02, 0.015, 0.01}},
+                                              {{0.008, 0.004, 0.0, 0.012, 0.01, 0.01}}};
+    EXPECT_FALSE(GridPartition::fromSubdomainBounds(spec, nested).tiles(spec));
     const std::vector<SubdomainBounds> small{{{0.0, 0.0, 0.0, 0.01, 0.015, 0.01}},
                                              {{0.01, 0.0, 0.0, 0.018, 0.015, 0.01}}};
     EXPECT_FALSE(GridPartition::fromSubdomainBounds(spec, small).tiles(spec));
