@@ -2,7 +2,7 @@
 # A damaged restart state stops the restart with a FatalIOError that names
 # the file and the entry (no SIGFPE, no std::terminate, no run on with it).
 # Each damage is made in a copy of a run to 0.1, then restarted; the last one
-# on 2 ranks, with only processor1's copy damaged.
+# on 2 ranks (a 2-rank run to 0.1), with only processor1's state damaged.
 # Usage: checkDamagedState.sh CASE_DIR WORK_DIR (fiberStream: writes at 0.1)
 set -uo pipefail
 # shellcheck disable=SC1091
@@ -87,10 +87,16 @@ expectStop windowGridSize "$state" "saved for a grid of 100x26x1 nodes, this gri
 damage="edit $state 'gridWindowValueCount +[0-9]+' 'gridWindowValueCount 12'"
 expectStop windowValueCount "$state.gridWindow" "entry 'gridWindowValueCount' says 12"
 
-# 2 ranks: only processor1's window damaged; every rank stops, naming it
+# 2 ranks: only processor1's window damaged; every rank stops, naming it. The state
+# is a 2-rank run's (each processor keeps the window of its own block of the grid)
 rm -rf "$work/good/processor"*
-(cd "$work/good" && decomposePar -copyUniform > log.decomposePar 2>&1) \
-    || { echo "FAILED: decomposePar"; exit 1; }
+(
+    cd "$work/good" || exit 1
+    decomposePar -time 0 > log.decomposePar 2>&1 || exit 1
+    sed -i "s/^endTime .*/endTime         0.1;/" system/controlDict
+    mpirun -np 2 "$app" -parallel > log.parallel 2>&1 || exit 1
+    sed -i "s/^endTime .*/endTime         0.11;/" system/controlDict
+) || { echo "FAILED: the 2-rank run to 0.1"; exit 1; }
 damage="setWindowValue processor1/$state.gridWindow 700 nan"
 expectStop windowNaN.parallel "processor1/$state.gridWindow" "value 700 \(quantity 0 of 7\) is nan" parallel
 check "grep -q '^processor 1: Restart state' '$work/windowNaN.parallel/log.restart'" \

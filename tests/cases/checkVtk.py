@@ -7,7 +7,11 @@ sigma, capturedMass, cell field tension; sigma integrated along the fibers
 (sigma_i times the length point i stands for: half of each neighbouring segment)
 equals the fiber mass the per-step table reports at that time. For the last
 grid_<time>.vti: point count = product of the extent, fields rho, rMeanNumber,
-rMeanMass, U. The .series files list every written file.
+rMeanMass, U. A parallel run's grid_<time>.pvti (ParaView's parallel image data):
+its pieces exist, each with the fields over its extent, lie within the whole
+extent, and their cells tile it (every cell in exactly one piece; neighbouring
+pieces share their boundary nodes, with the same values). The .series files
+list every written file.
 """
 import json
 import math
@@ -82,14 +86,76 @@ check(abs(integral - row["fiberMass"]) <= 1e-6 * row["fiberMass"],
 
 # Grid
 series = json.load(open(os.path.join(out, "grid.vti.series")))
-root = ET.parse(os.path.join(out, series["files"][-1]["name"])).getroot()
-image = root.find("ImageData")
-ext = [int(v) for v in image.get("WholeExtent").split()]
-n_nodes = (ext[1] - ext[0] + 1) * (ext[3] - ext[2] + 1) * (ext[5] - ext[4] + 1)
-gdata = arrays(image.find("Piece"), "PointData")
-for field, comps in (("rho", 1), ("rMeanNumber", 1), ("rMeanMass", 1), ("U", 3)):
-    check(field in gdata and len(gdata[field][1]) == comps * n_nodes,
-          "grid field %s with %d values per node (%d nodes)" % (field, comps, n_nodes))
-check(max(gdata["rho"][1]) > 0, "grid holds droplets")
+last_grid = os.path.join(out, series["files"][-1]["name"])
+FIELDS = (("rho", 1), ("rMeanNumber", 1), ("rMeanMass", 1), ("U", 3))
+
+
+def extent_of(element, key):
+    return [int(v) for v in element.get(key).split()]
+
+
+def nodes_of(ext):
+    return (ext[1] - ext[0] + 1) * (ext[3] - ext[2] + 1) * (ext[5] - ext[4] + 1)
+
+
+def check_pvti(path):
+    """The pieces of a .pvti: fields, extents inside the whole, cells tiled."""
+    index = ET.parse(path).getroot().find("PImageData")
+    whole = extent_of(index, "WholeExtent")
+    declared = [(a.get("Name"), int(a.get("NumberOfComponents"))) for a in index.find("PPointData")]
+    check(declared == list(FIELDS), "pvti declares the fields %s" % [n for n, _ in declared])
+    cells = {}
+    values = {}
+    rho_max = 0.0
+    pieces = index.findall("Piece")
+    check(len(pieces) > 1, "pvti lists %d pieces" % len(pieces))
+    for piece in pieces:
+        ext = extent_of(piece, "Extent")
+        source = os.path.join(os.path.dirname(path), piece.get("Source"))
+        check(os.path.isfile(source), "piece %s exists" % piece.get("Source"))
+        inside = all(whole[2 * d] <= ext[2 * d] <= ext[2 * d + 1] <= whole[2 * d + 1] for d in range(3))
+        check(inside, "piece extent %s within the whole extent %s" % (ext, whole))
+        image = ET.parse(source).getroot().find("ImageData")
+        check(extent_of(image.find("Piece"), "Extent") == ext, "piece file's extent is the listed one")
+        data = arrays(image.find("Piece"), "PointData")
+        n = nodes_of(ext)
+        for field, comps in FIELDS:
+            check(field in data and len(data[field][1]) == comps * n,
+                  "piece field %s with %d values per node (%d nodes)" % (field, comps, n))
+        rho = data["rho"][1]
+        rho_max = max([rho_max] + rho)
+        # Cells of the piece (a flat direction: its single layer is the cell)
+        ranges = [range(ext[2 * d], max(ext[2 * d + 1], ext[2 * d] + 1)) for d in range(3)]
+        for k in ranges[2]:
+            for j in ranges[1]:
+                for i in ranges[0]:
+                    cells[(i, j, k)] = cells.get((i, j, k), 0) + 1
+        nx, ny = ext[1] - ext[0] + 1, ext[3] - ext[2] + 1
+        for k in range(ext[4], ext[5] + 1):
+            for j in range(ext[2], ext[3] + 1):
+                for i in range(ext[0], ext[1] + 1):
+                    v = rho[(i - ext[0]) + nx * ((j - ext[2]) + ny * (k - ext[4]))]
+                    values.setdefault((i, j, k), set()).add(v)
+    whole_ranges = [range(whole[2 * d], max(whole[2 * d + 1], whole[2 * d] + 1)) for d in range(3)]
+    expected = {(i, j, k) for k in whole_ranges[2] for j in whole_ranges[1] for i in whole_ranges[0]}
+    check(set(cells) == expected and all(c == 1 for c in cells.values()),
+          "the pieces' %d cells tile the whole extent's %d, each once" % (len(cells), len(expected)))
+    check(len(values) == nodes_of(whole) and all(len(v) == 1 for v in values.values()),
+          "every node in some piece, shared nodes with one rho")
+    check(rho_max > 0, "grid holds droplets")
+
+
+if last_grid.endswith(".pvti"):
+    check_pvti(last_grid)
+else:
+    root = ET.parse(last_grid).getroot()
+    image = root.find("ImageData")
+    ext = [int(v) for v in image.get("WholeExtent").split()]
+    n_nodes = (ext[1] - ext[0] + 1) * (ext[3] - ext[2] + 1) * (ext[5] - ext[4] + 1)
+    gdata = arrays(image.find("Piece"), "PointData")
+    for field, comps in FIELDS:
+        check(field in gdata and len(gdata[field][1]) == comps * n_nodes,
+              "grid field %s with %d values per node (%d nodes)" % (field, comps, n_nodes))
+    check(max(gdata["rho"][1]) > 0, "grid holds droplets")
 print("%d passed, %d failed" % (passed, failed))
 sys.exit(1 if failed else 0)

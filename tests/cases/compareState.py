@@ -4,7 +4,7 @@ totals, averaging window) entry by entry.
 Usage: compareState.py A B REL_TOL [--only KEY,KEY]
 
 Both files must have the same structure (same fibers, same entries, same list
-lengths). The numbers of an entry agree when they differ by at most REL_TOL
+lengths; with --only, among the entries compared). The numbers of an entry agree when they differ by at most REL_TOL
 times the largest magnitude in that entry (so that a velocity component that
 is round-off around zero is judged against the entry's scale).
 Prints `N passed, N failed`.
@@ -50,6 +50,10 @@ def entries(path):
 
 a, b, tol = entries(sys.argv[1]), entries(sys.argv[2]), float(sys.argv[3])
 only = sys.argv[5].split(",") if len(sys.argv) > 5 and sys.argv[4] == "--only" else None
+if only:
+    # The entries compared only (a parallel run's state also names its grid block)
+    a = [e for e in a if any(e[0].startswith(o) or ("." + o) in e[0] for o in only)]
+    b = [e for e in b if any(e[0].startswith(o) or ("." + o) in e[0] for o in only)]
 passed = failed = 0
 worst = 0.0
 if [k for k, _, _ in a] != [k for k, _, _ in b]:

@@ -51,14 +51,24 @@ points = [(p[3 * i], p[3 * i + 1]) for i in range(len(p) // 3)]
 point_data = data_arrays(piece.find("PointData"))
 sigma, fiber_id = point_data["sigma"], point_data["fiberId"]
 
-# grid at the end
-image = ET.parse(last_file("grid.vti.series")).getroot().find("ImageData")
+# grid at the end: one .vti (serial), or a .pvti listing a piece per processor
+grid_file = last_file("grid.vti.series")
+root = ET.parse(grid_file).getroot()
+image = root.find("ImageData") if root.find("ImageData") is not None else root.find("PImageData")
 ext = [int(v) for v in image.get("WholeExtent").split()]
 origin = [float(v) for v in image.get("Origin").split()]
 spacing = [float(v) for v in image.get("Spacing").split()]
 nx, ny = ext[1] + 1, ext[3] + 1
-rho = data_arrays(image.find("Piece/PointData"))["rho"]
-rho_map = [[rho[i + nx * j] for i in range(nx)] for j in range(ny)]
+rho_map = [[0.0] * nx for _ in range(ny)]
+pieces = [(grid_file, image.find("Piece"))] if image.tag == "ImageData" else [
+    (os.path.join(os.path.dirname(grid_file), p.get("Source")), None) for p in image.findall("Piece")]
+for path, piece in pieces:
+    piece = piece if piece is not None else ET.parse(path).getroot().find("ImageData/Piece")
+    e = [int(v) for v in piece.get("Extent").split()]
+    rho = data_arrays(piece.find("PointData"))["rho"]
+    for j in range(e[2], e[3] + 1):
+        for i in range(e[0], e[1] + 1):
+            rho_map[j][i] = rho[(i - e[0]) + (e[1] - e[0] + 1) * (j - e[2])]
 
 fig, axes = plt.subplots(1, 3, figsize=(16, 6), gridspec_kw={"width_ratios": [1.2, 1.0, 1.2]})
 

@@ -3,9 +3,10 @@
 -------------------------------------------------------------------------------
 Description
     Settings and the coupling step. Read execute() from top to bottom to
-    follow one parcel's mass: gathered, deposited on the grid, summed across
-    processors, averaged, turned into collision mass on fiber segments, and
-    captured by the fibers.
+    follow one parcel's mass: gathered, deposited on the grid (in parallel:
+    on this processor's block, the halo's share sent to its owners),
+    averaged, turned into collision mass on fiber segments, and captured by
+    the fibers.
 
 \*---------------------------------------------------------------------------*/
 
@@ -125,6 +126,21 @@ void Foam::functionObjects::dropletFiberCollision::buildStatefulParts
         injectors_.emplace_back(spec);
     }
     checkMemory(dict);
+    const dictionary& gridDict = dict.subOrEmptyDict("grid");
+    blocks_.reset
+    (
+        dropletFiber::checkedCoreCall
+        (
+            gridDict,
+            [this]()
+            {
+                return new dropletFiber::gridBlocks
+                (
+                    mesh_, gridSettings_.spec, gridSettings_.halo
+                );
+            }
+        )
+    );
     grid_.reset
     (
         dropletFiber::checkedCoreCall
@@ -136,7 +152,8 @@ void Foam::functionObjects::dropletFiberCollision::buildStatefulParts
                 (
                     gridSettings_.spec,
                     gridSettings_.kernel,
-                    int(gridSettings_.averagingSteps)
+                    int(gridSettings_.averagingSteps),
+                    blocks_->block()
                 );
             }
         )
@@ -232,6 +249,7 @@ void Foam::functionObjects::dropletFiberCollision::reportSettings() const
             << " the results agree to ~1e-14, not to the bit. Set"
             << " 'vectorised false;' for bitwise reproducible runs." << endl;
     }
+    blocks_->report(Info);
     air_->report(Info);
     scalar fiberPoints = 0;
     for (const auto& fiber : fibers_)
@@ -419,7 +437,7 @@ void Foam::functionObjects::dropletFiberCollision::gatherParcels()
 Foam::functionObjects::dropletFiberCollision::depositParcels(const scalar dt)
 {
     depositLocalParcels(dt);
-    sumStepAcrossProcessors();
+    blocks_->sumStep(*grid_, parallelStatistics_);
     const ::dropletFiber::StepStatistics local = grid_->stepStatistics();
     grid_->commitStep();
     const ::dropletFiber::StepStatistics stats = summedOverProcessors(local);
@@ -455,58 +473,6 @@ void Foam::functionObjects::dropletFiberCollision::depositLocalParcels
                 << e.what() << exit(FatalError);
         }
     }
-}
-
-
-::dropletFiber::IndexBox
-Foam::functionObjects::dropletFiberCollision::stepBoxOfAllProcessors() const
-{
-    // One reduction: max of (-lo, hi) (an empty box contributes nothing)
-    ::dropletFiber::IndexBox box = grid_->stepBox();
-    List<label> bounds(6, labelMin);
-    if (!box.empty())
-    {
-        for (label d = 0; d < 3; ++d)
-        {
-            bounds[d] = -box.lo[d];
-            bounds[3 + d] = box.hi[d];
-        }
-    }
-    Pstream::listCombineGather(bounds, maxEqOp<label>());
-    Pstream::listCombineScatter(bounds);
-    parallelStatistics_.countCombineGatherScatter(bounds.byteSize());
-    if (bounds[0] == labelMin)
-    {
-        return ::dropletFiber::IndexBox{};
-    }
-    for (label d = 0; d < 3; ++d)
-    {
-        box.lo[d] = -bounds[d];
-        box.hi[d] = bounds[3 + d];
-    }
-    return box;
-}
-
-
-void Foam::functionObjects::dropletFiberCollision::sumStepAcrossProcessors()
-{
-    // Over the union of the boxes of nodes the processors touched only
-    if (!Pstream::parRun())
-    {
-        return;
-    }
-    const ::dropletFiber::IndexBox box = stepBoxOfAllProcessors();
-    if (box.empty())
-    {
-        return;
-    }
-    // Packed straight into the message and read back from it
-    List<scalar> values(label(box.nodeCount()*::dropletFiber::nQuantities));
-    grid_->packStep(box, values.data());
-    Pstream::listCombineGather(values, plusEqOp<scalar>());
-    Pstream::listCombineScatter(values);
-    parallelStatistics_.countCombineGatherScatter(values.byteSize());
-    grid_->unpackStep(box, values.cdata(), std::size_t(values.size()));
 }
 
 
@@ -578,30 +544,76 @@ void Foam::functionObjects::dropletFiberCollision::injectFibers(const scalar t)
 }
 
 
-::dropletFiber::CaptureSources
-Foam::functionObjects::dropletFiberCollision::collide(const scalar dt)
+std::vector<Eigen::Vector3d>
+Foam::functionObjects::dropletFiberCollision::collisionSamplePoints() const
 {
-    ::dropletFiber::CaptureSources capture(fibers_.size());
-    label samplesOutside = 0;
+    const auto& spec = grid_->spec();
+    std::vector<Eigen::Vector3d> points;
     for (std::size_t f = 0; f < fibers_.size(); ++f)
     {
-        const ::dropletFiber::Fiber& fiber = fibers_[f];
-        const Eigen::Matrix3Xd& x = fiber.positions();
-        const Eigen::Matrix3Xd& v = fiber.velocities();
-        capture[f].resize(fiber.segmentCount());
-        // The fibers of other processors: their masses come with their
-        // states after the step (fiberDistribution)
         if (!dropletFiber::fiberDistribution::advancesHere(f))
         {
             continue;
         }
+        const Eigen::Matrix3Xd& x = fibers_[f].positions();
+        for (Eigen::Index j = 0; j < fibers_[f].segmentCount(); ++j)
+        {
+            const int samples =
+                ::dropletFiber::collisionSamples
+                (
+                    spec, x.col(j), x.col(j + 1), collision_
+                );
+            for (int s = 0; s < samples; ++s)
+            {
+                points.push_back
+                (
+                    ::dropletFiber::samplePoint(x.col(j), x.col(j + 1), samples, s)
+                );
+            }
+        }
+    }
+    return points;
+}
+
+
+::dropletFiber::CaptureSources
+Foam::functionObjects::dropletFiberCollision::collide(const scalar dt)
+{
+    // The sample points of the segments of the fibers this processor
+    // advances (the others' masses come with their states after the step,
+    // fiberDistribution), then their field values from the grid's blocks
+    // (one exchange), then the masses: the arithmetic of collisionMass
+    const auto& spec = grid_->spec();
+    const std::vector<Eigen::Vector3d> points = collisionSamplePoints();
+    const std::vector<::dropletFiber::DropletFieldValue> fields =
+        blocks_->sample(*grid_, points, parallelStatistics_);
+
+    ::dropletFiber::CaptureSources capture(fibers_.size());
+    label samplesOutside = 0;
+    std::size_t next = 0;
+    for (std::size_t f = 0; f < fibers_.size(); ++f)
+    {
+        const ::dropletFiber::Fiber& fiber = fibers_[f];
+        capture[f].resize(fiber.segmentCount());
+        if (!dropletFiber::fiberDistribution::advancesHere(f))
+        {
+            continue;
+        }
+        const Eigen::Matrix3Xd& x = fiber.positions();
+        const Eigen::Matrix3Xd& v = fiber.velocities();
         for (Eigen::Index j = 0; j < fiber.segmentCount(); ++j)
         {
             const Eigen::Vector3d segmentVelocity = 0.5*(v.col(j) + v.col(j + 1));
-            const ::dropletFiber::SegmentCollision c =
-                ::dropletFiber::collisionMass
+            const int samples =
+                ::dropletFiber::collisionSamples
                 (
-                    *grid_,
+                    spec, x.col(j), x.col(j + 1), collision_
+                );
+            const ::dropletFiber::SegmentCollision c =
+                ::dropletFiber::collisionMassFromSamples
+                (
+                    fields.data() + next,
+                    samples,
                     x.col(j),
                     x.col(j + 1),
                     fiber.material().radius,
@@ -609,6 +621,7 @@ Foam::functionObjects::dropletFiberCollision::collide(const scalar dt)
                     dt,
                     collision_
                 );
+            next += std::size_t(samples);
             capture[f][j].mass = c.mass;
             capture[f][j].momentum = c.momentum;
             samplesOutside += c.samplesOutside;

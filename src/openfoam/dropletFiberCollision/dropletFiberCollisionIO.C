@@ -74,8 +74,12 @@ void Foam::functionObjects::dropletFiberCollision::reportStep
 
 void Foam::functionObjects::dropletFiberCollision::writeParallelStatistics()
 {
-    // Today every processor stores the whole grid and every fiber
-    parallelStatistics_.holding(grid_->spec().nodeCount(), fibers_.size());
+    // The grid nodes this processor stores: its block and the halo (every
+    // fiber, until fibers are owned per processor)
+    parallelStatistics_.holding
+    (
+        grid_->storageBox().nodeCount(), fibers_.size()
+    );
     const dropletFiber::parallelStatistics::figures maxima =
         parallelStatistics_.maxOverProcessors();
     if (!writeToFile())
@@ -125,21 +129,24 @@ void Foam::functionObjects::dropletFiberCollision::reportConservation() const
 
 void Foam::functionObjects::dropletFiberCollision::writeVtkFiles()
 {
-    if (!Pstream::master() || (!writeVtk_ && !writeGridVtk_))
+    if (!writeVtk_ && !writeGridVtk_)
     {
         return;
     }
     const fileName dir =
         baseFileDir()/name()/time_.timeName(time_.startTime().value());
-    mkDir(dir);
     const scalar t = time_.value();
-
-    if (writeVtk_)
+    if (Pstream::master())
+    {
+        mkDir(dir);
+    }
+    if (writeVtk_ && Pstream::master())
     {
         writeFibersVtk(dir, t);
     }
     if (writeGridVtk_)
     {
+        // In parallel every processor writes its piece
         writeGridVtk(dir, t);
     }
 }
@@ -198,22 +205,42 @@ void Foam::functionObjects::dropletFiberCollision::writeFibersVtk
 }
 
 
-void Foam::functionObjects::dropletFiberCollision::writeGridVtk
+std::vector<::dropletFiber::VtkField>
+Foam::functionObjects::dropletFiberCollision::gridFields
 (
-    const fileName& dir,
-    const scalar t
+    const ::dropletFiber::IndexBox& box
 )
 {
     const ::dropletFiber::DensityGrid& grid = *grid_;
     const auto& g = gridSettings_.spec;
-    const std::size_t n = g.nodeCount();
+    std::vector<std::size_t> nodes;
+    nodes.reserve(box.nodeCount());
+    ::dropletFiber::forEachRow
+    (
+        box, g.nodes,
+        [&nodes](const ::dropletFiber::IndexRow& row)
+        {
+            for (std::size_t i = 0; i < row.length; ++i)
+            {
+                nodes.push_back(row.first + i);
+            }
+        }
+    );
+    // Serial: every node is owned here, nothing is exchanged
+    std::vector<double> totals;
+    blocks_->windowTotals(grid, nodes, totals, parallelStatistics_);
+    const std::size_t n = nodes.size();
     ::dropletFiber::VtkField rho{"rho", 1, std::vector<double>(n)};
     ::dropletFiber::VtkField rNumber{"rMeanNumber", 1, std::vector<double>(n)};
     ::dropletFiber::VtkField rMass{"rMeanMass", 1, std::vector<double>(n)};
     ::dropletFiber::VtkField U{"U", 3, std::vector<double>(3*n)};
     for (std::size_t k = 0; k < n; ++k)
     {
-        const ::dropletFiber::DropletFieldValue v = grid.nodeValue(k);
+        const ::dropletFiber::DropletFieldValue v =
+            grid.nodeValueFromTotals
+            (
+                nodes[k], totals.data() + k*::dropletFiber::nQuantities
+            );
         rho.values[k] = v.rho;
         rNumber.values[k] = v.rMeanNumber;
         rMass.values[k] = v.rMeanMass;
@@ -222,6 +249,17 @@ void Foam::functionObjects::dropletFiberCollision::writeGridVtk
             U.values[3*k + c] = v.velocity(c);
         }
     }
+    return {rho, rNumber, rMass, U};
+}
+
+
+void Foam::functionObjects::dropletFiberCollision::writeGridVtk
+(
+    const fileName& dir,
+    const scalar t
+)
+{
+    const auto& g = gridSettings_.spec;
     Eigen::Vector3d origin, spacing;
     for (int d = 0; d < 3; ++d)
     {
@@ -229,11 +267,59 @@ void Foam::functionObjects::dropletFiberCollision::writeGridVtk
         spacing(d) = g.spacing(d);  // a flat direction: its thickness
     }
     const word file = "grid_" + time_.timeName() + ".vti";
-    ::dropletFiber::writeImageData
+    if (!Pstream::parRun())
+    {
+        ::dropletFiber::writeImageData
+        (
+            dir/file, t, origin, spacing, g.nodes, gridFields(g.fullBox())
+        );
+        gridSeries_->add(file, t);
+        return;
+    }
+    // A piece per processor: its owned nodes and the layer above them (owned
+    // by the next processor), so that the pieces' cells tile the grid
+    const auto pieceBox = [&g](const ::dropletFiber::IndexBox& owned)
+    {
+        ::dropletFiber::IndexBox box = owned;
+        for (int d = 0; d < 3; ++d)
+        {
+            box.hi[d] = std::min(owned.hi[d] + 1, g.nodes[d] - 1);
+        }
+        return box;
+    };
+    const auto extent = [](const ::dropletFiber::IndexBox& box)
+    {
+        return ::dropletFiber::VtkExtent
+        {{box.lo[0], box.hi[0], box.lo[1], box.hi[1], box.lo[2], box.hi[2]}};
+    };
+    const auto pieceFile = [this](const label proci)
+    {
+        return word("grid_" + time_.timeName() + "_" + Foam::name(proci) + ".vti");
+    };
+    const ::dropletFiber::IndexBox mine = pieceBox(grid_->ownedBox());
+    const std::vector<::dropletFiber::VtkField> fields = gridFields(mine);
+    ::dropletFiber::writeImageDataPiece
     (
-        dir/file, t, origin, spacing, g.nodes, {rho, rNumber, rMass, U}
+        dir/pieceFile(Pstream::myProcNo()), t, origin, spacing, extent(mine), fields
     );
-    gridSeries_->add(file, t);
+    if (Pstream::master())
+    {
+        std::vector<::dropletFiber::VtkPiece> pieces;
+        for (label proci = 0; proci < Pstream::nProcs(); ++proci)
+        {
+            pieces.push_back
+            (
+                {extent(pieceBox(blocks_->partition().owned(proci))), pieceFile(proci)}
+            );
+        }
+        const word index = "grid_" + time_.timeName() + ".pvti";
+        ::dropletFiber::writePImageData
+        (
+            dir/index, t, origin, spacing, extent(g.fullBox()), fields, pieces
+        );
+        gridSeries_->add(index, t);
+    }
 }
+
 
 // ************************************************************************* //

@@ -221,6 +221,17 @@ Foam::dictionary Foam::functionObjects::dropletFiberCollision::stateDict
     // go to a binary OpenFOAM list beside it, exact and ten times faster to
     // write than 17-digit text
     state.add("gridWindowValueCount", label(window.values.size()));
+    if (Pstream::parRun())
+    {
+        // The window is this processor's block of the grid
+        const ::dropletFiber::IndexBox& b = grid_->ownedBox();
+        state.add("gridBlockProcessors", Pstream::nProcs());
+        state.add
+        (
+            "gridBlock",
+            labelList({b.lo[0], b.lo[1], b.lo[2], b.hi[0], b.hi[1], b.hi[2]})
+        );
+    }
 
     IOstream::defaultPrecision(oldPrecision);
     return state;
@@ -229,10 +240,9 @@ Foam::dictionary Foam::functionObjects::dropletFiberCollision::stateDict
 
 void Foam::functionObjects::dropletFiberCollision::writeState() const
 {
-    // Every processor holds the same fibers and grid: each writes its own
-    // copy (processorN/<time>/uniform/...), so that every processor reads its
-    // own on restart, also after a change of the number of processors
-    // through reconstructPar/decomposePar (which copy uniform/).
+    // Every processor writes its own state (processorN/<time>/uniform/...):
+    // the fibers, which every processor holds, and the averaging window of
+    // its block of the grid (checkWindowBlock on restart).
     // The window first, the dictionary last: a dictionary that exists
     // belongs to a complete state.
     const ::dropletFiber::WindowState window = grid_->saveWindow();
@@ -444,12 +454,51 @@ void Foam::functionObjects::dropletFiberCollision::restoreTotals
 }
 
 
+void Foam::functionObjects::dropletFiberCollision::checkWindowBlock
+(
+    const dictionary& state,
+    const fileName& path
+) const
+{
+    // A state without the entries was written by a serial run: the whole grid
+    const auto& g = gridSettings_.spec;
+    const label savedProcessors =
+        state.lookupOrDefault<label>("gridBlockProcessors", 1);
+    const labelList savedBlock =
+        state.lookupOrDefault<labelList>
+        (
+            "gridBlock",
+            labelList({0, 0, 0, g.nodes[0] - 1, g.nodes[1] - 1, g.nodes[2] - 1})
+        );
+    const ::dropletFiber::IndexBox& b = grid_->ownedBox();
+    const labelList block({b.lo[0], b.lo[1], b.lo[2], b.hi[0], b.hi[1], b.hi[2]});
+    if (savedBlock == block)
+    {
+        return;
+    }
+    const label processors = Pstream::parRun() ? Pstream::nProcs() : 1;
+    FatalIOErrorInFunction(state)
+        << "Restart state " << path << ": its averaging window (entries "
+        << "gridBlockProcessors " << savedProcessors << ", gridBlock "
+        << savedBlock << ") was written for the block of the grid's nodes "
+        << "a processor owned in a run on " << savedProcessors
+        << " processor(s); in this run on " << processors
+        << " processor(s) this processor owns the block " << block << "."
+        << nl << "    Each processor keeps the window of its own block of the"
+        << " grid: restart on " << savedProcessors << " processor(s) with"
+        << " the same decomposition, or set 'restart fresh;' to start again"
+        << " from the dictionary's fibers and an empty window."
+        << exit(FatalIOError);
+}
+
+
 void Foam::functionObjects::dropletFiberCollision::restoreWindow
 (
     const dictionary& state,
     const fileName& path
 )
 {
+    checkWindowBlock(state, path);
     ::dropletFiber::WindowState window;
     window.counters = windowCounters(state);
     window.values = windowValues

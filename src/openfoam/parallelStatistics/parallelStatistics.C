@@ -64,6 +64,12 @@ void Foam::dropletFiber::parallelStatistics::countCombineGatherScatter
 }
 
 
+void Foam::dropletFiber::parallelStatistics::countSent(const std::size_t bytes)
+{
+    step_.bytesSent += scalar(bytes);
+}
+
+
 void Foam::dropletFiber::parallelStatistics::countGatherScatterList
 (
     const std::vector<std::size_t>& entryBytes

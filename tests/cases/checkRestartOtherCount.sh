@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# Restart with another number of processors: the averaging window is kept per
+# processor's block of the grid, so a state written on 2 processors and restarted
+# serially (after reconstructPar) stops with a FatalIOError naming the state, the
+# processor counts and what to do; on 2 processors again the restart continues.
+# Usage: checkRestartOtherCount.sh CASE_DIR WORK_DIR T
+set -euo pipefail
+caseDir="$1"; work="$2"; half="$3"
+here="$(cd "${0%/*}" && pwd)"
+# shellcheck disable=SC1091
+. "$here/../../bin/functions.sh"
+loadFoamEnvironment
+
+rm -rf "$work"; mkdir -p "$work"
+cp -r "$caseDir" "$work/case"
+cd "$work/case"
+end="$(foamDictionary -entry endTime -value system/controlDict)"
+sed -i "s/^endTime .*/endTime         $half;/" system/controlDict
+./Allrun -parallel > /dev/null
+app="$(foamDictionary -entry application -value system/controlDict)"
+sed -i "s/^endTime .*/endTime         $end;/" system/controlDict
+reconstructPar -latestTime > log.reconstructPar 2>&1
+[ -f "$half/uniform/dropletFiber/dropletFiber" ] || die "reconstructPar did not carry the restart state"
+
+status=0
+"$app" > log.serialRestart 2>&1 || status=$?
+[ "$status" -ne 0 ] || { tail -20 log.serialRestart; die "the serial restart from a 2-processor state ran"; }
+grep -q "FOAM FATAL IO ERROR" log.serialRestart || { tail -20 log.serialRestart; die "no FatalIOError"; }
+for text in "gridBlockProcessors 2" "in this run on 1 processor(s)" "restart on 2 processor(s)" "restart fresh"; do
+    grep -q "$text" log.serialRestart || { tail -30 log.serialRestart; die "the error does not say '$text'"; }
+done
+echo "ok: a serial restart from a 2-processor state stops, saying why and what to do"
+
+mpirun -np 2 "$app" -parallel > log.parallelRestart 2>&1 || { tail -30 log.parallelRestart; die "restart on 2 processors failed"; }
+grep -q "restarted from" log.parallelRestart || die "the 2-processor restart did not read its state"
+echo "ok: the restart on 2 processors continues"
