@@ -2,7 +2,9 @@
 
 Usage: checkVtk.py CASE [NAME]
 
-For the last fibers_<time>.vtp: a polyline per fiber, point fields velocity,
+For the last fibers_<time>.vtp (in parallel fibers_<time>.pvtp: the pieces it
+lists, one per processor, read together; every array it declares in every
+piece; no fiber in two pieces): a polyline per fiber, point fields velocity,
 sigma, capturedMass, cell field tension; sigma integrated along the fibers
 (sigma_i times the length point i stands for: half of each neighbouring segment)
 equals the fiber mass the per-step table reports at that time. For the last
@@ -39,9 +41,58 @@ def arrays(piece, tag):
     block = piece.find(tag)
     result = {}
     for da in (block if block is not None else []):
-        values = [float(v) for v in da.text.split()]
+        values = [float(v) for v in (da.text or "").split()]
         result[da.get("Name")] = (int(da.get("NumberOfComponents", "1")), values)
     return result
+
+
+def fibers_of(path):
+    """Points, line cells (point pairs), point and cell arrays of a .vtp, or of
+    the pieces a .pvtp lists, read together (point numbers offset per piece)."""
+    root = ET.parse(path).getroot()
+    if root.get("type") != "PPolyData":
+        return [read_piece(root.find("PolyData/Piece"))]
+    index = root.find("PPolyData")
+    declared = {"PPointData": [], "PCellData": []}
+    for block in declared:
+        for da in index.find(block) if index.find(block) is not None else []:
+            declared[block].append((da.get("Name"), int(da.get("NumberOfComponents", "1"))))
+    sources = [p.get("Source") for p in index.findall("Piece")]
+    check(len(sources) > 0, "%s lists %d pieces" % (os.path.basename(path), len(sources)))
+    pieces = []
+    for source in sources:
+        piece_path = os.path.join(os.path.dirname(path), source)
+        check(os.path.isfile(piece_path), "piece %s exists" % source)
+        piece = read_piece(ET.parse(piece_path).getroot().find("PolyData/Piece"))
+        for block, data in (("PPointData", piece[2]), ("PCellData", piece[3])):
+            for name, comps in declared[block]:
+                check(name in data and data[name][0] == comps,
+                      "piece %s holds %s (%d components)" % (source, name, comps))
+        pieces.append(piece)
+    ids = [set(p[2]["fiberId"][1]) for p in pieces if "fiberId" in p[2]]
+    check(sum(len(i) for i in ids) == len(set().union(*ids)), "no fiber in two pieces")
+    return pieces
+
+
+def read_piece(piece):
+    n_points = int(piece.get("NumberOfPoints"))
+    pts = [float(v) for v in (piece.find("Points/DataArray").text or "").split()]
+    conn = [int(v) for v in (piece.find("Lines/DataArray[@Name='connectivity']").text or "").split()]
+    return ([pts[3 * i:3 * i + 3] for i in range(n_points)], conn, arrays(piece, "PointData"),
+            arrays(piece, "CellData"), int(piece.get("NumberOfLines")))
+
+
+def joined(pieces):
+    """The pieces as one set of points, line cells and arrays."""
+    points, conn, pdata, cdata, n_lines = [], [], {}, {}, 0
+    for p_points, p_conn, p_pdata, p_cdata, p_lines in pieces:
+        conn += [len(points) + c for c in p_conn]
+        points += p_points
+        n_lines += p_lines
+        for data, p_data in ((pdata, p_pdata), (cdata, p_cdata)):
+            for name, (comps, values) in p_data.items():
+                data.setdefault(name, (comps, []))[1].extend(values)
+    return points, conn, pdata, cdata, n_lines
 
 
 for kind, ext in (("fibers", "vtp"), ("grid", "vti")):
@@ -56,14 +107,8 @@ for kind, ext in (("fibers", "vtp"), ("grid", "vti")):
 # Fibers
 series = json.load(open(os.path.join(out, "fibers.vtp.series")))
 last = series["files"][-1]
-root = ET.parse(os.path.join(out, last["name"])).getroot()
-piece = root.find("PolyData/Piece")
-n_points = int(piece.get("NumberOfPoints"))
-n_lines = int(piece.get("NumberOfLines"))
-pts = [float(v) for v in piece.find("Points/DataArray").text.split()]
-points = [pts[3 * i:3 * i + 3] for i in range(n_points)]
-conn = [int(v) for v in piece.find("Lines/DataArray[@Name='connectivity']").text.split()]
-pdata, cdata = arrays(piece, "PointData"), arrays(piece, "CellData")
+points, conn, pdata, cdata, n_lines = joined(fibers_of(os.path.join(out, last["name"])))
+n_points = len(points)
 check(len(points) == n_points, "%d points read" % n_points)
 check(len(conn) == 2 * n_lines, "%d line cells of 2 points" % n_lines)
 for field, comps in (("velocity", 3), ("sigma", 1), ("capturedMass", 1)):

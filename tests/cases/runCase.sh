@@ -2,7 +2,8 @@
 #------------------------------------------------------------------------------
 # runCase.sh - run an OpenFOAM test case in a scratch copy, then check it.
 #
-# Usage: runCase.sh CASE_DIR WORK_DIR serial|parallel [CHECK_COMMAND ...]
+# Usage: runCase.sh CASE_DIR WORK_DIR serial|parallel|parallelN [CHECK_COMMAND ...]
+#   parallelN: the case's decomposeParDict set to N subdomains, (N 1 1)
 #   The case is copied to WORK_DIR (replaced if present), its Allrun is run
 #   (with -parallel for parallel), and CHECK_COMMAND is run with the copy's
 #   path appended. A failed step prints the tail of the case's logs; a run
@@ -29,7 +30,19 @@ showLogs() {
 }
 
 args=()
-[ "$mode" = parallel ] && args=(-parallel)
+case "$mode" in
+    parallel) args=(-parallel) ;;
+    parallel[0-9]*)
+        # decomposed along x into N (more ranks than cores: oversubscribed)
+        ranks="${mode#parallel}"
+        foamDictionary "$workDir/system/decomposeParDict" -entry numberOfSubdomains \
+            -set "$ranks" > /dev/null
+        foamDictionary "$workDir/system/decomposeParDict" -entry coeffs/n \
+            -set "($ranks 1 1)" > /dev/null
+        export OMPI_MCA_rmaps_base_oversubscribe=1
+        args=(-parallel)
+        ;;
+esac
 if ! "$workDir/Allrun" "${args[@]}"; then
     showLogs
     die "Allrun of $workDir failed"

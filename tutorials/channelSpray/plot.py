@@ -3,8 +3,8 @@ the spray at the end (coloured by sigma, mass per length, over the droplet mass
 density of the grid), and sigma along every fiber.
 
 Usage: /usr/bin/python3 plot.py [CASE_DIR] [OUTPUT_PNG]
-Reads postProcessing/dropletFiber/0/{dropletFiber.dat, the last fibers_*.vtp and
-grid_*.vti} (plain XML, read with the standard library).
+Reads postProcessing/dropletFiber/0/{dropletFiber.dat, the last fibers_*.vtp (a
+parallel run: fibers_*.pvtp and its pieces) and grid_*.vti} (plain XML, read with the standard library).
 """
 import json
 import math
@@ -38,18 +38,30 @@ def last_file(series):
 
 
 def data_arrays(block):
-    return {da.get("Name"): [float(v) for v in da.text.split()] for da in block}
+    return {da.get("Name"): [float(v) for v in (da.text or "").split()] for da in block}
 
 
 rows = table(os.path.join(out, "dropletFiber.dat"))
 t = [r["Time"] for r in rows]
 
+def fiber_pieces(path):
+    """The pieces of a .vtp, or of the .pvtp of a parallel run (one per processor)."""
+    root = ET.parse(path).getroot()
+    if root.get("type") != "PPolyData":
+        return [root.find("PolyData/Piece")]
+    folder = os.path.dirname(path)
+    return [ET.parse(os.path.join(folder, piece.get("Source"))).getroot().find("PolyData/Piece")
+            for piece in root.findall("PPolyData/Piece")]
+
+
 # fibers at the end
-piece = ET.parse(last_file("fibers.vtp.series")).getroot().find("PolyData/Piece")
-p = [float(v) for v in piece.find("Points/DataArray").text.split()]
-points = [(p[3 * i], p[3 * i + 1]) for i in range(len(p) // 3)]
-point_data = data_arrays(piece.find("PointData"))
-sigma, fiber_id = point_data["sigma"], point_data["fiberId"]
+points, sigma, fiber_id = [], [], []
+for piece in fiber_pieces(last_file("fibers.vtp.series")):
+    p = [float(v) for v in (piece.find("Points/DataArray").text or "").split()]
+    points += [(p[3 * i], p[3 * i + 1]) for i in range(len(p) // 3)]
+    point_data = data_arrays(piece.find("PointData"))
+    sigma += point_data["sigma"]
+    fiber_id += point_data["fiberId"]
 
 # grid at the end: one .vti (serial), or a .pvti listing a piece per processor
 grid_file = last_file("grid.vti.series")

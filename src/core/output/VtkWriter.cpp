@@ -82,6 +82,17 @@ void writeFieldBlock(std::ostream& os, const char* tag, const std::vector<VtkFie
     os << "      </" << tag << ">\n";
 }
 
+void writeArrayDeclarations(std::ostream& os, const char* tag, const std::vector<VtkField>& fields)
+{
+    os << "    <" << tag << ">\n";
+    for (const VtkField& field : fields)
+    {
+        os << "      <PDataArray type=\"Float64\" Name=\"" << field.name << "\" NumberOfComponents=\""
+           << field.components << "\"/>\n";
+    }
+    os << "    </" << tag << ">\n";
+}
+
 } // namespace
 
 void writePolylines(const std::string& path, double time, const std::vector<Eigen::Vector3d>& points,
@@ -139,6 +150,31 @@ void writePolylines(const std::string& path, double time, const std::vector<Eige
     writeFieldBlock(os, "CellData", cellData, nSegments);
     os << "    </Piece>\n"
        << "  </PolyData>\n"
+       << "</VTKFile>\n";
+    if (!os)
+    {
+        throw std::runtime_error("error writing '" + path + "'");
+    }
+}
+
+void writeParallelPolylines(const std::string& path, double time, const std::vector<std::string>& pieces,
+                            const std::vector<VtkField>& pointData, const std::vector<VtkField>& cellData)
+{
+    std::ofstream os = openOrThrow(path);
+    os << "<?xml version=\"1.0\"?>\n"
+       << "<VTKFile type=\"PPolyData\" version=\"1.0\" byte_order=\"LittleEndian\">\n"
+       << "  <PPolyData GhostLevel=\"0\">\n";
+    writeTimeFieldData(os, time);
+    os << "    <PPoints>\n"
+       << "      <PDataArray type=\"Float64\" NumberOfComponents=\"3\"/>\n"
+       << "    </PPoints>\n";
+    writeArrayDeclarations(os, "PPointData", pointData);
+    writeArrayDeclarations(os, "PCellData", cellData);
+    for (const std::string& piece : pieces)
+    {
+        os << "    <Piece Source=\"" << piece << "\"/>\n";
+    }
+    os << "  </PPolyData>\n"
        << "</VTKFile>\n";
     if (!os)
     {

@@ -4,6 +4,8 @@
 //
 //   writePolylines - fibers: one polyline per fiber (.vtp, PolyData), with point and
 //                    cell (= segment) data;
+//   writeParallelPolylines - the index (.pvtp, PPolyData) of polylines written in
+//                    pieces (one .vtp per processor), which ParaView reads as one;
 //   writeImageData - the regular density grid (.vti, ImageData), with point data, or
 //                    one piece of it (a processor's block);
 //   writePImageData - the index of the pieces of a grid written in parallel (.pvti,
@@ -37,6 +39,12 @@ struct VtkField
 void writePolylines(const std::string& path, double time, const std::vector<Eigen::Vector3d>& points,
                     const std::vector<std::size_t>& lineOffsets, const std::vector<VtkField>& pointData,
                     const std::vector<VtkField>& cellData);
+
+// The index of polylines written as pieces (writePolylines, one file each): the piece
+// files (paths relative to the index's folder), and the arrays every piece holds
+// (their names and components; the values are not used).
+void writeParallelPolylines(const std::string& path, double time, const std::vector<std::string>& pieces,
+                            const std::vector<VtkField>& pointData, const std::vector<VtkField>& cellData);
 
 // A regular grid: origin, spacing and number of nodes per direction, point data in
 // VTK order (x fastest, then y, then z).

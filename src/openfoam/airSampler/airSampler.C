@@ -9,6 +9,11 @@
 #include "dictionaryChecks.H"
 #include "dictionaryKeys.H"
 #include "PstreamReduceOps.H"
+#include "PstreamBuffers.H"
+#include "UIPstream.H"
+#include "UOPstream.H"
+
+#include <algorithm>
 
 #include <cmath>
 
@@ -276,9 +281,116 @@ Foam::scalar Foam::dropletFiber::airSampler::referenceViscosity() const
 }
 
 
+void Foam::dropletFiber::airSampler::sampleInCell
+(
+    const interpolationCellPoint<vector>* interpU,
+    const point& p,
+    const label celli,
+    tetIndices& hint,
+    scalar* v
+) const
+{
+    const volVectorField& U = mesh_.lookupObject<volVectorField>(UName_);
+    const vector u = interpU ? interpolateU(*interpU, p, celli, hint) : U[celli];
+    v[0] = u.x();
+    v[1] = u.y();
+    v[2] = u.z();
+    v[3] = cellValue(rho_, celli);
+    v[4] = cellValue(mu_, celli);
+    v[5] = 1;
+}
+
+
+void Foam::dropletFiber::airSampler::askOtherProcessors
+(
+    const Eigen::Matrix3Xd& points,
+    const processorBoxes& boxes,
+    const interpolationCellPoint<vector>* interpU,
+    List<scalar>& values,
+    parallelStatistics& statistics
+) const
+{
+    // The points in none of this processor's cells, to the processors whose
+    // box contains them
+    List<DynamicList<label>> asked(Pstream::nProcs());
+    List<DynamicList<point>> where(Pstream::nProcs());
+    for (label i = 0; i < points.cols(); ++i)
+    {
+        if (values[width*i + 5] == 0)
+        {
+            const point p(points(0, i), points(1, i), points(2, i));
+            for (const label proci : boxes.candidates(p))
+            {
+                asked[proci].append(i);
+                where[proci].append(p);
+            }
+        }
+    }
+    PstreamBuffers questions(Pstream::commsTypes::nonBlocking);
+    forAll(where, proci)
+    {
+        if (where[proci].size())
+        {
+            UOPstream os(proci, questions);
+            os << where[proci];
+            statistics.countSent(where[proci].byteSize());
+        }
+    }
+    labelList recvSizes;
+    questions.finishedSends(recvSizes);
+
+    // Answer the others' points in this processor's cells (found: 1)
+    PstreamBuffers answers(Pstream::commsTypes::nonBlocking);
+    forAll(recvSizes, proci)
+    {
+        if (recvSizes[proci])
+        {
+            UIPstream is(proci, questions);
+            const List<point> theirs(is);
+            List<scalar> answer(width*theirs.size(), Zero);
+            forAll(theirs, j)
+            {
+                const label celli =
+                    findCell(theirs[j], -1, -1, boxes.myBox());
+                if (celli >= 0)
+                {
+                    tetIndices hint;
+                    sampleInCell(interpU, theirs[j], celli, hint, &answer[width*j]);
+                }
+            }
+            UOPstream os(proci, answers);
+            os << answer;
+            statistics.countSent(answer.byteSize());
+        }
+    }
+    answers.finishedSends();
+
+    // In increasing processor order: the lowest that found a point answers
+    forAll(asked, proci)
+    {
+        if (asked[proci].empty())
+        {
+            continue;
+        }
+        UIPstream is(proci, answers);
+        const List<scalar> answer(is);
+        forAll(asked[proci], j)
+        {
+            scalar* v = &values[width*asked[proci][j]];
+            const scalar* a = &answer[width*j];
+            if (v[5] == 0 && a[5] > 0)
+            {
+                std::copy(a, a + width, v);
+            }
+        }
+    }
+}
+
+
 ::dropletFiber::AirSample Foam::dropletFiber::airSampler::sample
 (
     const Eigen::Matrix3Xd& points,
+    const processorBoxes& boxes,
     parallelStatistics& statistics
 ) const
 {
@@ -295,43 +407,27 @@ Foam::scalar Foam::dropletFiber::airSampler::referenceViscosity() const
         interpU.reset(new interpolationCellPoint<vector>(U));
     }
 
-    // Per point: U (3), rho, mu, number of processors that found it; summed
-    // across processors in one reduction
-    constexpr label width = 6;
+    // Per point: U (3), rho, mu, found (1: by this or another processor)
     List<scalar> values(width*n, Zero);
-    // This processor's own box (not reduced: mesh_.bounds() is the box of
-    // the whole mesh in parallel, which sent every point of the other
-    // processors to the octree search), per sample so that a moving mesh is
-    // searched where it is now (a few microseconds)
-    const boundBox localBounds(mesh_.points(), false);
     cellHint_.setSize(n, -1);
     tetHint_.setSize(n);
     label previousPointCell = -1;
     for (label i = 0; i < n; ++i)
     {
         const point p(points(0, i), points(1, i), points(2, i));
-        const label celli = findCell(p, cellHint_[i], previousPointCell, localBounds);
+        const label celli =
+            findCell(p, cellHint_[i], previousPointCell, boxes.myBox());
         cellHint_[i] = celli;
         previousPointCell = celli;
-        if (celli < 0)
+        if (celli >= 0)
         {
-            continue;
+            sampleInCell(interpU.get(), p, celli, tetHint_[i], &values[width*i]);
         }
-        const vector u =
-            interpU.valid()
-          ? interpolateU(*interpU, p, celli, tetHint_[i])
-          : U[celli];
-        scalar* v = &values[width*i];
-        v[0] = u.x();
-        v[1] = u.y();
-        v[2] = u.z();
-        v[3] = cellValue(rho_, celli);
-        v[4] = cellValue(mu_, celli);
-        v[5] = 1;
     }
-    Pstream::listCombineGather(values, plusEqOp<scalar>());
-    Pstream::listCombineScatter(values);
-    statistics.countCombineGatherScatter(values.byteSize());
+    if (Pstream::parRun())
+    {
+        askOtherProcessors(points, boxes, interpU.get(), values, statistics);
+    }
 
     const scalar rhoRef = referenceDensity();
     const scalar muRef = referenceViscosity();
@@ -342,12 +438,11 @@ Foam::scalar Foam::dropletFiber::airSampler::referenceViscosity() const
     for (label i = 0; i < n; ++i)
     {
         const scalar* v = &values[width*i];
-        const scalar found = v[5];
-        if (found > 0)
+        if (v[5] > 0)
         {
-            air.velocity.col(i) = Eigen::Vector3d(v[0], v[1], v[2])/found;
-            air.density(i) = v[3]/found;
-            air.viscosity(i) = v[4]/found;
+            air.velocity.col(i) = Eigen::Vector3d(v[0], v[1], v[2]);
+            air.density(i) = v[3];
+            air.viscosity(i) = v[4];
         }
         else
         {

@@ -15,7 +15,7 @@ Description
 #include "dictionaryKeys.H"
 #include "collisionSettings.H"
 #include "fiberStateIO.H"
-#include "fiberDistribution.H"
+#include "fiberOwnership.H"
 #include "cloud.H"
 #include "Time.H"
 #include "fvMesh.H"
@@ -251,8 +251,9 @@ void Foam::functionObjects::dropletFiberCollision::reportSettings() const
     }
     blocks_->report(Info);
     air_->report(Info);
+    // The fibers this processor holds
     scalar fiberPoints = 0;
-    for (const auto& fiber : fibers_)
+    for (const auto& fiber : held_.fibers)
     {
         fiberPoints += fiber.pointCount();
     }
@@ -262,7 +263,7 @@ void Foam::functionObjects::dropletFiberCollision::reportSettings() const
         << s.gravity.z() << "), drag "
         << ::dropletFiber::dragModelName(s.drag.model).c_str()
         << ", theta " << s.theta << ", injectors " << label(injectors_.size())
-        << ", fibers now " << label(fibers_.size()) << nl
+        << ", fibers now " << fiberCount() << nl
         << "    output: writeVtk " << Switch(writeVtk_).c_str()
         << ", writeGridVtk " << Switch(writeGridVtk_).c_str() << nl << endl;
 }
@@ -519,12 +520,15 @@ void Foam::functionObjects::dropletFiberCollision::countCappedParcels
 
 void Foam::functionObjects::dropletFiberCollision::injectFibers(const scalar t)
 {
+    // Every processor advances every injector alike (cheap) and keeps the
+    // fibers born in its cells
+    dropletFiber::heldFibers born;
     for (auto& injector : injectors_)
     {
-        std::vector<::dropletFiber::Fiber> born;
+        std::vector<::dropletFiber::Fiber> fibers;
         try
         {
-            born = injector.inject(t);
+            fibers = injector.inject(t);
         }
         catch (const std::exception& e)
         {
@@ -534,12 +538,33 @@ void Foam::functionObjects::dropletFiberCollision::injectFibers(const scalar t)
                 << type() << " " << name() << ": cannot inject fibers at time "
                 << time_.timeName() << ": " << e.what() << exit(FatalError);
         }
-        for (auto& fiber : born)
+        for (auto& fiber : fibers)
         {
-            totals_.fiberMassAdded += fiber.totalMass();
-            fibers_.push_back(std::move(fiber));
-            fiberOrigin_.push_back(injector.spec().name);
+            born.append(std::move(fiber), injector.spec().name, nextFiberId_++);
         }
+    }
+    takeBornFibers(born);
+}
+
+
+void Foam::functionObjects::dropletFiberCollision::takeBornFibers
+(
+    dropletFiber::heldFibers& born
+)
+{
+    // All processors have all of them: the mass is added alike everywhere,
+    // in the order of birth (a serial run's)
+    for (const auto& fiber : born.fibers)
+    {
+        totals_.fiberMassAdded += fiber.totalMass();
+    }
+    dropletFiber::fiberOwnership::keepBornHere
+    (
+        *boxes_, born, parallelStatistics_
+    );
+    for (std::size_t k = 0; k < born.size(); ++k)
+    {
+        held_.append(std::move(born.fibers[k]), born.origin[k], born.id[k]);
     }
 }
 
@@ -549,14 +574,10 @@ Foam::functionObjects::dropletFiberCollision::collisionSamplePoints() const
 {
     const auto& spec = grid_->spec();
     std::vector<Eigen::Vector3d> points;
-    for (std::size_t f = 0; f < fibers_.size(); ++f)
+    for (const ::dropletFiber::Fiber& fiber : held_.fibers)
     {
-        if (!dropletFiber::fiberDistribution::advancesHere(f))
-        {
-            continue;
-        }
-        const Eigen::Matrix3Xd& x = fibers_[f].positions();
-        for (Eigen::Index j = 0; j < fibers_[f].segmentCount(); ++j)
+        const Eigen::Matrix3Xd& x = fiber.positions();
+        for (Eigen::Index j = 0; j < fiber.segmentCount(); ++j)
         {
             const int samples =
                 ::dropletFiber::collisionSamples
@@ -579,28 +600,24 @@ Foam::functionObjects::dropletFiberCollision::collisionSamplePoints() const
 ::dropletFiber::CaptureSources
 Foam::functionObjects::dropletFiberCollision::collide(const scalar dt)
 {
-    // The sample points of the segments of the fibers this processor
-    // advances (the others' masses come with their states after the step,
-    // fiberDistribution), then their field values from the grid's blocks
-    // (one exchange), then the masses: the arithmetic of collisionMass
+    // The sample points of the segments of the fibers held here, then their
+    // field values from the grid's blocks (one exchange), then the masses:
+    // the arithmetic of collisionMass
     const auto& spec = grid_->spec();
     const std::vector<Eigen::Vector3d> points = collisionSamplePoints();
     const std::vector<::dropletFiber::DropletFieldValue> fields =
         blocks_->sample(*grid_, points, parallelStatistics_);
 
-    ::dropletFiber::CaptureSources capture(fibers_.size());
+    const std::vector<::dropletFiber::Fiber>& fibers = held_.fibers;
+    ::dropletFiber::CaptureSources capture(fibers.size());
     label samplesOutside = 0;
     std::size_t next = 0;
-    for (std::size_t f = 0; f < fibers_.size(); ++f)
+    for (std::size_t f = 0; f < fibers.size(); ++f)
     {
-        const ::dropletFiber::Fiber& fiber = fibers_[f];
-        capture[f].resize(fiber.segmentCount());
-        if (!dropletFiber::fiberDistribution::advancesHere(f))
-        {
-            continue;
-        }
+        const ::dropletFiber::Fiber& fiber = fibers[f];
         const Eigen::Matrix3Xd& x = fiber.positions();
         const Eigen::Matrix3Xd& v = fiber.velocities();
+        capture[f].resize(fiber.segmentCount());
         for (Eigen::Index j = 0; j < fiber.segmentCount(); ++j)
         {
             const Eigen::Vector3d segmentVelocity = 0.5*(v.col(j) + v.col(j + 1));
@@ -663,44 +680,84 @@ void Foam::functionObjects::dropletFiberCollision::warnSamplesOutside
 
 void Foam::functionObjects::dropletFiberCollision::removeLostFibers()
 {
+    // The running totals go on from the master's; the others' removals are
+    // added to it (a serial run adds them one after another, as always)
     const boundBox& box = mesh_.bounds();
-    std::size_t kept = 0;
-    for (std::size_t f = 0; f < fibers_.size(); ++f)
-    {
-        const Eigen::Matrix3Xd& x = fibers_[f].positions();
-        bool anyInside = false;
-        for (Eigen::Index i = 0; i < x.cols() && !anyInside; ++i)
+    scalar massRemoved = Pstream::master() ? totals_.fiberMassRemoved : 0;
+    label removed = 0;
+    held_.keepIf
+    (
+        [&](std::size_t f)
         {
-            anyInside = box.contains(point(x(0, i), x(1, i), x(2, i)));
-        }
-        if (anyInside)
-        {
-            if (kept != f)
+            const ::dropletFiber::Fiber& fiber = held_.fibers[f];
+            const Eigen::Matrix3Xd& x = fiber.positions();
+            for (Eigen::Index i = 0; i < x.cols(); ++i)
             {
-                fibers_[kept] = std::move(fibers_[f]);
-                fiberOrigin_[kept] = fiberOrigin_[f];
+                if (box.contains(point(x(0, i), x(1, i), x(2, i))))
+                {
+                    return true;
+                }
             }
-            ++kept;
+            massRemoved += fiber.totalMass();
+            ++removed;
+            return false;
         }
-        else
+    );
+    totals_.fiberMassRemoved = returnReduce(massRemoved, sumOp<scalar>());
+    totals_.fibersRemoved += returnReduce(removed, sumOp<label>());
+}
+
+
+void Foam::functionObjects::dropletFiberCollision::takeStartFibers
+(
+    std::vector<dropletFiber::namedFiber>& fixed,
+    const bool restored,
+    const dictionary& dict
+)
+{
+    if (!restored)
+    {
+        dropletFiber::heldFibers born;
+        for (auto& named : fixed)
         {
-            totals_.fiberMassRemoved += fibers_[f].totalMass();
-            ++totals_.fibersRemoved;
+            born.append(std::move(named.fiber), named.name, nextFiberId_++);
         }
+        takeBornFibers(born);
+        return;
     }
-    fibers_.erase(fibers_.begin() + kept, fibers_.end());
-    fiberOrigin_.resize(kept);
+    nextFiberId_ = nextFiberIdAfterRestart(dict);
+    if (stateProcessors_ == 0)
+    {
+        // A serial run's state (decomposePar copies it to every processor):
+        // each processor keeps the fibers it holds by the birth rule
+        dropletFiber::fiberOwnership::keepBornHere
+        (
+            *boxes_, held_, parallelStatistics_
+        );
+    }
+    else
+    {
+        // This processor's own fibers: passed on where the decomposition
+        // changed since
+        dropletFiber::fiberOwnership::passOn(*boxes_, held_, parallelStatistics_);
+    }
+}
+
+
+Foam::label Foam::functionObjects::dropletFiberCollision::fiberCount() const
+{
+    return returnReduce(label(held_.size()), sumOp<label>());
 }
 
 
 Foam::scalar Foam::functionObjects::dropletFiberCollision::fiberMass() const
 {
     scalar m = 0;
-    for (const auto& fiber : fibers_)
+    for (const auto& fiber : held_.fibers)
     {
         m += fiber.totalMass();
     }
-    return m;
+    return returnReduce(m, sumOp<scalar>());
 }
 
 
@@ -738,25 +795,29 @@ Foam::functionObjects::dropletFiberCollision::dropletFiberCollision
     lastTimeIndex_(-1),
     parcels_(),
     warnedSamplesOutside_(false),
+    nextFiberId_(0),
+    stateProcessors_(0),
     restartFresh_(false),
     writeVtk_(true),
     writeGridVtk_(true)
 {
     read(dict);
+    boxes_.reset(new dropletFiber::processorBoxes(mesh_));
 
     // Fibers: from the restart state of the start time, else from the
     // dictionary
     std::vector<dropletFiber::namedFiber> fixed;
-    if (!readStateOnEveryProcessor())
+    const bool restored = readStateOnEveryProcessor();
+    if (!restored)
     {
         fixed = dropletFiber::readFixedFibers(dict.subOrEmptyDict("fibers"));
     }
     warnPlacedOutside(fixed);
-    for (auto& named : fixed)
+    takeStartFibers(fixed, restored, dict);
+    if (restored)
     {
-        totals_.fiberMassAdded += named.fiber.totalMass();
-        fibers_.push_back(std::move(named.fiber));
-        fiberOrigin_.push_back(named.name);
+        Info<< type() << " " << this->name() << ": " << fiberCount()
+            << " fibers restored" << nl;
     }
 
     const fileName vtkDir = baseFileDir()/name/time_.timeName(time_.startTime().value());
@@ -872,24 +933,29 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
     coreCall("injecting fibers", [&]() { injectFibers(t); });
 
     // 4. Stochastic collision mass of every segment, from the grid (in
-    //    parallel: of the fibers this processor advances)
+    //    parallel: of the fibers this processor holds)
     ::dropletFiber::CaptureSources capture =
         coreCall("colliding fibers and droplets", [&]() { return collide(dt); });
 
-    // 5. Advance the fibers: capture, air drag, bending, inextensibility;
-    //    afterwards every processor holds every fiber and its capture
+    // 5. Advance the fibers: capture, air drag, bending, inextensibility
     const ::dropletFiber::StepReport report =
         coreCall
         (
             "advancing the fibers", [&]() { return advanceFibers(dt, capture); }
         );
-    step.capturedStep = capturedMass(capture);
+    step.capturedStep = returnReduce(capturedMass(capture), sumOp<scalar>());
     step.maxSegmentLengthError = report.maxSegmentLengthError;
     step.subSteps = report.subSteps;
     totals_.captured += step.capturedStep;
 
-    // 6. Fibers that left
+    // 6. Fibers that left; the others to the processor now holding their
+    //    first point
     removeLostFibers();
+    if (mesh_.moving())
+    {
+        boxes_->update();
+    }
+    dropletFiber::fiberOwnership::passOn(*boxes_, held_, parallelStatistics_);
     step.fiberTime = fiberStart.elapsed();
 
     // 7. Report; at write times the restart state and the mass balances

@@ -3,14 +3,16 @@
 -------------------------------------------------------------------------------
 Description
     Step 5 of execute(): the air at the fiber points and the fiber step. In
-    parallel each processor advances its share of the fibers
-    (fiberDistribution) and the states are exchanged afterwards.
+    parallel each processor advances the fibers it holds (fiberOwnership),
+    with the air at their points (airSampler asks the processors holding
+    the points outside its cells); the outcome is reduced as scalars.
 
 \*---------------------------------------------------------------------------*/
 
 #include "dropletFiberCollision.H"
-#include "fiberDistribution.H"
 #include "Pstream.H"
+#include "PstreamReduceOps.H"
+#include "OStringStream.H"
 
 #include <exception>
 #include <string>
@@ -21,139 +23,67 @@ Description
 ::dropletFiber::AirSample
 Foam::functionObjects::dropletFiberCollision::sampleAir() const
 {
-    // The points the core lays out (all movable fibers, AirSample.hpp);
-    // identical on every processor, so the collective sample is called by
-    // all or by none
+    // The points the core lays out (the movable fibers held here,
+    // AirSample.hpp). Collective: every processor samples, with its points
+    // or none, unless no processor has any
     if (solverSettings_.drag.model == ::dropletFiber::DragModelType::none)
     {
         return {};
     }
-    const Eigen::Matrix3Xd points = ::dropletFiber::airSamplePoints(fibers_);
-    if (points.cols() == 0)
+    const Eigen::Matrix3Xd points = ::dropletFiber::airSamplePoints(held_.fibers);
+    if (returnReduce(label(points.cols()), sumOp<label>()) == 0)
     {
         return {};
     }
-    const ::dropletFiber::AirSample air = air_->sample(points, parallelStatistics_);
+    const ::dropletFiber::AirSample air =
+        air_->sample(points, *boxes_, parallelStatistics_);
     stopIfAirNotFinite(air);
     return air;
 }
 
 
-void Foam::functionObjects::dropletFiberCollision::stopIfAirNotFinite
+Foam::string Foam::functionObjects::dropletFiberCollision::nonFiniteAirHere
 (
     const ::dropletFiber::AirSample& air
 ) const
 {
-    // The same sample on every processor: all stop, with the same message
     string quantity;
     const label p = air_->firstNonFinite(air, quantity);
-    if (p < 0 && air_->nonFiniteVelocityCells() == 0)
-    {
-        return;
-    }
     if (p < 0)
     {
-        FatalErrorInFunction
-            << type() << " " << name() << ": the air velocity is not finite"
-            << " in " << air_->nonFiniteVelocityCells() << " cells or"
-            << " boundary faces at time " << time_.timeName()
-            << " (at no fiber point)." << nl
-            << "    The flow has diverged: the fibers cannot be advanced in"
-            << " it." << exit(FatalError);
+        return string();
     }
+    const std::vector<::dropletFiber::Fiber>& fibers = held_.fibers;
     const ::dropletFiber::AirSampleLayout layout =
-        ::dropletFiber::airSampleLayout(fibers_);
+        ::dropletFiber::airSampleLayout(fibers);
     std::size_t f = 0;
     while
     (
         p >= layout.firstPoint[f]
-           + ::dropletFiber::airSamplePointCount(fibers_[f])
+           + ::dropletFiber::airSamplePointCount(fibers[f])
     )
     {
         ++f;   // p is a point of a later fiber (immobile ones have none)
     }
     const label i = p - label(layout.firstPoint[f]);
-    const Eigen::Vector3d x = fibers_[f].positions().col(i);
-    FatalErrorInFunction
-        << type() << " " << name() << ": the air " << quantity.c_str()
+    const Eigen::Vector3d x = fibers[f].positions().col(i);
+    OStringStream os;
+    os  << "the air " << quantity.c_str()
         << " is not finite at time " << time_.timeName() << " at point " << i
-        << " (" << x.x() << ' ' << x.y() << ' ' << x.z() << ") of fiber " << f
-        << " (from '" << fiberOrigin_[f] << "')." << nl
-        << "    The flow has diverged there (or the field holds nan/inf):"
-        << " the fibers cannot be advanced in it." << exit(FatalError);
+        << " (" << x.x() << ' ' << x.y() << ' ' << x.z() << ") of fiber "
+        << held_.id[f] << " (from '" << held_.origin[f] << "').";
+    return os.str();
 }
 
 
-std::vector<std::size_t>
-Foam::functionObjects::dropletFiberCollision::fibersAdvancedHere() const
-{
-    std::vector<std::size_t> mine;
-    for (std::size_t f = 0; f < fibers_.size(); ++f)
-    {
-        if (dropletFiber::fiberDistribution::advancesHere(f))
-        {
-            mine.push_back(f);
-        }
-    }
-    return mine;
-}
-
-
-std::string Foam::functionObjects::dropletFiberCollision::stepFibers
+Foam::string Foam::functionObjects::dropletFiberCollision::firstFailureOfAll
 (
-    const std::vector<std::size_t>& mine,
-    const scalar dt,
-    const ::dropletFiber::AirSample& air,
-    const ::dropletFiber::CaptureSources& capture,
-    ::dropletFiber::StepReport& report
+    const string& failure
 )
 {
-    // The fibers leave the list for the step (the solver steps a list of its
-    // own) and come back afterwards, failed or not
-    const ::dropletFiber::AirSample ownAir =
-        ::dropletFiber::airSampleOfFibers(air, fibers_, mine);
-    std::vector<::dropletFiber::Fiber> own;
-    ::dropletFiber::CaptureSources ownCapture;
-    own.reserve(mine.size());
-    ownCapture.reserve(mine.size());
-    for (const std::size_t f : mine)
+    if (!returnReduce(!failure.empty(), orOp<bool>()))
     {
-        ownCapture.push_back(capture[f]);
-        own.push_back(std::move(fibers_[f]));
-    }
-
-    std::string failure;
-    try
-    {
-        report = solver_->step(own, dt, ownAir, &ownCapture, &mine);
-    }
-    catch (const std::exception& e)
-    {
-        failure = e.what();
-        if (failure.empty())
-        {
-            failure = "fiber step failed (no reason given)";
-        }
-    }
-    for (std::size_t k = 0; k < mine.size(); ++k)
-    {
-        fibers_[mine[k]] = std::move(own[k]);
-    }
-    return failure;
-}
-
-
-void Foam::functionObjects::dropletFiberCollision::stopIfStepFailed
-(
-    const bool anyFailed,
-    const std::string& failure
-) const
-{
-    // On every processor at once: all know from the exchange that one
-    // failed, so the reasons are gathered only then
-    if (!anyFailed)
-    {
-        return;
+        return string();
     }
     List<string> failures(Pstream::nProcs());
     failures[Pstream::myProcNo()] = failure;
@@ -163,12 +93,82 @@ void Foam::functionObjects::dropletFiberCollision::stopIfStepFailed
     {
         if (!reason.empty())
         {
-            FatalErrorInFunction
-                << type() << " " << name() << ": fiber step failed at time "
-                << time_.timeName() << ": " << reason.c_str() << nl
-                << "    Reduce the time step, or raise fibers.maxSubSteps ("
-                << solverSettings_.maxSubSteps << ")." << exit(FatalError);
+            return reason;
         }
+    }
+    return string();
+}
+
+
+void Foam::functionObjects::dropletFiberCollision::stopIfAirNotFinite
+(
+    const ::dropletFiber::AirSample& air
+) const
+{
+    // Each processor checks the air of its own fibers; all stop, with the
+    // message of the first processor that found one
+    const string failure = firstFailureOfAll(nonFiniteAirHere(air));
+    if (failure.empty() && air_->nonFiniteVelocityCells() == 0)
+    {
+        return;
+    }
+    if (failure.empty())
+    {
+        FatalErrorInFunction
+            << type() << " " << name() << ": the air velocity is not finite"
+            << " in " << air_->nonFiniteVelocityCells() << " cells or"
+            << " boundary faces at time " << time_.timeName()
+            << " (at no fiber point)." << nl
+            << "    The flow has diverged: the fibers cannot be advanced in"
+            << " it." << exit(FatalError);
+    }
+    FatalErrorInFunction
+        << type() << " " << name() << ": " << failure.c_str() << nl
+        << "    The flow has diverged there (or the field holds nan/inf):"
+        << " the fibers cannot be advanced in it." << exit(FatalError);
+}
+
+
+std::string Foam::functionObjects::dropletFiberCollision::stepFibers
+(
+    const scalar dt,
+    const ::dropletFiber::AirSample& air,
+    const ::dropletFiber::CaptureSources& capture,
+    ::dropletFiber::StepReport& report
+)
+{
+    // The solver's messages name the fibers by their ids
+    const std::vector<std::size_t> ids(held_.id.begin(), held_.id.end());
+    std::string failure;
+    try
+    {
+        report = solver_->step(held_.fibers, dt, air, &capture, &ids);
+    }
+    catch (const std::exception& e)
+    {
+        failure = e.what();
+        if (failure.empty())
+        {
+            failure = "fiber step failed (no reason given)";
+        }
+    }
+    return failure;
+}
+
+
+void Foam::functionObjects::dropletFiberCollision::stopIfStepFailed
+(
+    const std::string& failure
+) const
+{
+    const string reason = firstFailureOfAll(failure);
+    if (!reason.empty())
+    {
+        FatalErrorInFunction
+            << type() << " " << name() << ": fiber step failed at time "
+            << time_.timeName() << ": " << reason.c_str() << nl
+            << "    Reduce the time step, or raise fibers.maxSubSteps ("
+            << solverSettings_.maxSubSteps << ")." << exit(FatalError);
     }
 }
 
@@ -181,27 +181,17 @@ Foam::functionObjects::dropletFiberCollision::advanceFibers
 )
 {
     const ::dropletFiber::AirSample air = sampleAir();
-    const std::vector<std::size_t> mine = fibersAdvancedHere();
     ::dropletFiber::StepReport report;
-    const std::string failure = stepFibers(mine, dt, air, capture, report);
-
-    // The advanced fibers to every processor, with the processors' outcomes
-    dropletFiber::fiberDistribution::stepOutcome outcome;
-    outcome.failed = !failure.empty();
-    outcome.maxSegmentLengthError = report.maxSegmentLengthError;
-    outcome.subSteps = report.subSteps;
-    outcome = dropletFiber::fiberDistribution::exchange
-    (
-        fibers_, capture, outcome, parallelStatistics_
-    );
+    const std::string failure = stepFibers(dt, air, capture, report);
 
     // A fiber that cannot be advanced even at the smallest sub-step stops
     // the run with the reason (the results written so far stay)
-    stopIfStepFailed(outcome.failed, failure);
+    stopIfStepFailed(failure);
 
     // The figures the table and the log report, over all fibers
-    report.maxSegmentLengthError = outcome.maxSegmentLengthError;
-    report.subSteps = outcome.subSteps;
+    report.maxSegmentLengthError =
+        returnReduce(report.maxSegmentLengthError, maxOp<scalar>());
+    report.subSteps = int(returnReduce(label(report.subSteps), sumOp<label>()));
     return report;
 }
 

@@ -14,6 +14,37 @@ Description
 #include "OFstream.H"
 #include "OSspecific.H"
 
+// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- A processor's piece of the fibers' file, in the directory named as it
+Foam::word pieceName(const Foam::label proci)
+{
+    return "processor" + Foam::name(proci) + ".vtp";
+}
+
+
+//- The arrays of the fibers' pieces (names and components), for the .pvtp
+std::vector<::dropletFiber::VtkField> fiberPointFields()
+{
+    return
+    {
+        {"velocity", 3, {}}, {"sigma", 1, {}}, {"capturedMass", 1, {}},
+        {"fiberId", 1, {}}
+    };
+}
+
+
+std::vector<::dropletFiber::VtkField> fiberCellFields()
+{
+    return {{"tension", 1, {}}, {"segmentCapturedMass", 1, {}}};
+}
+
+} // End anonymous namespace
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 void Foam::functionObjects::dropletFiberCollision::writeFileHeader
@@ -44,8 +75,11 @@ void Foam::functionObjects::dropletFiberCollision::reportStep
     const stepSummary& step
 )
 {
+    // Over all processors (collective: before the master's writing)
+    const label fibers = fiberCount();
+    const scalar mass = fiberMass();
     Log << type() << " " << name() << ": parcels " << step.parcels
-        << ", fibers " << label(fibers_.size())
+        << ", fibers " << fibers
         << ", captured " << step.capturedStep << " kg (total "
         << totals_.captured << " kg), segment-length error "
         << step.maxSegmentLengthError << ", sub-steps " << step.subSteps
@@ -55,7 +89,7 @@ void Foam::functionObjects::dropletFiberCollision::reportStep
     {
         OFstream& os = file();
         writeCurrentTime(os);
-        os  << tab << label(fibers_.size())
+        os  << tab << fibers
             << tab << step.parcels
             << tab << step.droplets
             << tab << step.deposit.massIn
@@ -63,7 +97,7 @@ void Foam::functionObjects::dropletFiberCollision::reportStep
             << tab << step.deposit.massOutside
             << tab << step.capturedStep
             << tab << totals_.captured
-            << tab << fiberMass()
+            << tab << mass
             << tab << step.maxSegmentLengthError
             << tab << step.depositionTime
             << tab << step.fiberTime
@@ -74,11 +108,11 @@ void Foam::functionObjects::dropletFiberCollision::reportStep
 
 void Foam::functionObjects::dropletFiberCollision::writeParallelStatistics()
 {
-    // The grid nodes this processor stores: its block and the halo (every
-    // fiber, until fibers are owned per processor)
+    // The grid nodes this processor stores (its block and the halo) and the
+    // fibers it holds
     parallelStatistics_.holding
     (
-        grid_->storageBox().nodeCount(), fibers_.size()
+        grid_->storageBox().nodeCount(), held_.size()
     );
     const dropletFiber::parallelStatistics::figures maxima =
         parallelStatistics_.maxOverProcessors();
@@ -108,9 +142,10 @@ void Foam::functionObjects::dropletFiberCollision::writeParallelStatistics()
 
 void Foam::functionObjects::dropletFiberCollision::reportConservation() const
 {
+    const scalar mass = fiberMass();
     const scalar balance =
         totals_.fiberMassAdded + totals_.captured
-      - totals_.fiberMassRemoved - fiberMass();
+      - totals_.fiberMassRemoved - mass;
     Info<< type() << " " << name() << " conservation at time "
         << time_.timeName() << ", summed over all steps so far:" << nl
         << "    parcel mass " << totals_.parcelMass << " kg = on grid "
@@ -118,7 +153,7 @@ void Foam::functionObjects::dropletFiberCollision::reportConservation() const
         << " (balance "
         << totals_.parcelMass - totals_.deposited - totals_.outside
         << " kg)" << nl
-        << "    fiber mass " << fiberMass() << " kg = added "
+        << "    fiber mass " << mass << " kg = added "
         << totals_.fiberMassAdded << " + captured " << totals_.captured
         << " - removed " << totals_.fiberMassRemoved
         << " (balance " << balance << " kg)" << nl
@@ -135,18 +170,20 @@ void Foam::functionObjects::dropletFiberCollision::writeVtkFiles()
     }
     const fileName dir =
         baseFileDir()/name()/time_.timeName(time_.startTime().value());
-    const scalar t = time_.value();
     if (Pstream::master())
     {
         mkDir(dir);
     }
-    if (writeVtk_ && Pstream::master())
+    const scalar t = time_.value();
+
+    // Both collective in parallel: every processor writes its piece (its
+    // fibers, its block of the grid), the master the index of the pieces
+    if (writeVtk_)
     {
         writeFibersVtk(dir, t);
     }
     if (writeGridVtk_)
     {
-        // In parallel every processor writes its piece
         writeGridVtk(dir, t);
     }
 }
@@ -158,6 +195,39 @@ void Foam::functionObjects::dropletFiberCollision::writeFibersVtk
     const scalar t
 )
 {
+    const word stem = "fibers_" + time_.timeName();
+    if (!Pstream::parRun())
+    {
+        writeHeldFibersVtk(dir/stem + ".vtp", t);
+        fibersSeries_->add(stem + ".vtp", t);
+        return;
+    }
+    // Each processor its piece, into the directory named as the .pvtp
+    // (made by each: the case directory may be shared or not)
+    mkDir(dir/stem);
+    writeHeldFibersVtk(dir/stem/pieceName(Pstream::myProcNo()), t);
+    if (Pstream::master())
+    {
+        std::vector<std::string> pieces;
+        for (label proci = 0; proci < Pstream::nProcs(); ++proci)
+        {
+            pieces.push_back(stem + "/" + pieceName(proci));
+        }
+        ::dropletFiber::writeParallelPolylines
+        (
+            dir/stem + ".pvtp", t, pieces, fiberPointFields(), fiberCellFields()
+        );
+        fibersSeries_->add(stem + ".pvtp", t);
+    }
+}
+
+
+void Foam::functionObjects::dropletFiberCollision::writeHeldFibersVtk
+(
+    const fileName& file,
+    const scalar t
+) const
+{
     // Fibers: points of all fibers one after another, a polyline each
     std::vector<Eigen::Vector3d> points;
     std::vector<std::size_t> offsets;
@@ -167,9 +237,9 @@ void Foam::functionObjects::dropletFiberCollision::writeFibersVtk
     ::dropletFiber::VtkField fiberId{"fiberId", 1, {}};
     ::dropletFiber::VtkField tension{"tension", 1, {}};
     ::dropletFiber::VtkField segmentCaptured{"segmentCapturedMass", 1, {}};
-    for (std::size_t f = 0; f < fibers_.size(); ++f)
+    for (std::size_t f = 0; f < held_.size(); ++f)
     {
-        const auto& fiber = fibers_[f];
+        const auto& fiber = held_.fibers[f];
         offsets.push_back(points.size());
         const Eigen::VectorXd lineDensity = fiber.lineDensityAtPoints();
         const Eigen::VectorXd& segCaptured = fiber.capturedMassPerSegment();
@@ -186,7 +256,7 @@ void Foam::functionObjects::dropletFiberCollision::writeFibersVtk
             const double right =
                 i < fiber.segmentCount() ? 0.5*segCaptured(i) : 0.0;
             captured.values.push_back(left + right);
-            fiberId.values.push_back(double(f));
+            fiberId.values.push_back(double(held_.id[f]));
         }
         for (Eigen::Index j = 0; j < fiber.segmentCount(); ++j)
         {
@@ -194,14 +264,12 @@ void Foam::functionObjects::dropletFiberCollision::writeFibersVtk
             segmentCaptured.values.push_back(segCaptured(j));
         }
     }
-    const word file = "fibers_" + time_.timeName() + ".vtp";
     ::dropletFiber::writePolylines
     (
-        dir/file, t, points, offsets,
+        file, t, points, offsets,
         {velocity, sigma, captured, fiberId},
         {tension, segmentCaptured}
     );
-    fibersSeries_->add(file, t);
 }
 
 

@@ -7,7 +7,9 @@ Description
     a run either continues exactly or stops naming the file and the entry.
 
     Files, in \<time\>/uniform/dropletFiber/ (of every processor in parallel):
-      \<name\>             fibers, injector counters, totals (dictionary)
+      \<name\>             fibers (fiber\<id\>; in parallel those the processor
+                           holds, with the entries processors and processor),
+                           injector counters, totals (dictionary)
       \<name\>.gridWindow  the averaging window's values (binary list)
       \<name\>.marker      written by OpenFOAM with the fields, when the state
                            follows (restartStateMarker)
@@ -182,12 +184,20 @@ Foam::dictionary Foam::functionObjects::dropletFiberCollision::stateDict
     state.add("time", time_.value());
     state.add("timeIndex", time_.timeIndex());
 
-    dictionary fibers;
-    for (std::size_t f = 0; f < fibers_.size(); ++f)
+    // In parallel: which of how many processors wrote it (a serial run's
+    // state has neither, and can be decomposed onto any number)
+    if (Pstream::parRun())
     {
-        dictionary d = dropletFiber::fiberStateDict(fibers_[f].state());
-        d.add("origin", fiberOrigin_[f]);
-        fibers.add(word("fiber" + Foam::name(label(f))), d);
+        state.add("processors", Pstream::nProcs());
+        state.add("processor", Pstream::myProcNo());
+    }
+
+    dictionary fibers;
+    for (std::size_t f = 0; f < held_.size(); ++f)
+    {
+        dictionary d = dropletFiber::fiberStateDict(held_.fibers[f].state());
+        d.add("origin", held_.origin[f]);
+        fibers.add(word("fiber" + Foam::name(held_.id[f])), d);
     }
     state.add("fibers", fibers);
 
@@ -240,9 +250,10 @@ Foam::dictionary Foam::functionObjects::dropletFiberCollision::stateDict
 
 void Foam::functionObjects::dropletFiberCollision::writeState() const
 {
-    // Every processor writes its own state (processorN/<time>/uniform/...):
-    // the fibers, which every processor holds, and the averaging window of
-    // its block of the grid (checkWindowBlock on restart).
+    // Each processor writes its own state (processorN/<time>/uniform/...):
+    // the fibers it holds and the averaging window of its block of the grid,
+    // read back on restart with the same number of processors (readState
+    // and checkWindowBlock say what happens with another).
     // The window first, the dictionary last: a dictionary that exists
     // belongs to a complete state.
     const ::dropletFiber::WindowState window = grid_->saveWindow();
@@ -327,14 +338,14 @@ bool Foam::functionObjects::dropletFiberCollision::readState()
 
     IFstream is(path);
     const dictionary state(is);
+    checkStateProcessors(state, path);
     restoreFibers(state.subDict("fibers"));
     restoreInjectorCounts(state.subDict("injectors"));
     restoreTotals(state.subDict("totals"));
     restoreWindow(state, path);
 
-    Info<< type() << " " << name() << ": restarted from " << path << ": "
-        << label(fibers_.size()) << " fibers, captured mass so far "
-        << totals_.captured << " kg" << nl;
+    Info<< type() << " " << name() << ": restarted from " << path
+        << ": captured mass so far " << totals_.captured << " kg" << nl;
     return true;
 }
 
@@ -389,25 +400,94 @@ bool Foam::functionObjects::dropletFiberCollision::readStateOnEveryProcessor()
 }
 
 
+void Foam::functionObjects::dropletFiberCollision::checkStateProcessors
+(
+    const dictionary& state,
+    const fileName& path
+)
+{
+    // A serial run's state: every processor reads all fibers (decomposePar
+    // copies uniform/ into each) and keeps its own (takeStartFibers)
+    stateProcessors_ = state.lookupOrDefault<label>("processors", 0);
+    const label writer = state.lookupOrDefault<label>("processor", 0);
+    if
+    (
+        stateProcessors_ == 0
+     || (stateProcessors_ == Pstream::nProcs() && writer == Pstream::myProcNo())
+    )
+    {
+        return;
+    }
+    FatalIOErrorInFunction(state)
+        << "Restart state " << path << " was written by processor " << writer
+        << " of a run on " << stateProcessors_ << " processors and holds"
+        << " only the fibers that processor held; this run is "
+        << (Pstream::parRun() ? "processor " + Foam::name(Pstream::myProcNo())
+            + " of " + Foam::name(Pstream::nProcs()) : word("serial"))
+        << " (reconstructPar and decomposePar copy processor 0's state only)."
+        << nl << "    Restart on " << stateProcessors_ << " processors from"
+        << " the processor directories as that run wrote them, or set"
+        << " 'restart fresh;' (the dictionary's fibers, an empty window)."
+        << exit(FatalIOError);
+}
+
+
+Foam::label
+Foam::functionObjects::dropletFiberCollision::nextFiberIdAfterRestart
+(
+    const dictionary& dict
+) const
+{
+    // The ids are birth numbers: the fixed fibers of the dictionary first,
+    // then every fiber injected (the injectors' counts), as in the run that
+    // wrote the state; above every id held, should the dictionary differ
+    label born =
+        label(dropletFiber::readFixedFibers(dict.subOrEmptyDict("fibers")).size());
+    for (const auto& injector : injectors_)
+    {
+        born += label(injector.injectedCount());
+    }
+    label above = 0;
+    for (const label id : held_.id)
+    {
+        above = max(above, id + 1);
+    }
+    return max(born, returnReduce(above, maxOp<label>()));
+}
+
+
 void Foam::functionObjects::dropletFiberCollision::restoreFibers
 (
     const dictionary& fibers
 )
 {
-    fibers_.clear();
-    fiberOrigin_.clear();
+    held_ = dropletFiber::heldFibers();
     for (const entry& e : fibers)
     {
         const dictionary& d = dropletFiber::requiredSubDict
         (
             fibers, e.keyword(), "the state of one fiber"
         );
+        // fiber<id>: the id, a birth number
+        label id = -1;
+        const word& key = e.keyword();
+        if
+        (
+            key.size() < 6 || key.substr(0, 5) != "fiber"
+         || !Foam::read(key.substr(5), id) || id < 0
+        )
+        {
+            FatalIOErrorInFunction(fibers)
+                << "Entry '" << key << "': allowed are fiber<id> with an"
+                << " id >= 0 (the fiber's birth number)." << exit(FatalIOError);
+        }
         ::dropletFiber::FiberState s = dropletFiber::fiberStateFromDict(d);
         dropletFiber::checkedCoreCall
         (
-            d, [&]() { fibers_.emplace_back(std::move(s)); }
+            d, [&]() { held_.fibers.emplace_back(std::move(s)); }
         );
-        fiberOrigin_.push_back(d.get<word>("origin"));
+        held_.origin.push_back(d.get<word>("origin"));
+        held_.id.push_back(id);
     }
 }
 

@@ -64,42 +64,11 @@ void Foam::dropletFiber::parallelStatistics::countCombineGatherScatter
 }
 
 
-void Foam::dropletFiber::parallelStatistics::countSent(const std::size_t bytes)
-{
-    step_.bytesSent += scalar(bytes);
-}
-
-
-void Foam::dropletFiber::parallelStatistics::countGatherScatterList
+void Foam::dropletFiber::parallelStatistics::countSent
 (
-    const std::vector<std::size_t>& entryBytes
+    const std::size_t bytes
 )
 {
-    if (!Pstream::parRun())
-    {
-        return;
-    }
-    const List<UPstream::commsStruct>& comms = allComms();
-    const UPstream::commsStruct& my = comms[Pstream::myProcNo()];
-    std::size_t bytes = 0;
-    // Gather: my entry and those of all processors below me, up
-    if (my.above() >= 0)
-    {
-        bytes += entryBytes[Pstream::myProcNo()];
-        for (const label leaf : my.allBelow())
-        {
-            bytes += entryBytes[leaf];
-        }
-    }
-    // Scatter: to each neighbour below, the entries of all processors not
-    // below it
-    for (const label below : my.below())
-    {
-        for (const label leaf : comms[below].allNotBelow())
-        {
-            bytes += entryBytes[leaf];
-        }
-    }
     step_.bytesSent += scalar(bytes);
 }
 
