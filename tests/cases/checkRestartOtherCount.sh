@@ -26,7 +26,8 @@ status=0
 "$app" > log.serialRestart 2>&1 || status=$?
 [ "$status" -ne 0 ] || { tail -20 log.serialRestart; die "the serial restart from a 2-processor state ran"; }
 grep -q "FOAM FATAL IO ERROR" log.serialRestart || { tail -20 log.serialRestart; die "no FatalIOError"; }
-for text in "gridBlockProcessors 2" "in this run on 1 processor(s)" "restart on 2 processor(s)" "restart fresh"; do
+# (the fibers' state is checked first: it names the processor count and the remedy)
+for text in "of a run on 2 processors" "this run is \"serial\"" "Restart on 2 processors" "restart fresh"; do
     grep -q "$text" log.serialRestart || { tail -30 log.serialRestart; die "the error does not say '$text'"; }
 done
 echo "ok: a serial restart from a 2-processor state stops, saying why and what to do"

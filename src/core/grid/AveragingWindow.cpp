@@ -282,7 +282,7 @@ WindowState AveragingWindow::save() const
     return state;
 }
 
-std::size_t AveragingWindow::savedHeaderSize(const WindowState& state) const
+std::size_t AveragingWindow::savedHeaderSize(const WindowState& state, IndexBox& saved) const
 {
     const std::vector<std::int64_t>& c = state.counters;
     if (c.size() < headerSize || (c[0] != formatVersion && c[0] != blockFormatVersion))
@@ -295,7 +295,7 @@ std::size_t AveragingWindow::savedHeaderSize(const WindowState& state) const
                     + std::to_string(c[3]) + " nodes, this grid has " + std::to_string(gridNodes_[0]) + "x"
                     + std::to_string(gridNodes_[1]) + "x" + std::to_string(gridNodes_[2]));
     }
-    IndexBox saved = wholeGridBox(gridNodes_);
+    saved = wholeGridBox(gridNodes_);
     if (c[0] == blockFormatVersion)
     {
         if (c.size() < headerSize + 6)
@@ -308,7 +308,9 @@ std::size_t AveragingWindow::savedHeaderSize(const WindowState& state) const
             saved.hi[d] = static_cast<int>(c[headerSize + 3 + d]);
         }
     }
-    if (saved != region_)
+    // A state of a larger region (the whole grid of a serial run, decomposed) gives this
+    // window its part; a smaller or another block cannot.
+    if (saved.intersected(region_) != region_)
     {
         failRestart("saved for the block " + boxText(saved) + " of the grid's nodes, this window holds "
                     + boxText(region_));
@@ -318,7 +320,8 @@ std::size_t AveragingWindow::savedHeaderSize(const WindowState& state) const
 
 std::vector<IndexBox> AveragingWindow::savedSlotBoxes(const WindowState& state) const
 {
-    const std::size_t header = savedHeaderSize(state);
+    IndexBox saved;
+    const std::size_t header = savedHeaderSize(state, saved);
     const std::vector<std::int64_t>& c = state.counters;
     if (c[4] != nQuantities_)
     {
@@ -339,11 +342,10 @@ std::vector<IndexBox> AveragingWindow::savedSlotBoxes(const WindowState& state) 
             boxes[s].lo[d] = static_cast<int>(c[header + 6 * s + static_cast<std::size_t>(d)]);
             boxes[s].hi[d] = static_cast<int>(c[header + 6 * s + 3 + static_cast<std::size_t>(d)]);
         }
-        if (!boxes[s].empty() && boxes[s].intersected(region_) != boxes[s])
+        if (!boxes[s].empty() && boxes[s].intersected(saved) != boxes[s])
         {
             failRestart("slot box outside the grid");
         }
-        boxes[s] = toRegion(boxes[s]);
         expectedValues += boxes[s].nodeCount() * static_cast<std::size_t>(nQuantities_);
     }
     if (expectedValues != state.values.size())
@@ -355,7 +357,8 @@ std::vector<IndexBox> AveragingWindow::savedSlotBoxes(const WindowState& state) 
 
 void AveragingWindow::restore(const WindowState& state)
 {
-    // All boxes read and the value count checked before touching this window.
+    // All boxes (in the grid's indices) read and the value count checked before touching
+    // this window.
     const std::vector<IndexBox> boxes = savedSlotBoxes(state);
 
     // Keep the newest min(saved slots, length) steps.
@@ -373,29 +376,44 @@ void AveragingWindow::restore(const WindowState& state)
     std::size_t position = 0;
     for (std::size_t s = 0; s < boxes.size(); ++s)
     {
-        const std::size_t count = boxes[s].nodeCount() * static_cast<std::size_t>(nQuantities_);
         if (s >= skip)
         {
             std::vector<double>& slot = slots_[static_cast<std::size_t>(filled_)];
             slot.assign(total_.size(), 0.0);
-            std::size_t read = position;
-            forEachBoxRow(boxes[s],
-                          [&](std::size_t offset, std::size_t rowCount)
-                          {
-                              std::copy(state.values.begin() + static_cast<std::ptrdiff_t>(read),
-                                        state.values.begin() + static_cast<std::ptrdiff_t>(read + rowCount),
-                                        slot.begin() + static_cast<std::ptrdiff_t>(offset));
-                              read += rowCount;
-                          });
-            slotBoxes_[static_cast<std::size_t>(filled_)] = boxes[s];
+            const IndexBox kept = boxes[s].intersected(region_);
+            copySavedSlot(state.values.data() + position, boxes[s], kept, slot);
+            slotBoxes_[static_cast<std::size_t>(filled_)] = kept.empty() ? IndexBox{} : toRegion(kept);
             ++filled_;
         }
-        position += count;
+        position += boxes[s].nodeCount() * static_cast<std::size_t>(nQuantities_);
     }
     committed_ = state.counters[7];
     staleBox_ = IndexBox{};
     std::fill(summedAt_.begin(), summedAt_.end(), -1);
     recomputeTotal(box());
+}
+
+void AveragingWindow::copySavedSlot(const double* saved, const IndexBox& savedBox, const IndexBox& kept,
+                                    std::vector<double>& slot) const
+{
+    // The saved slot's values cover savedBox (i fastest); this window keeps the part in its
+    // region, row by row.
+    if (kept.empty())
+    {
+        return;
+    }
+    const std::size_t q = static_cast<std::size_t>(nQuantities_);
+    const std::size_t rowLength = static_cast<std::size_t>(kept.hi[0] - kept.lo[0] + 1) * q;
+    for (int k = kept.lo[2]; k <= kept.hi[2]; ++k)
+    {
+        for (int j = kept.lo[1]; j <= kept.hi[1]; ++j)
+        {
+            const double* from = saved + flatIndexInBox(savedBox, kept.lo[0], j, k) * q;
+            std::copy(from, from + rowLength,
+                      slot.begin()
+                          + static_cast<std::ptrdiff_t>(flatIndexInBox(region_, kept.lo[0], j, k) * q));
+        }
+    }
 }
 
 } // namespace dropletFiber

@@ -44,7 +44,8 @@ namespace dropletFiber
 //              i fastest (only the touched box is stored).
 // A window of a block (not the whole grid) writes format version 2: the same, with the
 // block's lo x y z, hi x y z after the committed steps; slot boxes in grid indices.
-// It restores only a state of the same block.
+// It restores a state of the same block, or of a block holding it (the whole grid of a
+// serial run decomposed onto processors: each keeps its part).
 struct WindowState
 {
     std::vector<std::int64_t> counters;
@@ -90,7 +91,10 @@ private:
     // count; throws std::invalid_argument naming what does not fit.
     std::vector<IndexBox> savedSlotBoxes(const WindowState& state) const;
     // Checks the saved format, grid and block; the number of counters before the slot boxes.
-    std::size_t savedHeaderSize(const WindowState& state) const;
+    std::size_t savedHeaderSize(const WindowState& state, IndexBox& saved) const;
+    // The part `kept` of a saved slot whose values cover savedBox, into slot (this region).
+    void copySavedSlot(const double* saved, const IndexBox& savedBox, const IndexBox& kept,
+                       std::vector<double>& slot) const;
     bool boxHolds(const IndexBox& box, std::size_t node) const;
     template <class F>
     void forEachBoxRow(const IndexBox& box, F&& f) const;

@@ -552,7 +552,14 @@ void Foam::functionObjects::dropletFiberCollision::checkWindowBlock
         );
     const ::dropletFiber::IndexBox& b = grid_->ownedBox();
     const labelList block({b.lo[0], b.lo[1], b.lo[2], b.hi[0], b.hi[1], b.hi[2]});
-    if (savedBlock == block)
+    // The same block, or one holding it (a serial run's whole grid, decomposed:
+    // each processor takes its part)
+    const bool holdsBlock =
+        savedBlock.size() == 6
+     && savedBlock[0] <= b.lo[0] && savedBlock[1] <= b.lo[1]
+     && savedBlock[2] <= b.lo[2] && savedBlock[3] >= b.hi[0]
+     && savedBlock[4] >= b.hi[1] && savedBlock[5] >= b.hi[2];
+    if (savedBlock == block || holdsBlock)
     {
         return;
     }

@@ -379,3 +379,39 @@ TEST(GridBlocks, WindowStateRestoresOnTheSameBlockOnly)
     EXPECT_THROW(whole.restoreWindow(state), std::invalid_argument);
     EXPECT_EQ(whole.saveWindow().counters[0], 1); // the whole grid's format is unchanged
 }
+
+// A serial run's state decomposed onto processors: each block takes its part of the whole
+// grid's window, and its fields are the whole grid's at its nodes, to the bit (the same
+// slot values summed in the same order).
+TEST(GridBlocks, WholeGridWindowRestoresOntoEachBlock)
+{
+    const GridSpec spec = grid3D();
+    DensityGrid whole(spec, KernelSettings{}, 2);
+    for (int step = 0; step < 3; ++step)
+    {
+        for (const Parcel& parcel : randomParcels(spec, 30, 7 + step))
+        {
+            whole.deposit(parcel, 1e-3);
+        }
+        whole.commitStep();
+    }
+    const WindowState state = whole.saveWindow();
+    const GridPartition two = GridPartition::bisection(spec, 2);
+    for (int p = 0; p < 2; ++p)
+    {
+        DensityGrid block(spec, KernelSettings{}, 2, GridBlock{two.owned(p), two.storageBox(spec, p, 1)});
+        block.restoreWindow(state);
+        const IndexBox owned = two.owned(p);
+        for (int k = owned.lo[2]; k <= owned.hi[2]; ++k)
+            for (int j = owned.lo[1]; j <= owned.hi[1]; ++j)
+                for (int i = owned.lo[0]; i <= owned.hi[0]; ++i)
+                {
+                    const DropletFieldValue a = whole.nodeValue(i, j, k);
+                    const DropletFieldValue b = block.nodeValue(i, j, k);
+                    ASSERT_EQ(a.rho, b.rho);
+                    ASSERT_EQ(a.rMeanMass, b.rMeanMass);
+                    ASSERT_EQ(a.velocity, b.velocity);
+                }
+        EXPECT_EQ(block.committedSteps(), whole.committedSteps());
+    }
+}
