@@ -327,17 +327,7 @@ void Foam::dropletFiber::airSampler::askOtherProcessors
         }
     }
     PstreamBuffers questions(Pstream::commsTypes::nonBlocking);
-    forAll(where, proci)
-    {
-        if (where[proci].size())
-        {
-            UOPstream os(proci, questions);
-            os << where[proci];
-            statistics.countSent(where[proci].byteSize());
-        }
-    }
-    labelList recvSizes;
-    questions.finishedSends(recvSizes);
+    const labelList recvSizes = askProcessors(where, questions, statistics);
 
     // Answer the others' points in this processor's cells (found: 1)
     PstreamBuffers answers(Pstream::commsTypes::nonBlocking);

@@ -152,17 +152,7 @@ labelList newHolders
 )
 {
     PstreamBuffers questions(Pstream::commsTypes::nonBlocking);
-    forAll(pointOf, proci)
-    {
-        if (pointOf[proci].size())
-        {
-            UOPstream os(proci, questions);
-            os << pointOf[proci];
-            statistics.countSent(pointOf[proci].byteSize());
-        }
-    }
-    labelList recvSizes;
-    questions.finishedSends(recvSizes);
+    const labelList recvSizes = askProcessors(pointOf, questions, statistics);
 
     PstreamBuffers answers(Pstream::commsTypes::nonBlocking);
     forAll(recvSizes, proci)

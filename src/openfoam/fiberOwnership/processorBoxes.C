@@ -4,6 +4,7 @@
 
 #include "processorBoxes.H"
 #include "Pstream.H"
+#include "UOPstream.H"
 #include "ops.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -78,5 +79,27 @@ Foam::labelList Foam::dropletFiber::processorBoxes::lowestHolders
     }
     return holder;
 }
+
+Foam::labelList Foam::dropletFiber::askProcessors
+(
+    const List<DynamicList<point>>& pointsTo,
+    PstreamBuffers& questions,
+    parallelStatistics& statistics
+)
+{
+    forAll(pointsTo, proci)
+    {
+        if (pointsTo[proci].size())
+        {
+            UOPstream os(proci, questions);
+            os << pointsTo[proci];
+            statistics.countSent(pointsTo[proci].byteSize());
+        }
+    }
+    labelList recvSizes;
+    questions.finishedSends(recvSizes);
+    return recvSizes;
+}
+
 
 // ************************************************************************* //
