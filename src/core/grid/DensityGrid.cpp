@@ -618,12 +618,8 @@ std::array<int, 3> DensityGrid::nodeIndices(std::size_t node) const
              static_cast<int>(node / (nx * ny))}};
 }
 
-double* DensityGrid::stepValuesOf(std::size_t node)
+double* DensityGrid::stepValuesOfBlockNode(std::size_t node)
 {
-    if (storesWholeGrid_)
-    {
-        return step_.data() + node * nQuantities;
-    }
     const std::array<int, 3> n = nodeIndices(node);
     if (storage_.holds(n[0], n[1], n[2]))
     {

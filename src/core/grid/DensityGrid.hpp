@@ -284,7 +284,13 @@ private:
     // Step 7 for one node.
     void accumulate(std::size_t node, double weight, const std::array<double, nQuantities>& parcelTotals);
     // The step values of a node (global flat index): stored, or its overflow entry.
-    double* stepValuesOf(std::size_t node);
+    double* stepValuesOf(std::size_t node)
+    {
+        // Inline for the whole grid (a serial run): one call per weighted node
+        return storesWholeGrid_ ? step_.data() + node * nQuantities : stepValuesOfBlockNode(node);
+    }
+    // A block's storage, or its overflow list for nodes beyond it.
+    double* stepValuesOfBlockNode(std::size_t node);
     // Grid indices of a global flat node index.
     std::array<int, 3> nodeIndices(std::size_t node) const;
     // Where a touched box of nodes (grid indices) is stored: stepBox_ grows by it.
