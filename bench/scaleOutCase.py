@@ -144,17 +144,11 @@ def make_case(args):
 
 
 def read_table(path):
-    columns, rows = None, []
-    with open(path) as f:
-        for line in f:
-            if line.startswith("#"):
-                names = line[1:].split()
-                if names and names[0] == "Time":
-                    columns = names
-                continue
-            parts = line.split()
-            if parts and columns:
-                rows.append(dict(zip(columns, (float(p) for p in parts))))
+    # The function object's tables, read as bench/tutorialShare.py reads them
+    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+    from tutorialShare import read_table as read_tables
+
+    _, rows = read_tables([path])
     if not rows:
         raise SystemExit(f"scaleOutCase: no rows in {path}")
     return rows
