@@ -19,7 +19,7 @@
                            [--points 50] [--ranks 64 1024] [--box 1]
       Memory and bytes sent per step of the busiest processor, today (every
       processor holds the whole grid and every fiber): the formulas of
-      docs/performance.md, with Pstream's tree schedule (the one used: the
+      docs/scaleOut.md, with Pstream's tree schedule (the one used: the
       optimisation switch nProcsSimpleSum is 0). --box: the fraction of the
       grid inside the union of the boxes the processors' parcels touch.
 
