@@ -17,8 +17,8 @@
 
   scaleOutCase.py estimate [--nodes 250 250 150] [--window 10] [--fibers 5000]
                            [--points 50] [--ranks 64 1024] [--box 1]
-      Memory and bytes sent per step of the busiest processor, today (every
-      processor holds the whole grid and every fiber): the formulas of
+      Memory and bytes sent per step of the busiest processor with the grid and
+      fibers replicated (the design before grid blocks): the formulas of
       docs/scaleOut.md, with Pstream's tree schedule (the one used: the
       optimisation switch nProcsSimpleSum is 0). --box: the fraction of the
       grid inside the union of the boxes the processors' parcels touch.
