@@ -398,22 +398,15 @@ void AveragingWindow::copySavedSlot(const double* saved, const IndexBox& savedBo
 {
     // The saved slot's values cover savedBox (i fastest); this window keeps the part in its
     // region, row by row.
-    if (kept.empty())
-    {
-        return;
-    }
     const std::size_t q = static_cast<std::size_t>(nQuantities_);
-    const std::size_t rowLength = static_cast<std::size_t>(kept.hi[0] - kept.lo[0] + 1) * q;
-    for (int k = kept.lo[2]; k <= kept.hi[2]; ++k)
-    {
-        for (int j = kept.lo[1]; j <= kept.hi[1]; ++j)
+    forEachRowIn(
+        kept, region_,
+        [&](const IndexRow& row)
         {
-            const double* from = saved + flatIndexInBox(savedBox, kept.lo[0], j, k) * q;
-            std::copy(from, from + rowLength,
-                      slot.begin()
-                          + static_cast<std::ptrdiff_t>(flatIndexInBox(region_, kept.lo[0], j, k) * q));
-        }
-    }
+            const double* from = saved
+                + flatIndexInBox(savedBox, kept.lo[0], row.j + region_.lo[1], row.k + region_.lo[2]) * q;
+            std::copy(from, from + row.length * q, slot.begin() + static_cast<std::ptrdiff_t>(row.first * q));
+        });
 }
 
 } // namespace dropletFiber
