@@ -570,10 +570,14 @@ void Foam::functionObjects::dropletFiberCollision::takeBornFibers
 
 
 std::vector<Eigen::Vector3d>
-Foam::functionObjects::dropletFiberCollision::collisionSamplePoints() const
+Foam::functionObjects::dropletFiberCollision::collisionSamplePoints
+(
+    std::vector<int>& samplesPerSegment
+) const
 {
     const auto& spec = grid_->spec();
     std::vector<Eigen::Vector3d> points;
+    samplesPerSegment.clear();
     for (const ::dropletFiber::Fiber& fiber : held_.fibers)
     {
         const Eigen::Matrix3Xd& x = fiber.positions();
@@ -584,6 +588,7 @@ Foam::functionObjects::dropletFiberCollision::collisionSamplePoints() const
                 (
                     spec, x.col(j), x.col(j + 1), collision_
                 );
+            samplesPerSegment.push_back(samples);
             for (int s = 0; s < samples; ++s)
             {
                 points.push_back
@@ -603,8 +608,9 @@ Foam::functionObjects::dropletFiberCollision::collide(const scalar dt)
     // The sample points of the segments of the fibers held here, then their
     // field values from the grid's blocks (one exchange), then the masses:
     // the arithmetic of collisionMass
-    const auto& spec = grid_->spec();
-    const std::vector<Eigen::Vector3d> points = collisionSamplePoints();
+    std::vector<int> samplesPerSegment;
+    const std::vector<Eigen::Vector3d> points =
+        collisionSamplePoints(samplesPerSegment);
     const std::vector<::dropletFiber::DropletFieldValue> fields =
         blocks_->sample(*grid_, points, parallelStatistics_);
 
@@ -612,6 +618,7 @@ Foam::functionObjects::dropletFiberCollision::collide(const scalar dt)
     ::dropletFiber::CaptureSources capture(fibers.size());
     label samplesOutside = 0;
     std::size_t next = 0;
+    std::size_t segment = 0;
     for (std::size_t f = 0; f < fibers.size(); ++f)
     {
         const ::dropletFiber::Fiber& fiber = fibers[f];
@@ -621,11 +628,7 @@ Foam::functionObjects::dropletFiberCollision::collide(const scalar dt)
         for (Eigen::Index j = 0; j < fiber.segmentCount(); ++j)
         {
             const Eigen::Vector3d segmentVelocity = 0.5*(v.col(j) + v.col(j + 1));
-            const int samples =
-                ::dropletFiber::collisionSamples
-                (
-                    spec, x.col(j), x.col(j + 1), collision_
-                );
+            const int samples = samplesPerSegment[segment++];
             const ::dropletFiber::SegmentCollision c =
                 ::dropletFiber::collisionMassFromSamples
                 (
