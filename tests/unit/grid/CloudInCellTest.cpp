@@ -4,23 +4,17 @@
 // and mass (centre of mass of the node masses), and the grid without the option.
 #include "grid/DensityGrid.hpp"
 
+#include "TestGrids.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 using namespace dropletFiber;
+using test::grid2D;
 
 namespace
 {
-
-GridSpec grid2D()
-{
-    GridSpec s;
-    s.lower = Eigen::Vector3d(0.0, 0.0, 0.0);
-    s.upper = Eigen::Vector3d(0.03, 0.02, 1e-3);
-    s.nodes = {{31, 21, 1}}; // 1 mm spacing
-    return s;
-}
 
 Parcel stationary(double x, double y, double nParticle)
 {

@@ -6,12 +6,16 @@
 // never from the grid's own output.
 #include "grid/DensityGrid.hpp"
 
+#include "TestGrids.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
 
 using namespace dropletFiber;
+using test::grid2D;
+using test::grid3D;
 
 namespace
 {
@@ -22,24 +26,6 @@ double massOf(double n, double diameter, double rho)
 {
     const double r = 0.5 * diameter;
     return n * rho * 4.0 / 3.0 * pi * r * r * r;
-}
-
-GridSpec grid2D(int nx = 31, int ny = 21)
-{
-    GridSpec s;
-    s.lower = Eigen::Vector3d(0.0, 0.0, 0.0);
-    s.upper = Eigen::Vector3d(0.03, 0.02, 1e-3);
-    s.nodes = {{nx, ny, 1}};
-    return s;
-}
-
-GridSpec grid3D()
-{
-    GridSpec s;
-    s.lower = Eigen::Vector3d(0.0, 0.0, 0.0);
-    s.upper = Eigen::Vector3d(0.02, 0.015, 0.01);
-    s.nodes = {{21, 16, 11}};
-    return s;
 }
 
 double stepMass(const DensityGrid& grid)

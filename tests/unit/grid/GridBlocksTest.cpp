@@ -7,6 +7,8 @@
 #include "grid/GridPartition.hpp"
 #include "grid/MultilinearWeights.hpp"
 
+#include "TestGrids.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -14,27 +16,11 @@
 #include <random>
 
 using namespace dropletFiber;
+using test::grid2D;
+using test::grid3D;
 
 namespace
 {
-
-GridSpec grid3D()
-{
-    GridSpec spec;
-    spec.lower = Eigen::Vector3d(0.0, 0.0, 0.0);
-    spec.upper = Eigen::Vector3d(0.02, 0.015, 0.01);
-    spec.nodes = {{21, 16, 11}};
-    return spec;
-}
-
-GridSpec grid2D()
-{
-    GridSpec spec;
-    spec.lower = Eigen::Vector3d(0.0, 0.0, 0.0);
-    spec.upper = Eigen::Vector3d(0.03, 0.02, 0.001);
-    spec.nodes = {{31, 21, 1}};
-    return spec;
-}
 
 // Parcels anywhere in and a little beyond the box, wide and narrow kernels (the narrow
 // ones go to the cell corners), moving and still.
