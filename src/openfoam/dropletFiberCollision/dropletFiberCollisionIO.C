@@ -108,7 +108,7 @@ void Foam::functionObjects::dropletFiberCollision::reportStep
 
 void Foam::functionObjects::dropletFiberCollision::writeParallelStatistics()
 {
-    // The grid nodes this processor stores (its block and the halo) and the
+    // The grid nodes this processor stores (its block) and the
     // fibers it holds
     parallelStatistics_.holding
     (

@@ -48,29 +48,39 @@ std::vector<::dropletFiber::SubdomainBounds> subdomainBounds
 }
 
 
-//- A box as six values (an empty box: 0 0 0 -1 -1 -1)
-void appendBox(DynamicList<scalar>& out, const ::dropletFiber::IndexBox& box)
+//- Numbers per parcel sent: position, velocity, diameter, nParticle, rho
+constexpr Foam::label parcelValues = 9;
+
+
+void appendParcel
+(
+    DynamicList<scalar>& out,
+    const ::dropletFiber::Parcel& p
+)
 {
     for (int d = 0; d < 3; ++d)
     {
-        out.append(box.empty() ? 0 : box.lo[d]);
+        out.append(p.position[d]);
     }
     for (int d = 0; d < 3; ++d)
     {
-        out.append(box.empty() ? -1 : box.hi[d]);
+        out.append(p.velocity[d]);
     }
+    out.append(p.diameter);
+    out.append(p.nParticle);
+    out.append(p.rhoDroplet);
 }
 
 
-::dropletFiber::IndexBox readBox(const UList<scalar>& in)
+::dropletFiber::Parcel readParcel(const scalar* in)
 {
-    ::dropletFiber::IndexBox box;
-    for (int d = 0; d < 3; ++d)
-    {
-        box.lo[d] = int(in[d]);
-        box.hi[d] = int(in[3 + d]);
-    }
-    return box;
+    ::dropletFiber::Parcel p;
+    p.position = Eigen::Vector3d(in[0], in[1], in[2]);
+    p.velocity = Eigen::Vector3d(in[3], in[4], in[5]);
+    p.diameter = in[6];
+    p.nParticle = in[7];
+    p.rhoDroplet = in[8];
+    return p;
 }
 
 } // End anonymous namespace
@@ -81,21 +91,18 @@ void appendBox(DynamicList<scalar>& out, const ::dropletFiber::IndexBox& box)
 Foam::dropletFiber::gridBlocks::gridBlocks
 (
     const fvMesh& mesh,
-    const ::dropletFiber::GridSpec& spec,
-    const label halo
+    const ::dropletFiber::GridSpec& spec
 )
 :
     spec_(spec),
     bisected_(false),
-    halo_(halo),
     buffers_(Pstream::commsTypes::nonBlocking),
     outgoing_(Pstream::nProcs())
 {
     if (!Pstream::parRun())
     {
         partition_ = ::dropletFiber::GridPartition({spec.fullBox()});
-        storage_ = spec.fullBox();
-        shared_.assign(1, ::dropletFiber::IndexBox{});
+        owned_ = spec.fullBox();
         return;
     }
     const std::vector<::dropletFiber::SubdomainBounds> bounds =
@@ -127,12 +134,7 @@ Foam::dropletFiber::gridBlocks::gridBlocks
             );
         }
     }
-    storage_ = partition_.storageBox(spec, Pstream::myProcNo(), int(halo));
-    shared_.assign(Pstream::nProcs(), ::dropletFiber::IndexBox{});
-    for (const auto& n : partition_.neighbours(Pstream::myProcNo(), storage_))
-    {
-        shared_[n.processor] = n.shared;
-    }
+    owned_ = partition_.owned(Pstream::myProcNo());
 }
 
 
@@ -181,8 +183,18 @@ Foam::dropletFiber::gridBlocks::exchangeLists(parallelStatistics& statistics)
 
 ::dropletFiber::GridBlock Foam::dropletFiber::gridBlocks::block() const
 {
-    const label me = Pstream::parRun() ? Pstream::myProcNo() : 0;
-    return {partition_.owned(me), storage_};
+    return {owned_, owned_};
+}
+
+
+std::size_t Foam::dropletFiber::gridBlocks::largestBlockNodes() const
+{
+    std::size_t most = 0;
+    for (const auto& box : partition_.boxes())
+    {
+        most = std::max(most, box.nodeCount());
+    }
+    return most;
 }
 
 
@@ -207,13 +219,16 @@ void Foam::dropletFiber::gridBlocks::report(Ostream& os) const
              : "from the mesh decomposition (subdomain bounding boxes)"
            )
         << ", owned nodes per processor " << label(fewest) << " to "
-        << label(most) << ", halo " << halo_ << " nodes" << nl;
+        << label(most) << "; parcels whose kernels reach another block are"
+        << " deposited there too" << nl;
 }
 
 
-void Foam::dropletFiber::gridBlocks::sumStep
+void Foam::dropletFiber::gridBlocks::depositCopies
 (
     ::dropletFiber::DensityGrid& grid,
+    const std::vector<::dropletFiber::Parcel>& parcels,
+    const double dt,
     parallelStatistics& statistics
 )
 {
@@ -221,56 +236,31 @@ void Foam::dropletFiber::gridBlocks::sumStep
     {
         return;
     }
-    const label nQ = ::dropletFiber::nQuantities;
-    const std::vector<::dropletFiber::OverflowNode> overflow = grid.takeOverflow();
-    std::vector<std::vector<const ::dropletFiber::OverflowNode*>> overflowTo
-    (
-        Pstream::nProcs()
-    );
-    for (const auto& entry : overflow)
-    {
-        overflowTo[ownerOf(entry.node)].push_back(&entry);
-    }
-    // Per owner: the touched part of the halo it owns (box, values), then
-    // the overflow entries (node, values)
-    const ::dropletFiber::IndexBox touched = grid.stepBox();
     forAll(outgoing_, proci)
     {
-        DynamicList<scalar>& out = outgoing_[proci];
-        out.clear();
-        const ::dropletFiber::IndexBox box = shared_[proci].intersected(touched);
-        if (box.empty() && overflowTo[proci].empty())
+        outgoing_[proci].clear();
+    }
+    for (const auto& parcel : parcels)
+    {
+        const ::dropletFiber::IndexBox reached = grid.reachedNodes(parcel, dt);
+        if (reached.intersected(owned_) == reached)
         {
-            continue;
+            continue; // on this block only (or nowhere)
         }
-        appendBox(out, box);
-        const label start = out.size();
-        out.setSize(start + label(box.nodeCount())*nQ);
-        grid.packStep(box, out.data() + start);
-        for (const auto* entry : overflowTo[proci])
+        partition_.holdersOf(reached, Pstream::myProcNo(), holders_);
+        for (const int proci : holders_)
         {
-            out.append(scalar(entry->node));
-            for (label q = 0; q < nQ; ++q)
-            {
-                out.append(entry->values[q]);
-            }
+            appendParcel(outgoing_[proci], parcel);
         }
     }
     const List<List<scalar>> received = exchangeLists(statistics);
-    // Added in processor order: the same sums on every run
+    // In processor order: the same sums on every run
     forAll(received, proci)
     {
         const List<scalar>& in = received[proci];
-        if (in.empty())
+        for (label i = 0; i + parcelValues <= in.size(); i += parcelValues)
         {
-            continue;
-        }
-        const ::dropletFiber::IndexBox box = readBox(in);
-        const label haloValues = label(box.nodeCount())*nQ;
-        grid.addStep(box, in.cdata() + 6, std::size_t(haloValues));
-        for (label i = 6 + haloValues; i + nQ < in.size() + 1; i += nQ + 1)
-        {
-            grid.addToNode(std::size_t(in[i]), in.cdata() + i + 1);
+            grid.depositCopy(readParcel(in.cdata() + i), dt);
         }
     }
 }
