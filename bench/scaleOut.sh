@@ -14,7 +14,7 @@
 # bytes sent in the function object's exchanges in one step (the function
 # object's postProcessing/dropletFiber/0/parallelStatistics.dat); R peak resident
 # memory of a processor (GNU time); T the table's wallTimeDeposition (master:
-# gather, deposit, halo exchange) in ms, mean over the steps after the
+# gather, deposit, parcel copies to the blocks their kernels reach) in ms, mean over the steps after the
 # first 5. Runs with more processors than cores are oversubscribed: on a small
 # machine T then includes the waiting of processes sharing a core. A benchmark:
 # nothing is judged; compare figures only from the same session.
@@ -30,8 +30,8 @@
 # Needs the library built (./Allwmake), the OpenFOAM environment (loaded here with
 # bin/functions.sh: loadFoamEnvironment) and GNU time (/usr/bin/time, Debian
 # package time, in bin/installPrerequisites). Memory: a processor holds its block
-# of the grid (~630 bytes per owned node with averagingSteps 10, 56 per halo node)
-# and every fiber (4e6 nodes: ~2.7 GB serial, ~0.8 GB per processor on 4).
+# of the grid (~630 bytes per owned node with averagingSteps 10)
+# and the fibers it holds (4e6 nodes: ~2.7 GB serial, ~0.8 GB per processor on 4).
 #------------------------------------------------------------------------------
 set -euo pipefail
 here="$(cd "${0%/*}" && pwd)"

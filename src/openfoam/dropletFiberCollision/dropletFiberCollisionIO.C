@@ -129,6 +129,9 @@ void Foam::functionObjects::dropletFiberCollision::writeParallelStatistics()
         writeTabbed(os, "nodesHeldMax");
         writeTabbed(os, "fibersHeldMax");
         writeTabbed(os, "bytesSentMax");
+        writeTabbed(os, "bytesParcelsMax");
+        writeTabbed(os, "bytesGridQueriesMax");
+        writeTabbed(os, "bytesFibersMax");
         os  << endl;
     }
     OFstream& os = parallelStatisticsFile_();
@@ -136,6 +139,9 @@ void Foam::functionObjects::dropletFiberCollision::writeParallelStatistics()
     os  << tab << maxima.nodesHeld
         << tab << maxima.fibersHeld
         << tab << maxima.bytesSent
+        << tab << maxima.bytesParcels
+        << tab << maxima.bytesGridQueries
+        << tab << maxima.bytesFibers
         << endl;
 }
 

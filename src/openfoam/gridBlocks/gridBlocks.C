@@ -152,7 +152,11 @@ Foam::label Foam::dropletFiber::gridBlocks::ownerOf(const std::size_t node) cons
 
 
 Foam::List<Foam::List<Foam::scalar>>
-Foam::dropletFiber::gridBlocks::exchangeLists(parallelStatistics& statistics)
+Foam::dropletFiber::gridBlocks::exchangeLists
+(
+    parallelStatistics& statistics,
+    const parallelStatistics::traffic what
+)
 {
     buffers_.clear();
     forAll(outgoing_, proci)
@@ -161,7 +165,7 @@ Foam::dropletFiber::gridBlocks::exchangeLists(parallelStatistics& statistics)
         {
             UOPstream os(proci, buffers_);
             os  << static_cast<const UList<scalar>&>(outgoing_[proci]);
-            statistics.countSent(outgoing_[proci].byteSize());
+            statistics.countSent(outgoing_[proci].byteSize(), what);
         }
     }
     labelList recvSizes;
@@ -253,7 +257,8 @@ void Foam::dropletFiber::gridBlocks::depositCopies
             appendParcel(outgoing_[proci], parcel);
         }
     }
-    const List<List<scalar>> received = exchangeLists(statistics);
+    const List<List<scalar>> received =
+        exchangeLists(statistics, parallelStatistics::traffic::parcels);
     // In processor order: the same sums on every run
     forAll(received, proci)
     {
@@ -305,7 +310,8 @@ void Foam::dropletFiber::gridBlocks::windowTotals
     {
         return;
     }
-    const List<List<scalar>> requests = exchangeLists(statistics);
+    const List<List<scalar>> requests =
+        exchangeLists(statistics, parallelStatistics::traffic::gridQueries);
     forAll(requests, proci)
     {
         DynamicList<scalar>& out = outgoing_[proci];
@@ -316,7 +322,8 @@ void Foam::dropletFiber::gridBlocks::windowTotals
             grid.windowTotal(std::size_t(requests[proci][i]), out.data() + i*nQ);
         }
     }
-    const List<List<scalar>> answers = exchangeLists(statistics);
+    const List<List<scalar>> answers =
+        exchangeLists(statistics, parallelStatistics::traffic::gridQueries);
     forAll(answers, proci)
     {
         for (std::size_t i = 0; i < answerFor[proci].size(); ++i)
