@@ -141,6 +141,11 @@ def make_case(args):
     nodes = grid_nodes(args.nodes)
     make_mesh_3d(args.dir)
     set_controls(args.dir, nodes, args.steps)
+    if args.samples_per_segment > 0:
+        # Collision samples fixed per segment instead of one per grid spacing
+        edit(os.path.join(args.dir, "system", "controlDict"),
+             (r"sampling        integrated;",
+              f"sampling        integrated;\n            samplesPerSegment {args.samples_per_segment};"))
     set_decomposition(args.dir, args.ranks)
     print(nodes[0] * nodes[1] * nodes[2])
     return 0
@@ -255,6 +260,7 @@ def main():
     c.add_argument("--nodes", type=float, required=True)
     c.add_argument("--steps", type=int, required=True)
     c.add_argument("--ranks", type=int, required=True)
+    c.add_argument("--samples-per-segment", type=int, default=0)
     r = sub.add_parser("report")
     r.add_argument("dir")
     r.add_argument("--ranks", type=int, required=True)

@@ -930,30 +930,42 @@ DropletFieldValue DensityGrid::sample(const Eigen::Vector3d& point) const
         return outside;
     }
     const CornerWeights corners = multilinearWeights(spec_, point);
-    std::array<double, 8 * nQuantities> totals{};
+    std::array<double, nQuantities> sums{};
+    double total[nQuantities];
     for (int c = 0; c < corners.count; ++c)
     {
-        windowTotal(corners.node[static_cast<std::size_t>(c)], totals.data() + c * nQuantities);
+        // windowTotal throws for a corner owned elsewhere
+        windowTotal(corners.node[static_cast<std::size_t>(c)], total);
+        addCornerSum(corners, c, total, sums);
     }
-    return interpolated(corners, totals.data());
+    return fieldFromSums(sums);
 }
 
-DropletFieldValue DensityGrid::interpolated(const CornerWeights& corners, const double* cornerTotals) const
+void DensityGrid::addOwnedCornerSums(const CornerWeights& corners,
+                                     std::array<double, nQuantities>& sums) const
 {
-    std::array<double, nQuantities> sums{};
+    double total[nQuantities];
     for (int c = 0; c < corners.count; ++c)
     {
         const std::size_t node = corners.node[static_cast<std::size_t>(c)];
-        const double* total = cornerTotals + c * nQuantities;
-        const double w = corners.weight[static_cast<std::size_t>(c)];
-        // Densities are interpolated: the sums per whole cell (scale 1 inside the box).
-        const double scale = cellsPerNodeVolume(node);
-        for (int q = 0; q < nQuantities; ++q)
+        if (owns(node))
         {
-            sums[static_cast<std::size_t>(q)] += w * (scale * total[q]);
+            windowTotal(node, total);
+            addCornerSum(corners, c, total, sums);
         }
     }
-    return fieldFromSums(sums);
+}
+
+void DensityGrid::addCornerSum(const CornerWeights& corners, int c, const double* total,
+                               std::array<double, nQuantities>& sums) const
+{
+    // Densities are interpolated: the sums per whole cell (scale 1 inside the box).
+    const double w = corners.weight[static_cast<std::size_t>(c)];
+    const double scale = cellsPerNodeVolume(corners.node[static_cast<std::size_t>(c)]);
+    for (int q = 0; q < nQuantities; ++q)
+    {
+        sums[static_cast<std::size_t>(q)] += w * (scale * total[q]);
+    }
 }
 
 double DensityGrid::windowMassPerStep() const

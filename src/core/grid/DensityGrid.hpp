@@ -70,8 +70,8 @@
 // statistics; the others call depositCopy(), which does not. Summed over the blocks, each
 // node gets every parcel's weight once, the same weight the whole grid gives it. Then
 // commitStep(): the owned part of the step enters the window. Queries: windowTotal() at
-// an owned node; interpolated() forms sample()'s value from the totals of a point's
-// corners, wherever they were read. With the whole grid as the block (the default)
+// an owned node; addOwnedCornerSums() gives a block's share of sample()'s sums at a point,
+// and the shares of the blocks owning its corners add up to them. With the whole grid as the block (the default)
 // nothing changes.
 //
 // Restart: saveWindow()/restoreWindow() (AveragingWindow.hpp); the restored grid gives
@@ -198,9 +198,15 @@ public:
     // The window sums S_q of an owned node (global flat index), nQuantities values.
     void windowTotal(std::size_t node, double* sums) const;
     bool owns(std::size_t node) const;
-    // sample()'s value from the window sums of the corners (corner c's nQuantities values
-    // at cornerTotals + c * nQuantities): the same arithmetic, in the same order.
-    DropletFieldValue interpolated(const CornerWeights& corners, const double* cornerTotals) const;
+    // The sums sample() interpolates (per corner: weight x window sums per whole cell), over
+    // the corners owned here only, added to `sums` in corner order. Summed over the blocks
+    // that own a point's corners, they are sample()'s sums; fieldFromCornerSums() then gives
+    // its value (the whole grid: the same arithmetic, in the same order, to the bit).
+    void addOwnedCornerSums(const CornerWeights& corners, std::array<double, nQuantities>& sums) const;
+    DropletFieldValue fieldFromCornerSums(const std::array<double, nQuantities>& sums) const
+    {
+        return fieldFromSums(sums);
+    }
     // Window mass per step on the owned nodes: sum over them of S_mass / s (kg).
     double windowMassPerStep() const;
 
@@ -214,6 +220,9 @@ private:
         double fraction = 0.0;
     };
 
+    // Corner c's share of sample()'s sums: weight x window sums per whole cell.
+    void addCornerSum(const CornerWeights& corners, int c, const double* total,
+                      std::array<double, nQuantities>& sums) const;
     // Window sums S_q per whole cell volume (any weights) -> field values.
     DropletFieldValue fieldFromSums(const std::array<double, nQuantities>& sums) const;
     // Whole cells per dual-cell volume of the node: 1 inside, 2 on a face, 4 on an edge,

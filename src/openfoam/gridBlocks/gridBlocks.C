@@ -11,6 +11,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <algorithm>
 #include <unordered_map>
 
 // * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
@@ -348,6 +349,61 @@ void Foam::dropletFiber::gridBlocks::windowTotals
 }
 
 
+void Foam::dropletFiber::gridBlocks::askCornerOwners
+(
+    const ::dropletFiber::CornerWeights& corners,
+    const Eigen::Vector3d& point,
+    const std::size_t sample,
+    std::vector<std::vector<std::size_t>>& askedFor
+)
+{
+    label asked[8];
+    label nAsked = 0;
+    for (int c = 0; c < corners.count; ++c)
+    {
+        const label owner = ownerOf(corners.node[c]);
+        if (owner == Pstream::myProcNo() || std::count(asked, asked + nAsked, owner))
+        {
+            continue;
+        }
+        asked[nAsked++] = owner;
+        for (int d = 0; d < 3; ++d)
+        {
+            outgoing_[owner].append(point[d]);
+        }
+        askedFor[owner].push_back(sample);
+    }
+}
+
+
+void Foam::dropletFiber::gridBlocks::answerCornerSums
+(
+    const ::dropletFiber::DensityGrid& grid,
+    const List<List<scalar>>& questions
+)
+{
+    forAll(questions, proci)
+    {
+        DynamicList<scalar>& out = outgoing_[proci];
+        out.clear();
+        const List<scalar>& points = questions[proci];
+        for (label i = 0; i + 3 <= points.size(); i += 3)
+        {
+            const Eigen::Vector3d point(points[i], points[i + 1], points[i + 2]);
+            std::array<double, ::dropletFiber::nQuantities> sums{};
+            grid.addOwnedCornerSums
+            (
+                ::dropletFiber::multilinearWeights(spec_, point), sums
+            );
+            for (const double value : sums)
+            {
+                out.append(value);
+            }
+        }
+    }
+}
+
+
 std::vector<::dropletFiber::DropletFieldValue>
 Foam::dropletFiber::gridBlocks::sample
 (
@@ -357,36 +413,62 @@ Foam::dropletFiber::gridBlocks::sample
 )
 {
     const label nQ = ::dropletFiber::nQuantities;
-    // The corners of every point inside the box, in order
-    std::vector<std::size_t> corners;
-    for (const Eigen::Vector3d& point : points)
+    std::vector<std::array<double, ::dropletFiber::nQuantities>> sums
+    (
+        points.size()
+    );
+    std::vector<bool> inside(points.size(), false);
+    std::vector<std::vector<std::size_t>> askedFor(outgoing_.size());
+    forAll(outgoing_, proci)
     {
-        if (::dropletFiber::insideActiveBox(spec_, point))
-        {
-            const ::dropletFiber::CornerWeights w =
-                ::dropletFiber::multilinearWeights(spec_, point);
-            corners.insert(corners.end(), w.node.begin(), w.node.begin() + w.count);
-        }
+        outgoing_[proci].clear();
     }
-    std::vector<double> totals;
-    windowTotals(grid, corners, totals, statistics);
-
-    // The values, as DensityGrid::sample forms them
-    std::vector<::dropletFiber::DropletFieldValue> values(points.size());
-    std::size_t corner = 0;
+    // This block's corners here; the other owners of a point's corners are
+    // sent the point once each
     for (std::size_t p = 0; p < points.size(); ++p)
     {
-        if (!::dropletFiber::insideActiveBox(spec_, points[p]))
+        inside[p] = ::dropletFiber::insideActiveBox(spec_, points[p]);
+        if (!inside[p])
         {
-            values[p].inside = false;
             continue;
         }
-        const ::dropletFiber::CornerWeights w =
+        const ::dropletFiber::CornerWeights corners =
             ::dropletFiber::multilinearWeights(spec_, points[p]);
-        values[p] = grid.interpolated(w, totals.data() + corner*nQ);
-        corner += std::size_t(w.count);
+        grid.addOwnedCornerSums(corners, sums[p]);
+        if (Pstream::parRun())
+        {
+            askCornerOwners(corners, points[p], p, askedFor);
+        }
+    }
+    if (Pstream::parRun())
+    {
+        const auto what = parallelStatistics::traffic::gridQueries;
+        answerCornerSums(grid, exchangeLists(statistics, what));
+        // Their shares added in processor order: the same sums on every run
+        const List<List<scalar>> answers = exchangeLists(statistics, what);
+        forAll(answers, proci)
+        {
+            for (std::size_t i = 0; i < askedFor[proci].size(); ++i)
+            {
+                auto& to = sums[askedFor[proci][i]];
+                for (label q = 0; q < nQ; ++q)
+                {
+                    to[q] += answers[proci][label(i)*nQ + q];
+                }
+            }
+        }
+    }
+    std::vector<::dropletFiber::DropletFieldValue> values(points.size());
+    for (std::size_t p = 0; p < points.size(); ++p)
+    {
+        values[p].inside = false;
+        if (inside[p])
+        {
+            values[p] = grid.fieldFromCornerSums(sums[p]);
+        }
     }
     return values;
 }
+
 
 // ************************************************************************* //

@@ -95,11 +95,13 @@ Foam::dropletFiber::parallelStatistics::maxOverProcessors() const
 {
     // One gather to the master, which writes them (counts are exact in a
     // double)
-    List<scalar> values
-    ({
-        step_.nodesHeld, step_.fibersHeld, step_.bytesSent,
-        step_.bytesParcels, step_.bytesGridQueries, step_.bytesFibers
-    });
+    List<scalar> values(6);
+    values[0] = step_.nodesHeld;
+    values[1] = step_.fibersHeld;
+    values[2] = step_.bytesSent;
+    values[3] = step_.bytesParcels;
+    values[4] = step_.bytesGridQueries;
+    values[5] = step_.bytesFibers;
     Pstream::listCombineGather(values, maxEqOp<scalar>());
     figures maxima;
     maxima.nodesHeld = values[0];
