@@ -14,24 +14,27 @@
 # bytes sent in the function object's exchanges in one step (the function
 # object's postProcessing/dropletFiber/0/parallelStatistics.dat); R peak resident
 # memory of a processor (GNU time); T the table's wallTimeDeposition (master:
-# gather, deposit, halo exchange) in ms, mean over the steps after the
+# gather, deposit, parcel copies to the blocks their kernels reach) in ms, mean over the steps after the
 # first 5. Runs with more processors than cores are oversubscribed: on a small
 # machine T then includes the waiting of processes sharing a core. A benchmark:
 # nothing is judged; compare figures only from the same session.
 #
 # Usage: bench/scaleOut.sh [-nodes "1e5 1e6 4e6"] [-ranks "1 2 4"] [-steps 30]
-#                          [-tiny] [-keep DIR]
+#                          [-samplesPerSegment N] [-tiny] [-keep DIR]
 #   -nodes    grid sizes (about; the spacing is chosen to give them)
 #   -ranks    processor counts
 #   -steps    time steps per run (5e-4 s each)
+#   -samplesPerSegment N  collision samples per fiber segment (default: the
+#             tutorial's, one per grid spacing: the corner queries then grow as
+#             the spacing shrinks)
 #   -tiny     a check of the script: grid 1e4 nodes, 1 and 2 processors, 8 steps
 #   -keep DIR scratch directory, kept (default: a new mktemp -d directory,
 #             removed at the end)
 # Needs the library built (./Allwmake), the OpenFOAM environment (loaded here with
 # bin/functions.sh: loadFoamEnvironment) and GNU time (/usr/bin/time, Debian
 # package time, in bin/installPrerequisites). Memory: a processor holds its block
-# of the grid (~630 bytes per owned node with averagingSteps 10, 56 per halo node)
-# and every fiber (4e6 nodes: ~2.7 GB serial, ~0.8 GB per processor on 4).
+# of the grid (~630 bytes per owned node with averagingSteps 10)
+# and the fibers it holds (4e6 nodes: ~2.7 GB serial, ~0.8 GB per processor on 4).
 #------------------------------------------------------------------------------
 set -euo pipefail
 here="$(cd "${0%/*}" && pwd)"
@@ -39,16 +42,18 @@ root="$(cd "$here/.." && pwd)"
 nodesList="1e5 1e6 4e6"
 ranksList="1 2 4"
 steps=30
+samples=0
 scratch=""
 while [ $# -gt 0 ]; do
     case "$1" in
         -nodes) nodesList="$2"; shift ;;
         -ranks) ranksList="$2"; shift ;;
         -steps) steps="$2"; shift ;;
+        -samplesPerSegment) samples="$2"; shift ;;
         -tiny) nodesList="1e4"; ranksList="1 2"; steps=8 ;;
         -keep) scratch="$2"; shift ;;
         -h | -help)
-            sed -n '2,34p' "$0"
+            sed -n '2,38p' "$0"
             exit 0
             ;;
         *) echo "usage: $0 [-nodes LIST] [-ranks LIST] [-steps N] [-tiny] [-keep DIR]" >&2; exit 2 ;;
@@ -101,7 +106,7 @@ for nodes in $nodesList; do
         rm -rf "$dir"
         cp -r "$root/tutorials/channelSpray" "$dir"
         rm -rf "$dir"/processor* "$dir"/postProcessing "$dir"/log.* "$dir/system/controlDict.short"
-        total="$(python3 "$here/scaleOutCase.py" case "$dir" --nodes "$nodes" --steps "$steps" --ranks "$ranks")"
+        total="$(python3 "$here/scaleOutCase.py" case "$dir" --nodes "$nodes" --steps "$steps" --ranks "$ranks" --samples-per-segment "$samples")"
         start=$(date +%s)
         if ! runCase "$dir" "$ranks"; then
             echo "scaleOut: the run with $ranks processors and $total nodes failed: see $dir/log.*" >&2

@@ -9,7 +9,7 @@
       - the density grid over the whole channel with one spacing h chosen so
         that the grid has about N nodes;
       - FIBER_STREAMS injectors at a high rate (several hundred fibers within
-        the run), S steps of the tutorial's time step, no write time (no
+        the run) at three heights, so that fibers cross the processors' cuts, S steps of the tutorial's time step, no write time (no
         restart state, no VTK files: the bench measures the steps);
       - system/decomposeParDict for P subdomains (simple, split along the
         channel's length).
@@ -42,7 +42,7 @@ import sys
 LENGTH = (0.05, 0.15)  # the tutorial's channel, x and y [m]
 DEPTH = 0.02  # z [m]: 10 cells of 2 mm, like the tutorial's cells in x and y
 CELLS = (25, 75, 10)
-FIBER_STREAMS = 12  # 4 across the channel x 3 across the depth
+FIBER_STREAMS = 12  # 4 across the channel x 3 heights
 FIBER_RATE = 2400  # fibers per second per stream: ~430 fibers after 30 steps
 DELTA_T = 5e-4  # the tutorial's time step [s]
 
@@ -93,14 +93,17 @@ def make_mesh_3d(case):
 
 
 def fiber_injectors():
+    # Streams at three heights: the fibers fall ~3 cm in 30 steps, so those of the
+    # lower two heights cross the cuts between the processors' slabs (y = 3.75, 7.5,
+    # 11.25 cm on 4; 7.5 cm on 2) and each slab holds some of them
     lines = []
-    for i, x in enumerate((0.005, 0.015, 0.025, 0.035)):
-        for k, z in enumerate((0.25 * DEPTH, 0.5 * DEPTH, 0.75 * DEPTH)):
+    for i, x in enumerate((0.01, 0.02, 0.03, 0.04)):
+        for k, y in enumerate((0.147, 0.10, 0.06)):
             lines += [
                 f"                s{i}{k}",
                 "                {",
-                f"                    position    ({x} 0.147 {z});",
-                f"                    direction   (1 {0.3 * (k - 1)} {0.2 * (i % 2)});",
+                f"                    position    ({x} {y} {0.5 * DEPTH});",
+                f"                    direction   (1 0.3 {0.2 * (i % 2)});",
                 "                    velocity    (0 -2 0);",
                 "                    length      0.008;",
                 f"                    rate        {FIBER_RATE};",
@@ -138,6 +141,11 @@ def make_case(args):
     nodes = grid_nodes(args.nodes)
     make_mesh_3d(args.dir)
     set_controls(args.dir, nodes, args.steps)
+    if args.samples_per_segment > 0:
+        # Collision samples fixed per segment instead of one per grid spacing
+        edit(os.path.join(args.dir, "system", "controlDict"),
+             (r"sampling        integrated;",
+              f"sampling        integrated;\n            samplesPerSegment {args.samples_per_segment};"))
     set_decomposition(args.dir, args.ranks)
     print(nodes[0] * nodes[1] * nodes[2])
     return 0
@@ -176,6 +184,9 @@ def report(args):
         f" peakRssMaxMiB={max(rss_kib) / 1024:.0f}"
         f" bytesSentPerStepMax={max(r['bytesSentMax'] for r in statistics):.0f}"
         f" fibersHeldMax={max(r['fibersHeldMax'] for r in statistics):.0f}"
+        f" (bytes per step max: parcels={max(r['bytesParcelsMax'] for r in statistics):.0f}"
+        f" gridQueries={max(r['bytesGridQueriesMax'] for r in statistics):.0f}"
+        f" fibers={max(r['bytesFibersMax'] for r in statistics):.0f})"
         f" depositMsPerStep={deposit_ms:.1f}"
     )
     return 0
@@ -249,6 +260,7 @@ def main():
     c.add_argument("--nodes", type=float, required=True)
     c.add_argument("--steps", type=int, required=True)
     c.add_argument("--ranks", type=int, required=True)
+    c.add_argument("--samples-per-segment", type=int, default=0)
     r = sub.add_parser("report")
     r.add_argument("dir")
     r.add_argument("--ranks", type=int, required=True)

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 
 namespace dropletFiber
 {
@@ -341,30 +342,73 @@ void DensityGrid::deposit(const Parcel& parcel, double dt)
     depositWeighted(1.0 / omegaSum, totals, weightedBox);
 }
 
-bool DensityGrid::clipPath(const Parcel& parcel, double dt, double mass, ClippedPath& path)
+void DensityGrid::depositCopy(const Parcel& parcel, double dt)
 {
-    StepStatistics& stats = stepStatistics_;
+    // deposit() books into stepStatistics_: swapped, so that it books into the copies'
+    // statistics and the parcel's mass is counted once, by the block that holds it
+    std::swap(stepStatistics_, copyStatistics_);
+    try
+    {
+        deposit(parcel, dt);
+    }
+    catch (...)
+    {
+        std::swap(stepStatistics_, copyStatistics_);
+        throw;
+    }
+    std::swap(stepStatistics_, copyStatistics_);
+}
+
+IndexBox DensityGrid::reachedNodes(const Parcel& parcel, double dt) const
+{
+    ClippedPath path;
+    if (parcel.nParticle == 0.0 || parcel.diameter == 0.0 || !clippedPath(parcel, dt, path)
+        || !(path.fraction > 0.0))
+    {
+        return IndexBox{};
+    }
+    // The cloud-in-cell corners of every point of the path (unresolved kernels, fallback)
+    IndexBox reached = nodeBox(path, largestSpacing_).intersected(spec_.fullBox());
+    const ParcelKernel kernel(0.5 * parcel.diameter, parcel.nParticle, kernelSettings_, kernelDimension_);
+    if (kernel.width() < kernelSettings_.cloudInCellBelow * largestSpacing_)
+    {
+        return reached;
+    }
+    // The kernel's lattice box, its ghost nodes folded onto their mirror images
+    const IndexBox box = nodeBox(path, negligibleDistance(kernel, path.displacement.norm()));
+    if (box.empty())
+    {
+        return reached;
+    }
+    IndexBox folded;
+    for (int d = 0; d < 3; ++d)
+    {
+        std::tie(folded.lo[d], folded.hi[d]) = foldedRange(d, box.lo[d], box.hi[d]);
+    }
+    return reached.united(folded);
+}
+
+std::pair<int, int> DensityGrid::foldedRange(int d, int lo, int hi) const
+{
+    int first = spec_.nodes[d], last = -1;
+    for (int i = lo; i <= hi; ++i)
+    {
+        first = std::min(first, spec_.mirrorIndex(d, i));
+        last = std::max(last, spec_.mirrorIndex(d, i));
+    }
+    return {first, last};
+}
+
+bool DensityGrid::clippedPath(const Parcel& parcel, double dt, ClippedPath& path) const
+{
     const Eigen::Vector3d displacement = parcel.velocity * dt;
     const Eigen::Vector3d start = parcel.position - displacement;
     double t0 = 0.0, t1 = 1.0;
     if (!clipToBox(spec_, start, displacement, t0, t1))
     {
-        ++stats.parcelsOutside;
-        stats.massOutside += mass;
         return false;
     }
     path.fraction = (displacement.squaredNorm() > 0.0) ? t1 - t0 : 1.0;
-    if (path.fraction < 1.0)
-    {
-        ++stats.parcelsPartlyOutside;
-    }
-    const double massInside = path.fraction * mass;
-    stats.massDeposited += massInside;
-    stats.massOutside += mass - massInside;
-    if (!(path.fraction > 0.0))
-    {
-        return false; // touches the box in a single point: measure zero
-    }
     // Projected into the active directions (flat: on the node layer).
     path.start = start + t0 * displacement;
     path.displacement = (t1 - t0) * displacement;
@@ -377,6 +421,26 @@ bool DensityGrid::clipPath(const Parcel& parcel, double dt, double mass, Clipped
         }
     }
     return true;
+}
+
+bool DensityGrid::clipPath(const Parcel& parcel, double dt, double mass, ClippedPath& path)
+{
+    StepStatistics& stats = stepStatistics_;
+    if (!clippedPath(parcel, dt, path))
+    {
+        ++stats.parcelsOutside;
+        stats.massOutside += mass;
+        return false;
+    }
+    if (path.fraction < 1.0)
+    {
+        ++stats.parcelsPartlyOutside;
+    }
+    const double massInside = path.fraction * mass;
+    stats.massDeposited += massInside;
+    stats.massOutside += mass - massInside;
+    // A path touching the box in a single point: measure zero
+    return path.fraction > 0.0;
 }
 
 IndexBox DensityGrid::nodeBox(const ClippedPath& path, double reach) const
@@ -621,22 +685,19 @@ std::array<int, 3> DensityGrid::nodeIndices(std::size_t node) const
 double* DensityGrid::stepValuesOfBlockNode(std::size_t node)
 {
     const std::array<int, 3> n = nodeIndices(node);
-    if (storage_.holds(n[0], n[1], n[2]))
-    {
-        return step_.data() + flatIndexInBox(storage_, n[0], n[1], n[2]) * nQuantities;
-    }
-    const auto [entry, added] = overflowEntry_.try_emplace(node, overflow_.size());
-    if (added)
-    {
-        overflow_.push_back(OverflowNode{node, {}});
-    }
-    return overflow_[entry->second].values.data();
+    return storage_.holds(n[0], n[1], n[2])
+        ? step_.data() + flatIndexInBox(storage_, n[0], n[1], n[2]) * nQuantities
+        : nullptr;
 }
 
 void DensityGrid::accumulate(std::size_t node, double weight,
                              const std::array<double, nQuantities>& parcelTotals)
 {
     double* values = stepValuesOf(node);
+    if (values == nullptr)
+    {
+        return; // another block's node: that block deposits the parcel too
+    }
     for (int q = 0; q < nQuantities; ++q)
     {
         values[q] += weight * parcelTotals[static_cast<std::size_t>(q)];
@@ -709,11 +770,6 @@ void DensityGrid::depositPathWeights(const IndexBox& box, const std::array<doubl
 
 void DensityGrid::commitStep()
 {
-    if (!overflow_.empty())
-    {
-        throw std::logic_error(
-            "DensityGrid::commitStep: the step's overflow (nodes of other blocks) was not taken");
-    }
     window_.push(step_.data(), storage_, stepBox_.intersected(owned_));
     forEachRowIn(stepBox_, storage_,
                  [&](const IndexRow& row)
@@ -724,14 +780,7 @@ void DensityGrid::commitStep()
     stepBox_ = IndexBox{};
     lastStepStatistics_ = stepStatistics_;
     stepStatistics_ = StepStatistics{};
-}
-
-std::vector<OverflowNode> DensityGrid::takeOverflow()
-{
-    std::vector<OverflowNode> taken;
-    taken.swap(overflow_);
-    overflowEntry_.clear();
-    return taken;
+    copyStatistics_ = StepStatistics{};
 }
 
 namespace
@@ -787,48 +836,6 @@ void DensityGrid::unpackStep(const IndexBox& box, const double* values, std::siz
                      std::copy(first, first + row.length * nQuantities,
                                step_.data() + row.first * nQuantities);
                  });
-    stepBox_ = stepBox_.united(box);
-}
-
-void DensityGrid::addStep(const IndexBox& box, const double* values, std::size_t count)
-{
-    if (box.empty())
-    {
-        return;
-    }
-    checkStored(box, storage_, "addStep");
-    if (count != box.nodeCount() * nQuantities)
-    {
-        throw std::invalid_argument("DensityGrid::addStep: value count does not match the box");
-    }
-    forEachRowIn(box, storage_,
-                 [&](const IndexRow& row)
-                 {
-                     const double* from = values + row.offsetInBox * nQuantities;
-                     double* to = step_.data() + row.first * nQuantities;
-                     for (std::size_t n = 0; n < row.length * nQuantities; ++n)
-                     {
-                         to[n] += from[n];
-                     }
-                 });
-    stepBox_ = stepBox_.united(box);
-}
-
-void DensityGrid::addToNode(std::size_t node, const double* values)
-{
-    const std::array<int, 3> n = nodeIndices(node);
-    if (node >= spec_.nodeCount() || !storage_.holds(n[0], n[1], n[2]))
-    {
-        throw std::invalid_argument("DensityGrid::addToNode: node " + std::to_string(node)
-                                    + " is not stored here");
-    }
-    double* to = step_.data() + flatIndexInBox(storage_, n[0], n[1], n[2]) * nQuantities;
-    for (int q = 0; q < nQuantities; ++q)
-    {
-        to[q] += values[q];
-    }
-    IndexBox box;
-    box.lo = box.hi = n;
     stepBox_ = stepBox_.united(box);
 }
 
@@ -923,30 +930,42 @@ DropletFieldValue DensityGrid::sample(const Eigen::Vector3d& point) const
         return outside;
     }
     const CornerWeights corners = multilinearWeights(spec_, point);
-    std::array<double, 8 * nQuantities> totals{};
+    std::array<double, nQuantities> sums{};
+    double total[nQuantities];
     for (int c = 0; c < corners.count; ++c)
     {
-        windowTotal(corners.node[static_cast<std::size_t>(c)], totals.data() + c * nQuantities);
+        // windowTotal throws for a corner owned elsewhere
+        windowTotal(corners.node[static_cast<std::size_t>(c)], total);
+        addCornerSum(corners, c, total, sums);
     }
-    return interpolated(corners, totals.data());
+    return fieldFromSums(sums);
 }
 
-DropletFieldValue DensityGrid::interpolated(const CornerWeights& corners, const double* cornerTotals) const
+void DensityGrid::addOwnedCornerSums(const CornerWeights& corners,
+                                     std::array<double, nQuantities>& sums) const
 {
-    std::array<double, nQuantities> sums{};
+    double total[nQuantities];
     for (int c = 0; c < corners.count; ++c)
     {
         const std::size_t node = corners.node[static_cast<std::size_t>(c)];
-        const double* total = cornerTotals + c * nQuantities;
-        const double w = corners.weight[static_cast<std::size_t>(c)];
-        // Densities are interpolated: the sums per whole cell (scale 1 inside the box).
-        const double scale = cellsPerNodeVolume(node);
-        for (int q = 0; q < nQuantities; ++q)
+        if (owns(node))
         {
-            sums[static_cast<std::size_t>(q)] += w * (scale * total[q]);
+            windowTotal(node, total);
+            addCornerSum(corners, c, total, sums);
         }
     }
-    return fieldFromSums(sums);
+}
+
+void DensityGrid::addCornerSum(const CornerWeights& corners, int c, const double* total,
+                               std::array<double, nQuantities>& sums) const
+{
+    // Densities are interpolated: the sums per whole cell (scale 1 inside the box).
+    const double w = corners.weight[static_cast<std::size_t>(c)];
+    const double scale = cellsPerNodeVolume(corners.node[static_cast<std::size_t>(c)]);
+    for (int q = 0; q < nQuantities; ++q)
+    {
+        sums[static_cast<std::size_t>(q)] += w * (scale * total[q]);
+    }
 }
 
 double DensityGrid::windowMassPerStep() const

@@ -59,18 +59,20 @@
 // deposits need no folding (the corners of a point inside the box are nodes).
 //
 // Blocks (parallel runs, MPI done by the caller; docs/model.md sec. 4, grid blocks): a
-// grid may store a block of the global lattice only (GridBlock): the nodes it owns, where
-// its averaging window lives, and a storage box around them (owned plus a halo of guard
-// nodes) for the step's deposit. All lattice arithmetic (path clipping at the global box,
-// kernels, weights normalised over the global lattice, folding, node volumes) is that of
-// the whole grid; only storage and indexing are local, so a block deposits exactly what
-// the whole grid would at the same nodes. What a parcel gives nodes beyond the storage
-// box goes to an overflow list (global node index and the seven quantities). The caller
-// then sends the halo's step values (packStep) and the overflow (takeOverflow) to the
-// nodes' owners, who add them (addStep, addToNode), and calls commitStep(): the owned
-// part of the step enters the window. Queries: windowTotal() at an owned node;
-// interpolated() forms sample()'s value from the totals of a point's corners, wherever
-// they were read. With the whole grid as the block (the default) nothing changes.
+// grid may hold a block of the global lattice only (GridBlock): the nodes it owns, where
+// its averaging window lives, and the nodes it stores the step's deposit for (normally
+// the same box). All lattice arithmetic (path clipping at the global box, kernels,
+// weights normalised over the global lattice, folding, node volumes) is that of the whole
+// grid; only storage and indexing are local, so a block deposits exactly what the whole
+// grid would at the nodes it stores, and leaves the other nodes to the blocks that store
+// them. The caller gives every parcel to each block its deposit reaches (reachedNodes):
+// the block whose processor holds the parcel calls deposit(), which counts it in the step
+// statistics; the others call depositCopy(), which does not. Summed over the blocks, each
+// node gets every parcel's weight once, the same weight the whole grid gives it. Then
+// commitStep(): the owned part of the step enters the window. Queries: windowTotal() at
+// an owned node; addOwnedCornerSums() gives a block's share of sample()'s sums at a point,
+// and the shares of the blocks owning its corners add up to them. With the whole grid as the block (the default)
+// nothing changes.
 //
 // Restart: saveWindow()/restoreWindow() (AveragingWindow.hpp); the restored grid gives
 // bit-for-bit the same fields and the same results for later steps.
@@ -99,7 +101,6 @@
 
 #include <array>
 #include <cstddef>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -118,19 +119,11 @@ struct DropletFieldValue
 };
 
 // The part of the grid one DensityGrid holds: the nodes it owns (its averaging window)
-// and the nodes it stores the step's deposit for (owned plus halo), grid indices.
+// and the nodes it stores the step's deposit for (normally the owned nodes), grid indices.
 struct GridBlock
 {
     IndexBox owned;
     IndexBox storage;
-};
-
-// A node's step values that lie beyond the storage box (deposited by this grid, owned by
-// another): global flat node index and the seven quantities (GridQuantities layout).
-struct OverflowNode
-{
-    std::size_t node = 0;
-    std::array<double, nQuantities> values{};
 };
 
 class DensityGrid
@@ -151,11 +144,20 @@ public:
 
     // --- one time step ---------------------------------------------------------------
     void deposit(const Parcel& parcel, double dt);
+    // A parcel another block holds and deposits (see Blocks above): the same deposit onto
+    // the nodes stored here, counted in copyStatistics() instead of stepStatistics().
+    void depositCopy(const Parcel& parcel, double dt);
+    // The nodes a deposit of the parcel can give mass to (grid indices, a superset: the
+    // kernel's box folded at the faces, united with the cloud-in-cell corners of its path);
+    // empty when it gives none. The parcel must be valid (deposit() checks it first).
+    IndexBox reachedNodes(const Parcel& parcel, double dt) const;
     // Ends the step: the accumulator enters the window and is cleared; statistics move
     // to lastStepStatistics().
     void commitStep();
     const StepStatistics& stepStatistics() const { return stepStatistics_; }
     const StepStatistics& lastStepStatistics() const { return lastStepStatistics_; }
+    // What depositCopy() did this step (cleared by commitStep()).
+    const StepStatistics& copyStatistics() const { return copyStatistics_; }
 
     // --- step accumulator and the block's exchanges -------------------------------------
     const IndexBox& ownedBox() const { return owned_; }
@@ -176,15 +178,6 @@ public:
     // stepBox() united with box. Nodes outside the box are left as they are.
     void unpackStep(const IndexBox& box, const std::vector<double>& values);
     void unpackStep(const IndexBox& box, const double* values, std::size_t count);
-    // Adds the box's values (another block's deposit at nodes stored here) to the step.
-    void addStep(const IndexBox& box, const double* values, std::size_t count);
-    // Adds one node's seven values (an overflow entry of another block); the node must be
-    // stored here.
-    void addToNode(std::size_t node, const double* values);
-    // The step's values at nodes beyond the storage box, in the order first touched;
-    // moved out (commitStep() requires it to be empty: they belong to other blocks).
-    const std::vector<OverflowNode>& overflow() const { return overflow_; }
-    std::vector<OverflowNode> takeOverflow();
 
     // --- averaging window and fields ----------------------------------------------------
     int windowLength() const { return window_.length(); }
@@ -205,9 +198,15 @@ public:
     // The window sums S_q of an owned node (global flat index), nQuantities values.
     void windowTotal(std::size_t node, double* sums) const;
     bool owns(std::size_t node) const;
-    // sample()'s value from the window sums of the corners (corner c's nQuantities values
-    // at cornerTotals + c * nQuantities): the same arithmetic, in the same order.
-    DropletFieldValue interpolated(const CornerWeights& corners, const double* cornerTotals) const;
+    // The sums sample() interpolates (per corner: weight x window sums per whole cell), over
+    // the corners owned here only, added to `sums` in corner order. Summed over the blocks
+    // that own a point's corners, they are sample()'s sums; fieldFromCornerSums() then gives
+    // its value (the whole grid: the same arithmetic, in the same order, to the bit).
+    void addOwnedCornerSums(const CornerWeights& corners, std::array<double, nQuantities>& sums) const;
+    DropletFieldValue fieldFromCornerSums(const std::array<double, nQuantities>& sums) const
+    {
+        return fieldFromSums(sums);
+    }
     // Window mass per step on the owned nodes: sum over them of S_mass / s (kg).
     double windowMassPerStep() const;
 
@@ -221,6 +220,9 @@ private:
         double fraction = 0.0;
     };
 
+    // Corner c's share of sample()'s sums: weight x window sums per whole cell.
+    void addCornerSum(const CornerWeights& corners, int c, const double* total,
+                      std::array<double, nQuantities>& sums) const;
     // Window sums S_q per whole cell volume (any weights) -> field values.
     DropletFieldValue fieldFromSums(const std::array<double, nQuantities>& sums) const;
     // Whole cells per dual-cell volume of the node: 1 inside, 2 on a face, 4 on an edge,
@@ -237,6 +239,11 @@ private:
     // Steps 1-2: clips the parcel's path and books the mass outside the box; false when
     // nothing of the parcel is to be deposited.
     bool clipPath(const Parcel& parcel, double dt, double mass, ClippedPath& path);
+    // The clipping alone: false when the path misses the box.
+    bool clippedPath(const Parcel& parcel, double dt, ClippedPath& path) const;
+    // The lattice indices lo..hi of direction d folded onto the nodes: the range of their
+    // mirror images (GridSpec::mirrorIndex).
+    std::pair<int, int> foldedRange(int d, int lo, int hi) const;
     // Distance from the path beyond which a node's weight is below
     // KernelSettings::negligibleWeight times the parcel's largest (<= reach).
     double negligibleDistance(const ParcelKernel& kernel, double pathLength) const;
@@ -283,13 +290,13 @@ private:
     void depositPathWeights(const IndexBox& box, const std::array<double, nQuantities>& parcelTotals);
     // Step 7 for one node.
     void accumulate(std::size_t node, double weight, const std::array<double, nQuantities>& parcelTotals);
-    // The step values of a node (global flat index): stored, or its overflow entry.
+    // The step values of a node (global flat index); nullptr when not stored here.
     double* stepValuesOf(std::size_t node)
     {
         // Inline for the whole grid (a serial run): one call per weighted node
         return storesWholeGrid_ ? step_.data() + node * nQuantities : stepValuesOfBlockNode(node);
     }
-    // A block's storage, or its overflow list for nodes beyond it.
+    // A block's storage, or nullptr for nodes beyond it (other blocks deposit those).
     double* stepValuesOfBlockNode(std::size_t node);
     // Grid indices of a global flat node index.
     std::array<int, 3> nodeIndices(std::size_t node) const;
@@ -309,15 +316,14 @@ private:
     double halfCellDiagonal_ = 0.0;   // over the active directions (negligible weights)
     double nodeVolume_;               // of an interior node (whole cell)
     IndexBox owned_;                  // nodes owned: the window's region
-    IndexBox storage_;                // nodes stored for the step's deposit (owned plus halo)
+    IndexBox storage_;                // nodes stored for the step's deposit
     bool storesWholeGrid_;            // storage_ is the whole grid: flat node index = storage index
     bool ownsWholeGrid_;              // owned_ is the whole grid: flat node index = window index
     AveragingWindow window_;
     std::vector<double> step_;
     IndexBox stepBox_;
-    std::vector<OverflowNode> overflow_;
-    std::unordered_map<std::size_t, std::size_t> overflowEntry_; // node -> position in overflow_
     StepStatistics stepStatistics_;
+    StepStatistics copyStatistics_;
     StepStatistics lastStepStatistics_;
     std::vector<std::pair<std::size_t, double>> scratch_; // (node, omega) of the current parcel
     // Cloud-in-cell: weights of the current parcel's path summed per node of its box, for

@@ -158,37 +158,16 @@ int GridPartition::owner(int i, int j, int k) const
     return -1;
 }
 
-IndexBox GridPartition::storageBox(const GridSpec& spec, int processor, int halo) const
+void GridPartition::holdersOf(const IndexBox& box, int except, std::vector<int>& holders) const
 {
-    const IndexBox& own = owned(processor);
-    if (own.empty())
-    {
-        return IndexBox{};
-    }
-    IndexBox box = own;
-    for (int d = 0; d < 3; ++d)
-    {
-        if (!spec.flat(d))
-        {
-            box.lo[d] = std::max(0, own.lo[d] - halo);
-            box.hi[d] = std::min(spec.nodes[d] - 1, own.hi[d] + halo);
-        }
-    }
-    return box;
-}
-
-std::vector<BlockNeighbour> GridPartition::neighbours(int processor, const IndexBox& storage) const
-{
-    std::vector<BlockNeighbour> result;
+    holders.clear();
     for (int p = 0; p < processors(); ++p)
     {
-        const IndexBox shared = storage.intersected(owned(p));
-        if (p != processor && !shared.empty())
+        if (p != except && !box.intersected(owned(p)).empty())
         {
-            result.push_back({p, shared});
+            holders.push_back(p);
         }
     }
-    return result;
 }
 
 } // namespace dropletFiber

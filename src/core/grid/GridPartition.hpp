@@ -21,9 +21,8 @@
 // node counts in proportion to their processor counts (deterministic; correct, only the
 // blocks then match the processors' parcels less well: more traffic).
 //
-// Halo (storageBox): a processor stores its owned box grown by `halo` nodes in every
-// active direction, clipped to the grid. neighbours(): the other processors whose owned
-// boxes meet that storage box, with the shared nodes (the halo values they own).
+// holdersOf(): the processors whose owned nodes a box of nodes meets (the blocks a
+// parcel's deposit reaches, DensityGrid::reachedNodes).
 #pragma once
 
 #include "grid/GridSpec.hpp"
@@ -37,13 +36,6 @@ namespace dropletFiber
 
 // A subdomain's bounding box: min x y z, max x y z.
 using SubdomainBounds = std::array<double, 6>;
-
-// Another processor's owned nodes within this processor's storage box.
-struct BlockNeighbour
-{
-    int processor = 0;
-    IndexBox shared;
-};
 
 class GridPartition
 {
@@ -64,10 +56,9 @@ public:
     const std::vector<IndexBox>& boxes() const { return boxes_; }
     // The processor owning node (i, j, k); -1 when none does (not for a tiling partition).
     int owner(int i, int j, int k) const;
-    // The processor's owned box grown by halo nodes in the active directions, clipped.
-    IndexBox storageBox(const GridSpec& spec, int processor, int halo) const;
-    // The other processors whose owned nodes lie in `storage`, in processor order.
-    std::vector<BlockNeighbour> neighbours(int processor, const IndexBox& storage) const;
+    // The processors other than `except` whose owned nodes meet the box, in processor
+    // order (into holders, cleared first: the caller reuses it for every parcel).
+    void holdersOf(const IndexBox& box, int except, std::vector<int>& holders) const;
 
 private:
     std::vector<IndexBox> boxes_;

@@ -350,7 +350,10 @@ void Foam::dropletFiber::airSampler::askOtherProcessors
             }
             UOPstream os(proci, answers);
             os << answer;
-            statistics.countSent(answer.byteSize());
+            statistics.countSent
+            (
+                answer.byteSize(), parallelStatistics::traffic::fibers
+            );
         }
     }
     answers.finishedSends();

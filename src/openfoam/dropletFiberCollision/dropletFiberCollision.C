@@ -4,7 +4,8 @@
 Description
     Settings and the coupling step. Read execute() from top to bottom to
     follow one parcel's mass: gathered, deposited on the grid (in parallel:
-    on this processor's block, the halo's share sent to its owners),
+    on this processor's block, and by the processors whose blocks its
+    kernel reaches on theirs),
     averaged, turned into collision mass on fiber segments, and captured by
     the fibers.
 
@@ -125,7 +126,6 @@ void Foam::functionObjects::dropletFiberCollision::buildStatefulParts
     {
         injectors_.emplace_back(spec);
     }
-    checkMemory(dict);
     const dictionary& gridDict = dict.subOrEmptyDict("grid");
     blocks_.reset
     (
@@ -134,13 +134,12 @@ void Foam::functionObjects::dropletFiberCollision::buildStatefulParts
             gridDict,
             [this]()
             {
-                return new dropletFiber::gridBlocks
-                (
-                    mesh_, gridSettings_.spec, gridSettings_.halo
-                );
+                return new dropletFiber::gridBlocks(mesh_, gridSettings_.spec);
             }
         )
     );
+    // The blocks first: the memory check counts the largest block's nodes
+    checkMemory(dict);
     grid_.reset
     (
         dropletFiber::checkedCoreCall
@@ -172,7 +171,10 @@ void Foam::functionObjects::dropletFiberCollision::checkMemory
         specs.push_back(injector.spec());
     }
     const scalar deltaT = time_.deltaTValue();
-    memory_ = dropletFiber::estimateMemory(gridSettings_, specs, deltaT);
+    memory_ = dropletFiber::estimateMemory
+    (
+        gridSettings_, scalar(blocks_->largestBlockNodes()), specs, deltaT
+    );
     dropletFiber::checkMemory(dict, memory_, specs, deltaT);
 }
 
@@ -438,7 +440,7 @@ void Foam::functionObjects::dropletFiberCollision::gatherParcels()
 Foam::functionObjects::dropletFiberCollision::depositParcels(const scalar dt)
 {
     depositLocalParcels(dt);
-    blocks_->sumStep(*grid_, parallelStatistics_);
+    blocks_->depositCopies(*grid_, stepParcels_, dt, parallelStatistics_);
     const ::dropletFiber::StepStatistics local = grid_->stepStatistics();
     grid_->commitStep();
     const ::dropletFiber::StepStatistics stats = summedOverProcessors(local);
@@ -453,9 +455,10 @@ void Foam::functionObjects::dropletFiberCollision::depositLocalParcels
 )
 {
     ::dropletFiber::DensityGrid& grid = *grid_;
+    stepParcels_.clear();
     for (label i = 0; i < parcels_.size(); ++i)
     {
-        ::dropletFiber::Parcel p;
+        ::dropletFiber::Parcel& p = stepParcels_.emplace_back();
         p.position = dropletFiber::toEigen(parcels_.position[i]);
         p.velocity = dropletFiber::toEigen(parcels_.U[i]);
         p.diameter = parcels_.d[i];

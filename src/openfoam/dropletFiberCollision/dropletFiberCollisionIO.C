@@ -108,7 +108,7 @@ void Foam::functionObjects::dropletFiberCollision::reportStep
 
 void Foam::functionObjects::dropletFiberCollision::writeParallelStatistics()
 {
-    // The grid nodes this processor stores (its block and the halo) and the
+    // The grid nodes this processor stores (its block) and the
     // fibers it holds
     parallelStatistics_.holding
     (
@@ -129,6 +129,9 @@ void Foam::functionObjects::dropletFiberCollision::writeParallelStatistics()
         writeTabbed(os, "nodesHeldMax");
         writeTabbed(os, "fibersHeldMax");
         writeTabbed(os, "bytesSentMax");
+        writeTabbed(os, "bytesParcelsMax");
+        writeTabbed(os, "bytesGridQueriesMax");
+        writeTabbed(os, "bytesFibersMax");
         os  << endl;
     }
     OFstream& os = parallelStatisticsFile_();
@@ -136,6 +139,9 @@ void Foam::functionObjects::dropletFiberCollision::writeParallelStatistics()
     os  << tab << maxima.nodesHeld
         << tab << maxima.fibersHeld
         << tab << maxima.bytesSent
+        << tab << maxima.bytesParcels
+        << tab << maxima.bytesGridQueries
+        << tab << maxima.bytesFibers
         << endl;
 }
 

@@ -18,6 +18,11 @@
 namespace
 {
 
+//- What the fibers' exchanges are counted as
+constexpr auto fiberTraffic =
+    Foam::dropletFiber::parallelStatistics::traffic::fibers;
+
+
 using namespace Foam;
 
 template<class EigenType>
@@ -168,7 +173,10 @@ labelList newHolders
             }
             UOPstream os(proci, answers);
             os << held;
-            statistics.countSent(held.byteSize());
+            statistics.countSent
+            (
+                held.byteSize(), fiberTraffic
+            );
         }
     }
     answers.finishedSends();
@@ -226,9 +234,16 @@ void sendFibers
             ids.append(held.id[k]);
             origins.append(held.origin[k]);
             states.append(packState(held.fibers[k].state()));
-            statistics.countSent(states.last().byteSize() + origins.last().size());
+            statistics.countSent
+            (
+                states.last().byteSize() + origins.last().size(),
+                fiberTraffic
+            );
         }
-        statistics.countSent(ids.byteSize());
+        statistics.countSent
+        (
+            ids.byteSize(), fiberTraffic
+        );
         UOPstream os(proci, parcelsOfFibers);
         os << ids << origins << states;
     }
@@ -312,7 +327,10 @@ void Foam::dropletFiber::fiberOwnership::keepBornHere
         first[k] = firstPoint(held.fibers[k]);
     }
     const labelList holder = boxes.lowestHolders(first, Pstream::masterNo());
-    statistics.countCombineGatherScatter(holder.byteSize());
+    statistics.countCombineGatherScatter
+    (
+        holder.byteSize(), fiberTraffic
+    );
     held.keepIf
     (
         [&holder](std::size_t k)

@@ -93,7 +93,10 @@ Foam::labelList Foam::dropletFiber::askProcessors
         {
             UOPstream os(proci, questions);
             os << pointsTo[proci];
-            statistics.countSent(pointsTo[proci].byteSize());
+            statistics.countSent
+            (
+                pointsTo[proci].byteSize(), parallelStatistics::traffic::fibers
+            );
         }
     }
     labelList recvSizes;

@@ -11,6 +11,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <algorithm>
 #include <unordered_map>
 
 // * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
@@ -48,29 +49,39 @@ std::vector<::dropletFiber::SubdomainBounds> subdomainBounds
 }
 
 
-//- A box as six values (an empty box: 0 0 0 -1 -1 -1)
-void appendBox(DynamicList<scalar>& out, const ::dropletFiber::IndexBox& box)
+//- Numbers per parcel sent: position, velocity, diameter, nParticle, rho
+constexpr Foam::label parcelValues = 9;
+
+
+void appendParcel
+(
+    DynamicList<scalar>& out,
+    const ::dropletFiber::Parcel& p
+)
 {
     for (int d = 0; d < 3; ++d)
     {
-        out.append(box.empty() ? 0 : box.lo[d]);
+        out.append(p.position[d]);
     }
     for (int d = 0; d < 3; ++d)
     {
-        out.append(box.empty() ? -1 : box.hi[d]);
+        out.append(p.velocity[d]);
     }
+    out.append(p.diameter);
+    out.append(p.nParticle);
+    out.append(p.rhoDroplet);
 }
 
 
-::dropletFiber::IndexBox readBox(const UList<scalar>& in)
+::dropletFiber::Parcel readParcel(const scalar* in)
 {
-    ::dropletFiber::IndexBox box;
-    for (int d = 0; d < 3; ++d)
-    {
-        box.lo[d] = int(in[d]);
-        box.hi[d] = int(in[3 + d]);
-    }
-    return box;
+    ::dropletFiber::Parcel p;
+    p.position = Eigen::Vector3d(in[0], in[1], in[2]);
+    p.velocity = Eigen::Vector3d(in[3], in[4], in[5]);
+    p.diameter = in[6];
+    p.nParticle = in[7];
+    p.rhoDroplet = in[8];
+    return p;
 }
 
 } // End anonymous namespace
@@ -81,21 +92,18 @@ void appendBox(DynamicList<scalar>& out, const ::dropletFiber::IndexBox& box)
 Foam::dropletFiber::gridBlocks::gridBlocks
 (
     const fvMesh& mesh,
-    const ::dropletFiber::GridSpec& spec,
-    const label halo
+    const ::dropletFiber::GridSpec& spec
 )
 :
     spec_(spec),
     bisected_(false),
-    halo_(halo),
     buffers_(Pstream::commsTypes::nonBlocking),
     outgoing_(Pstream::nProcs())
 {
     if (!Pstream::parRun())
     {
         partition_ = ::dropletFiber::GridPartition({spec.fullBox()});
-        storage_ = spec.fullBox();
-        shared_.assign(1, ::dropletFiber::IndexBox{});
+        owned_ = spec.fullBox();
         return;
     }
     const std::vector<::dropletFiber::SubdomainBounds> bounds =
@@ -127,12 +135,7 @@ Foam::dropletFiber::gridBlocks::gridBlocks
             );
         }
     }
-    storage_ = partition_.storageBox(spec, Pstream::myProcNo(), int(halo));
-    shared_.assign(Pstream::nProcs(), ::dropletFiber::IndexBox{});
-    for (const auto& n : partition_.neighbours(Pstream::myProcNo(), storage_))
-    {
-        shared_[n.processor] = n.shared;
-    }
+    owned_ = partition_.owned(Pstream::myProcNo());
 }
 
 
@@ -150,7 +153,11 @@ Foam::label Foam::dropletFiber::gridBlocks::ownerOf(const std::size_t node) cons
 
 
 Foam::List<Foam::List<Foam::scalar>>
-Foam::dropletFiber::gridBlocks::exchangeLists(parallelStatistics& statistics)
+Foam::dropletFiber::gridBlocks::exchangeLists
+(
+    parallelStatistics& statistics,
+    const parallelStatistics::traffic what
+)
 {
     buffers_.clear();
     forAll(outgoing_, proci)
@@ -159,7 +166,7 @@ Foam::dropletFiber::gridBlocks::exchangeLists(parallelStatistics& statistics)
         {
             UOPstream os(proci, buffers_);
             os  << static_cast<const UList<scalar>&>(outgoing_[proci]);
-            statistics.countSent(outgoing_[proci].byteSize());
+            statistics.countSent(outgoing_[proci].byteSize(), what);
         }
     }
     labelList recvSizes;
@@ -181,8 +188,18 @@ Foam::dropletFiber::gridBlocks::exchangeLists(parallelStatistics& statistics)
 
 ::dropletFiber::GridBlock Foam::dropletFiber::gridBlocks::block() const
 {
-    const label me = Pstream::parRun() ? Pstream::myProcNo() : 0;
-    return {partition_.owned(me), storage_};
+    return {owned_, owned_};
+}
+
+
+std::size_t Foam::dropletFiber::gridBlocks::largestBlockNodes() const
+{
+    std::size_t most = 0;
+    for (const auto& box : partition_.boxes())
+    {
+        most = std::max(most, box.nodeCount());
+    }
+    return most;
 }
 
 
@@ -207,13 +224,16 @@ void Foam::dropletFiber::gridBlocks::report(Ostream& os) const
              : "from the mesh decomposition (subdomain bounding boxes)"
            )
         << ", owned nodes per processor " << label(fewest) << " to "
-        << label(most) << ", halo " << halo_ << " nodes" << nl;
+        << label(most) << "; parcels whose kernels reach another block are"
+        << " deposited there too" << nl;
 }
 
 
-void Foam::dropletFiber::gridBlocks::sumStep
+void Foam::dropletFiber::gridBlocks::depositCopies
 (
     ::dropletFiber::DensityGrid& grid,
+    const std::vector<::dropletFiber::Parcel>& parcels,
+    const double dt,
     parallelStatistics& statistics
 )
 {
@@ -221,56 +241,32 @@ void Foam::dropletFiber::gridBlocks::sumStep
     {
         return;
     }
-    const label nQ = ::dropletFiber::nQuantities;
-    const std::vector<::dropletFiber::OverflowNode> overflow = grid.takeOverflow();
-    std::vector<std::vector<const ::dropletFiber::OverflowNode*>> overflowTo
-    (
-        Pstream::nProcs()
-    );
-    for (const auto& entry : overflow)
-    {
-        overflowTo[ownerOf(entry.node)].push_back(&entry);
-    }
-    // Per owner: the touched part of the halo it owns (box, values), then
-    // the overflow entries (node, values)
-    const ::dropletFiber::IndexBox touched = grid.stepBox();
     forAll(outgoing_, proci)
     {
-        DynamicList<scalar>& out = outgoing_[proci];
-        out.clear();
-        const ::dropletFiber::IndexBox box = shared_[proci].intersected(touched);
-        if (box.empty() && overflowTo[proci].empty())
+        outgoing_[proci].clear();
+    }
+    for (const auto& parcel : parcels)
+    {
+        const ::dropletFiber::IndexBox reached = grid.reachedNodes(parcel, dt);
+        if (reached.intersected(owned_) == reached)
         {
-            continue;
+            continue; // on this block only (or nowhere)
         }
-        appendBox(out, box);
-        const label start = out.size();
-        out.setSize(start + label(box.nodeCount())*nQ);
-        grid.packStep(box, out.data() + start);
-        for (const auto* entry : overflowTo[proci])
+        partition_.holdersOf(reached, Pstream::myProcNo(), holders_);
+        for (const int proci : holders_)
         {
-            out.append(scalar(entry->node));
-            for (label q = 0; q < nQ; ++q)
-            {
-                out.append(entry->values[q]);
-            }
+            appendParcel(outgoing_[proci], parcel);
         }
     }
-    const List<List<scalar>> received = exchangeLists(statistics);
-    // Added in processor order: the same sums on every run
+    const List<List<scalar>> received =
+        exchangeLists(statistics, parallelStatistics::traffic::parcels);
+    // In processor order: the same sums on every run
     forAll(received, proci)
     {
         const List<scalar>& in = received[proci];
-        if (in.empty())
+        for (label i = 0; i + parcelValues <= in.size(); i += parcelValues)
         {
-            continue;
-        }
-        const ::dropletFiber::IndexBox box = readBox(in);
-        const label haloValues = label(box.nodeCount())*nQ;
-        grid.addStep(box, in.cdata() + 6, std::size_t(haloValues));
-        for (label i = 6 + haloValues; i + nQ < in.size() + 1; i += nQ + 1)
-        {
-            grid.addToNode(std::size_t(in[i]), in.cdata() + i + 1);
+            grid.depositCopy(readParcel(in.cdata() + i), dt);
         }
     }
 }
@@ -315,7 +311,8 @@ void Foam::dropletFiber::gridBlocks::windowTotals
     {
         return;
     }
-    const List<List<scalar>> requests = exchangeLists(statistics);
+    const List<List<scalar>> requests =
+        exchangeLists(statistics, parallelStatistics::traffic::gridQueries);
     forAll(requests, proci)
     {
         DynamicList<scalar>& out = outgoing_[proci];
@@ -326,7 +323,8 @@ void Foam::dropletFiber::gridBlocks::windowTotals
             grid.windowTotal(std::size_t(requests[proci][i]), out.data() + i*nQ);
         }
     }
-    const List<List<scalar>> answers = exchangeLists(statistics);
+    const List<List<scalar>> answers =
+        exchangeLists(statistics, parallelStatistics::traffic::gridQueries);
     forAll(answers, proci)
     {
         for (std::size_t i = 0; i < answerFor[proci].size(); ++i)
@@ -351,6 +349,61 @@ void Foam::dropletFiber::gridBlocks::windowTotals
 }
 
 
+void Foam::dropletFiber::gridBlocks::askCornerOwners
+(
+    const ::dropletFiber::CornerWeights& corners,
+    const Eigen::Vector3d& point,
+    const std::size_t sample,
+    std::vector<std::vector<std::size_t>>& askedFor
+)
+{
+    label asked[8];
+    label nAsked = 0;
+    for (int c = 0; c < corners.count; ++c)
+    {
+        const label owner = ownerOf(corners.node[c]);
+        if (owner == Pstream::myProcNo() || std::count(asked, asked + nAsked, owner))
+        {
+            continue;
+        }
+        asked[nAsked++] = owner;
+        for (int d = 0; d < 3; ++d)
+        {
+            outgoing_[owner].append(point[d]);
+        }
+        askedFor[owner].push_back(sample);
+    }
+}
+
+
+void Foam::dropletFiber::gridBlocks::answerCornerSums
+(
+    const ::dropletFiber::DensityGrid& grid,
+    const List<List<scalar>>& questions
+)
+{
+    forAll(questions, proci)
+    {
+        DynamicList<scalar>& out = outgoing_[proci];
+        out.clear();
+        const List<scalar>& points = questions[proci];
+        for (label i = 0; i + 3 <= points.size(); i += 3)
+        {
+            const Eigen::Vector3d point(points[i], points[i + 1], points[i + 2]);
+            std::array<double, ::dropletFiber::nQuantities> sums{};
+            grid.addOwnedCornerSums
+            (
+                ::dropletFiber::multilinearWeights(spec_, point), sums
+            );
+            for (const double value : sums)
+            {
+                out.append(value);
+            }
+        }
+    }
+}
+
+
 std::vector<::dropletFiber::DropletFieldValue>
 Foam::dropletFiber::gridBlocks::sample
 (
@@ -360,36 +413,62 @@ Foam::dropletFiber::gridBlocks::sample
 )
 {
     const label nQ = ::dropletFiber::nQuantities;
-    // The corners of every point inside the box, in order
-    std::vector<std::size_t> corners;
-    for (const Eigen::Vector3d& point : points)
+    std::vector<std::array<double, ::dropletFiber::nQuantities>> sums
+    (
+        points.size()
+    );
+    std::vector<bool> inside(points.size(), false);
+    std::vector<std::vector<std::size_t>> askedFor(outgoing_.size());
+    forAll(outgoing_, proci)
     {
-        if (::dropletFiber::insideActiveBox(spec_, point))
-        {
-            const ::dropletFiber::CornerWeights w =
-                ::dropletFiber::multilinearWeights(spec_, point);
-            corners.insert(corners.end(), w.node.begin(), w.node.begin() + w.count);
-        }
+        outgoing_[proci].clear();
     }
-    std::vector<double> totals;
-    windowTotals(grid, corners, totals, statistics);
-
-    // The values, as DensityGrid::sample forms them
-    std::vector<::dropletFiber::DropletFieldValue> values(points.size());
-    std::size_t corner = 0;
+    // This block's corners here; the other owners of a point's corners are
+    // sent the point once each
     for (std::size_t p = 0; p < points.size(); ++p)
     {
-        if (!::dropletFiber::insideActiveBox(spec_, points[p]))
+        inside[p] = ::dropletFiber::insideActiveBox(spec_, points[p]);
+        if (!inside[p])
         {
-            values[p].inside = false;
             continue;
         }
-        const ::dropletFiber::CornerWeights w =
+        const ::dropletFiber::CornerWeights corners =
             ::dropletFiber::multilinearWeights(spec_, points[p]);
-        values[p] = grid.interpolated(w, totals.data() + corner*nQ);
-        corner += std::size_t(w.count);
+        grid.addOwnedCornerSums(corners, sums[p]);
+        if (Pstream::parRun())
+        {
+            askCornerOwners(corners, points[p], p, askedFor);
+        }
+    }
+    if (Pstream::parRun())
+    {
+        const auto what = parallelStatistics::traffic::gridQueries;
+        answerCornerSums(grid, exchangeLists(statistics, what));
+        // Their shares added in processor order: the same sums on every run
+        const List<List<scalar>> answers = exchangeLists(statistics, what);
+        forAll(answers, proci)
+        {
+            for (std::size_t i = 0; i < askedFor[proci].size(); ++i)
+            {
+                auto& to = sums[askedFor[proci][i]];
+                for (label q = 0; q < nQ; ++q)
+                {
+                    to[q] += answers[proci][label(i)*nQ + q];
+                }
+            }
+        }
+    }
+    std::vector<::dropletFiber::DropletFieldValue> values(points.size());
+    for (std::size_t p = 0; p < points.size(); ++p)
+    {
+        values[p].inside = false;
+        if (inside[p])
+        {
+            values[p] = grid.fieldFromCornerSums(sums[p]);
+        }
     }
     return values;
 }
+
 
 // ************************************************************************* //

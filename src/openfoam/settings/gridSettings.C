@@ -27,31 +27,8 @@ const wordList gridKeys
 {
     "lower", "upper", "nodes", "spacing", "averagingSteps",
     "beta", "rMaxCap", "cloudInCellBelow", "negligibleWeight", "vectorised",
-    "dimension", "radiusAverage", "maxMemory", "halo"
+    "dimension", "radiusAverage", "maxMemory"
 };
-
-
-//- Halo width in nodes: the entry, else from rMaxCap (a capped kernel's reach
-//  plus one node for the path's share of a step), else 2 nodes
-Foam::label readHalo
-(
-    const dictionary& gridDict,
-    const ::dropletFiber::GridSpec& spec,
-    const scalar rMaxCap
-)
-{
-    label automatic = 2;
-    if (rMaxCap > 0)
-    {
-        scalar smallest = VGREAT;
-        for (int d = 0; d < 3; ++d)
-        {
-            smallest = spec.flat(d) ? smallest : min(smallest, spec.spacing(d));
-        }
-        automatic = label(min(scalar(100000), std::ceil(rMaxCap/smallest) + 1));
-    }
-    return Foam::dropletFiber::getLabelInRange(gridDict, "halo", automatic, 0, 100000);
-}
 
 
 //- The grid's lower and upper bounds: the entries, else the mesh's bounds
@@ -179,7 +156,6 @@ Foam::dropletFiber::gridSettings Foam::dropletFiber::readGridSettings
     checkedCoreCall(gridDict, [&s]() { s.spec.validate(); });
 
     s.kernel = readKernelSettings(gridDict);
-    s.halo = readHalo(gridDict, s.spec, s.kernel.rMaxCap);
 
     // --- Entries not of the grid's state: a run-time edit is not compared
     // by checkGridUnchanged (the memory check is made once, at the start)
@@ -268,11 +244,6 @@ void Foam::dropletFiber::checkGridUnchanged
         gridDict, "averagingSteps",
         running.averagingSteps, edited.averagingSteps,
         "The averaging window is sized to it"
-    );
-    checkUnchanged
-    (
-        gridDict, "halo", running.halo, edited.halo,
-        "The processors' blocks of the grid are stored with it"
     );
 
     const char* kernel = "The grid is built with its deposition kernel";

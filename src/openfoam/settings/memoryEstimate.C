@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "memoryEstimate.H"
+#include "OStringStream.H"
 #include "OSspecific.H"
 #include "Pstream.H"
 #include "PstreamReduceOps.H"
@@ -136,8 +137,8 @@ void Foam::dropletFiber::checkGridSize
       + gridTransientBytes(total, averagingSteps);
     FatalIOErrorInFunction(gridDict)
         << describeNodes(gridDict, nodes, total).c_str() << ": the grid would"
-        << " need an estimated " << inMB(bytes).c_str() << " on every"
-        << " processor (averagingSteps " << averagingSteps << ")." << nl
+        << " need an estimated " << inMB(bytes).c_str() << " in all"
+        << " (averagingSteps " << averagingSteps << ")." << nl
         << "    Allowed are at most " << ::dropletFiber::GridSpec::maxNodes
         << " nodes: a coarser '" << nodesEntry(gridDict) << "'."
         << exit(FatalIOError);
@@ -155,9 +156,33 @@ Foam::scalar Foam::dropletFiber::availableMemoryPerProcessor()
 }
 
 
+namespace
+{
+
+//- "(N nodes", in parallel "on the processor with the largest block (N of
+//  M nodes"
+Foam::string heldNodes(const Foam::dropletFiber::memoryEstimate& e)
+{
+    Foam::OStringStream os;
+    if (Foam::Pstream::parRun())
+    {
+        os  << " on the processor with the largest block (" << e.nodesHeld
+            << " of " << e.nodes << " nodes";
+    }
+    else
+    {
+        os  << " (" << e.nodes << " nodes";
+    }
+    return os.str();
+}
+
+} // End anonymous namespace
+
+
 Foam::dropletFiber::memoryEstimate Foam::dropletFiber::estimateMemory
 (
     const gridSettings& grid,
+    const scalar nodesHeld,
     const std::vector<::dropletFiber::FiberInjectorSpec>& injectors,
     const scalar deltaT
 )
@@ -165,9 +190,10 @@ Foam::dropletFiber::memoryEstimate Foam::dropletFiber::estimateMemory
     memoryEstimate e;
     const auto& n = grid.spec.nodes;
     e.nodes = scalar(n[0])*scalar(n[1])*scalar(n[2]);
+    e.nodesHeld = nodesHeld;
     e.averagingSteps = grid.averagingSteps;
-    e.gridHeld = gridHeldBytes(e.nodes, grid.averagingSteps);
-    e.gridTransient = gridTransientBytes(e.nodes, grid.averagingSteps);
+    e.gridHeld = gridHeldBytes(e.nodesHeld, grid.averagingSteps);
+    e.gridTransient = gridTransientBytes(e.nodesHeld, grid.averagingSteps);
     for (const auto& injector : injectors)
     {
         const scalar births = std::ceil(injector.rate*deltaT) + 1;
@@ -176,9 +202,7 @@ Foam::dropletFiber::memoryEstimate Foam::dropletFiber::estimateMemory
 
     const scalar available = availableMemoryPerProcessor();
     e.allowed = available;
-    e.allowedSource =
-        "MemAvailable of the host shared by its processors, every processor"
-        " holding the whole grid";
+    e.allowedSource = "MemAvailable of the host shared by its processors";
     if (grid.maxMemory > 0 && (available < 0 || grid.maxMemory < available))
     {
         e.allowed = grid.maxMemory;
@@ -207,7 +231,7 @@ void Foam::dropletFiber::checkMemory
     {
         FatalIOErrorInFunction(gridDict)
             << "The grid needs an estimated " << inMB(grid).c_str()
-            << " on every processor (" << estimate.nodes << " nodes, "
+            << heldNodes(estimate).c_str() << ", "
             << "averagingSteps " << steps << ": (averagingSteps + 2) x 56 + 8"
             << " bytes per node, up to " << inMB(estimate.gridTransient).c_str()
             << " of it only while writing), with the fibers of a step "
@@ -254,9 +278,13 @@ void Foam::dropletFiber::reportMemory
 )
 {
     os  << "    memory per processor (estimate): grid "
-        << inMB(estimate.gridHeld).c_str() << " (" << estimate.nodes
-        << " nodes x ((averagingSteps " << estimate.averagingSteps
-        << " + 2) x 56 + 8 bytes)), up to "
+        << inMB(estimate.gridHeld).c_str() << " (";
+    if (Pstream::parRun())
+    {
+        os  << "largest block: " << estimate.nodesHeld << " of ";
+    }
+    os  << estimate.nodes << " nodes x ((averagingSteps "
+        << estimate.averagingSteps << " + 2) x 56 + 8 bytes)), up to "
         << inMB(estimate.gridTransient).c_str() << " more while writing;"
         << " fibers " << inMB(fiberPoints*bytesPerFiberPoint).c_str()
         << " now, " << inMB(estimate.fibersPerStep).c_str()

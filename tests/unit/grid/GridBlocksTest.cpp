@@ -1,8 +1,8 @@
-// Grid blocks: a grid split into blocks that each store their owned nodes plus a halo
-// deposits, after the halo and overflow exchange, what the whole grid deposits: one parcel
-// bit for bit (each node gets the same product), many parcels to round-off (the sums at a
-// node add in another order). The partition tiles the grid from subdomain bounds, or by
-// bisection when they do not.
+// Grid blocks: a grid split into blocks that each store their owned nodes, every parcel
+// given to each block its deposit reaches (DensityGrid::reachedNodes), deposits what the
+// whole grid deposits: one parcel bit for bit (each node gets the same product), many
+// parcels to round-off (the sums at a node add in another order). The partition tiles the
+// grid from subdomain bounds, or by bisection when they do not.
 #include "grid/DensityGrid.hpp"
 #include "grid/GridPartition.hpp"
 #include "grid/MultilinearWeights.hpp"
@@ -53,47 +53,33 @@ struct Blocks
     std::vector<std::unique_ptr<DensityGrid>> grids;
 };
 
-Blocks makeBlocks(const GridSpec& spec, const GridPartition& partition, int halo, int window)
+Blocks makeBlocks(const GridPartition& partition, const GridSpec& spec, int window)
 {
     Blocks blocks{partition, {}};
     for (int p = 0; p < partition.processors(); ++p)
     {
-        const GridBlock block{partition.owned(p), partition.storageBox(spec, p, halo)};
+        const GridBlock block{partition.owned(p), partition.owned(p)};
         blocks.grids.push_back(std::make_unique<DensityGrid>(spec, KernelSettings{}, window, block));
     }
     return blocks;
 }
 
-// What the function object does over MPI: halo values and overflow to their owners,
-// who add them, then every block commits.
-void exchangeAndCommit(const GridSpec& spec, Blocks& blocks)
+// What the function object does over MPI: the block holding the parcel deposits it, and
+// gives a copy to every other block its deposit reaches.
+void depositOnBlocks(Blocks& blocks, int holder, const Parcel& parcel, double dt)
 {
-    const int count = blocks.partition.processors();
-    std::vector<std::vector<OverflowNode>> overflow(static_cast<std::size_t>(count));
-    for (int p = 0; p < count; ++p)
+    DensityGrid& held = *blocks.grids[static_cast<std::size_t>(holder)];
+    held.deposit(parcel, dt);
+    std::vector<int> others;
+    blocks.partition.holdersOf(held.reachedNodes(parcel, dt), holder, others);
+    for (const int p : others)
     {
-        overflow[static_cast<std::size_t>(p)] = blocks.grids[static_cast<std::size_t>(p)]->takeOverflow();
+        blocks.grids[static_cast<std::size_t>(p)]->depositCopy(parcel, dt);
     }
-    for (int p = 0; p < count; ++p)
-    {
-        DensityGrid& from = *blocks.grids[static_cast<std::size_t>(p)];
-        for (const BlockNeighbour& n : blocks.partition.neighbours(p, from.storageBox()))
-        {
-            const IndexBox box = n.shared.intersected(from.stepBox());
-            const std::vector<double> values = from.packStep(box);
-            blocks.grids[static_cast<std::size_t>(n.processor)]->addStep(box, values.data(), values.size());
-        }
-        for (const OverflowNode& node : overflow[static_cast<std::size_t>(p)])
-        {
-            const std::size_t nx = static_cast<std::size_t>(spec.nodes[0]);
-            const std::size_t ny = static_cast<std::size_t>(spec.nodes[1]);
-            const int owner = blocks.partition.owner(static_cast<int>(node.node % nx),
-                                                     static_cast<int>((node.node / nx) % ny),
-                                                     static_cast<int>(node.node / (nx * ny)));
-            ASSERT_GE(owner, 0);
-            blocks.grids[static_cast<std::size_t>(owner)]->addToNode(node.node, node.values.data());
-        }
-    }
+}
+
+void commit(Blocks& blocks)
+{
     for (auto& grid : blocks.grids)
     {
         grid->commitStep();
@@ -204,10 +190,11 @@ TEST(GridPartition, IrregularBoundsDoNotTileAndBisectionDoes)
     }
 }
 
-TEST(GridBlocks, OneBlocksStorageAndOverflowEqualTheWholeGridBitForBit)
+TEST(GridBlocks, EachBlocksNodesEqualTheWholeGridBitForBit)
 {
-    // A block deposits a parcel alone: its stored nodes and its overflow list hold every
-    // node the whole grid's deposit touches, each the same product, to the bit.
+    // A parcel deposited on every block: each block's nodes hold the whole grid's values
+    // there, each the same product, to the bit; and no node the whole grid's deposit
+    // touches lies outside reachedNodes().
     for (const GridSpec& spec : {grid3D(), grid2D()})
     {
         const GridPartition partition = GridPartition::bisection(spec, 3);
@@ -215,14 +202,15 @@ TEST(GridBlocks, OneBlocksStorageAndOverflowEqualTheWholeGridBitForBit)
         {
             DensityGrid whole(spec);
             whole.deposit(parcel, 1e-3);
+            const IndexBox reached = whole.reachedNodes(parcel, 1e-3);
+            std::vector<double> assembled(spec.nodeCount() * nQuantities, 0.0);
             for (int p = 0; p < partition.processors(); ++p)
             {
-                const IndexBox storage = partition.storageBox(spec, p, 1);
-                DensityGrid block(spec, KernelSettings{}, 1, GridBlock{partition.owned(p), storage});
-                block.deposit(parcel, 1e-3);
-                std::vector<double> assembled(spec.nodeCount() * nQuantities, 0.0);
+                const IndexBox owned = partition.owned(p);
+                DensityGrid block(spec, KernelSettings{}, 1, GridBlock{owned, owned});
+                block.depositCopy(parcel, 1e-3);
                 forEachRow(
-                    storage, spec.nodes,
+                    owned, spec.nodes,
                     [&](const IndexRow& row)
                     {
                         std::copy(
@@ -232,13 +220,26 @@ TEST(GridBlocks, OneBlocksStorageAndOverflowEqualTheWholeGridBitForBit)
                                 + static_cast<std::ptrdiff_t>((row.offsetInBox + row.length) * nQuantities),
                             assembled.begin() + static_cast<std::ptrdiff_t>(row.first * nQuantities));
                     });
-                for (const OverflowNode& node : block.overflow())
-                {
-                    std::copy(node.values.begin(), node.values.end(),
-                              assembled.begin() + static_cast<std::ptrdiff_t>(node.node * nQuantities));
-                }
-                ASSERT_TRUE(assembled == whole.stepValues()) << "block " << p;
             }
+            ASSERT_TRUE(assembled == whole.stepValues());
+            forEachRow(spec.fullBox(), spec.nodes,
+                       [&](const IndexRow& row)
+                       {
+                           for (std::size_t i = 0; i < row.length; ++i)
+                           {
+                               const std::size_t node = row.first + i;
+                               const int x = static_cast<int>(node % static_cast<std::size_t>(spec.nodes[0]));
+                               const int y = static_cast<int>((node / static_cast<std::size_t>(spec.nodes[0]))
+                                                              % static_cast<std::size_t>(spec.nodes[1]));
+                               const int z = static_cast<int>(node
+                                                              / (static_cast<std::size_t>(spec.nodes[0])
+                                                                 * static_cast<std::size_t>(spec.nodes[1])));
+                               if (whole.stepValues()[node * nQuantities] != 0.0)
+                               {
+                                   ASSERT_TRUE(reached.holds(x, y, z)) << "node " << node << " not reached";
+                               }
+                           }
+                       });
         }
     }
 }
@@ -247,10 +248,10 @@ TEST(GridBlocks, ExchangedBlocksEqualTheWholeGridToRoundOff)
 {
     for (const GridSpec& spec : {grid3D(), grid2D()})
     {
-        for (const int halo : {0, 1, 3, 40})
+        for (const int parts : {2, 4, 7})
         {
             DensityGrid whole(spec, KernelSettings{}, 3);
-            Blocks blocks = makeBlocks(spec, GridPartition::bisection(spec, 4), halo, 3);
+            Blocks blocks = makeBlocks(GridPartition::bisection(spec, parts), spec, 3);
             for (int step = 0; step < 4; ++step)
             {
                 const std::vector<Parcel> parcels
@@ -258,43 +259,55 @@ TEST(GridBlocks, ExchangedBlocksEqualTheWholeGridToRoundOff)
                 for (std::size_t n = 0; n < parcels.size(); ++n)
                 {
                     whole.deposit(parcels[n], 1e-3);
-                    blocks.grids[n % blocks.grids.size()]->deposit(parcels[n], 1e-3);
+                    depositOnBlocks(blocks, static_cast<int>(n % blocks.grids.size()), parcels[n], 1e-3);
                 }
+                // Each parcel's mass counted once, by the block holding it
+                double massDeposited = 0.0;
+                for (const auto& grid : blocks.grids)
+                {
+                    massDeposited += grid->stepStatistics().massDeposited;
+                }
+                EXPECT_NEAR(massDeposited, whole.stepStatistics().massDeposited,
+                            1e-14 * whole.stepStatistics().massDeposited);
                 whole.commitStep();
-                exchangeAndCommit(spec, blocks);
+                commit(blocks);
             }
-            SCOPED_TRACE("halo " + std::to_string(halo) + ", nodes " + std::to_string(spec.nodeCount()));
+            SCOPED_TRACE(std::to_string(parts) + " blocks, nodes " + std::to_string(spec.nodeCount()));
             expectNear(assembledTotals(spec, blocks), whole.windowTotals(), 1e-14);
-            // A sample from the corners' owners equals the whole grid's
+            // A sample from the shares of the corners' owners equals the whole grid's
             std::mt19937_64 rng(3);
             std::uniform_real_distribution<double> unit(0.0, 1.0);
-            const std::vector<double> totals = assembledTotals(spec, blocks);
-            for (int s = 0; s < 50; ++s)
+            int sharedSamples = 0; // samples whose corners several blocks own
+            for (int s = 0; s < 400; ++s)
             {
                 const Eigen::Vector3d point = spec.lower
                     + (spec.upper - spec.lower)
                           .cwiseProduct(Eigen::Vector3d(unit(rng), unit(rng), unit(rng)));
                 const CornerWeights corners = multilinearWeights(spec, point);
-                std::vector<double> cornerTotals;
-                for (int c = 0; c < corners.count; ++c)
+                std::array<double, nQuantities> sums{};
+                int owners = 0;
+                for (const auto& grid : blocks.grids)
                 {
-                    const double* t = totals.data() + corners.node[static_cast<std::size_t>(c)] * nQuantities;
-                    cornerTotals.insert(cornerTotals.end(), t, t + nQuantities);
+                    const std::array<double, nQuantities> before = sums;
+                    grid->addOwnedCornerSums(corners, sums);
+                    owners += sums != before ? 1 : 0;
                 }
+                sharedSamples += owners > 1 ? 1 : 0;
                 const DropletFieldValue expected = whole.sample(point);
-                const DropletFieldValue actual = blocks.grids[0]->interpolated(corners, cornerTotals.data());
+                const DropletFieldValue actual = blocks.grids[0]->fieldFromCornerSums(sums);
                 EXPECT_NEAR(actual.rho, expected.rho, 1e-13 * std::abs(expected.rho));
                 EXPECT_NEAR(actual.rMeanMass, expected.rMeanMass, 1e-13 * std::abs(expected.rMeanMass));
                 EXPECT_NEAR(actual.velocity.x(), expected.velocity.x(),
                             1e-12 * (expected.velocity.norm() + 1e-30));
             }
+            EXPECT_GT(sharedSamples, 0);
         }
     }
 }
 
 TEST(GridBlocks, WholeGridBlockIsTheWholeGridBitForBit)
 {
-    // The interpolation from the corners' totals is sample()'s own arithmetic
+    // The corner sums of the whole grid as a block are sample()'s own arithmetic
     const GridSpec spec = grid3D();
     DensityGrid whole(spec, KernelSettings{}, 2);
     DensityGrid block(spec, KernelSettings{}, 2, GridBlock{spec.fullBox(), spec.fullBox()});
@@ -303,41 +316,51 @@ TEST(GridBlocks, WholeGridBlockIsTheWholeGridBitForBit)
         whole.deposit(parcel, 1e-3);
         block.deposit(parcel, 1e-3);
     }
-    EXPECT_TRUE(block.overflow().empty());
     whole.commitStep();
     block.commitStep();
     EXPECT_TRUE(whole.windowTotals() == block.windowTotals());
     const Eigen::Vector3d point(0.0071, 0.0033, 0.0052);
-    const CornerWeights corners = multilinearWeights(spec, point);
-    std::vector<double> cornerTotals(static_cast<std::size_t>(corners.count) * nQuantities);
-    for (int c = 0; c < corners.count; ++c)
-    {
-        block.windowTotal(corners.node[static_cast<std::size_t>(c)], cornerTotals.data() + c * nQuantities);
-    }
-    EXPECT_EQ(block.interpolated(corners, cornerTotals.data()).rho, whole.sample(point).rho);
-    EXPECT_EQ(block.interpolated(corners, cornerTotals.data()).rMeanNumber, whole.sample(point).rMeanNumber);
+    std::array<double, nQuantities> sums{};
+    block.addOwnedCornerSums(multilinearWeights(spec, point), sums);
+    EXPECT_EQ(block.fieldFromCornerSums(sums).rho, whole.sample(point).rho);
+    EXPECT_EQ(block.fieldFromCornerSums(sums).rMeanNumber, whole.sample(point).rMeanNumber);
 }
 
-TEST(GridBlocks, OverflowMustBeTakenAndForeignNodesAreRefused)
+TEST(GridBlocks, NodesOfOtherBlocksAreLeftToThem)
 {
     const GridSpec spec = grid3D();
     const GridPartition partition = GridPartition::bisection(spec, 2);
-    DensityGrid block(spec, KernelSettings{}, 1,
-                      GridBlock{partition.owned(0), partition.storageBox(spec, 0, 0)});
+    DensityGrid block(spec, KernelSettings{}, 1, GridBlock{partition.owned(0), partition.owned(0)});
+    DensityGrid whole(spec);
     for (const Parcel& parcel : randomParcels(spec, 50, 1))
     {
         block.deposit(parcel, 1e-3);
+        whole.deposit(parcel, 1e-3);
     }
-    ASSERT_FALSE(block.overflow().empty());
-    EXPECT_THROW(block.commitStep(), std::logic_error);
-    block.takeOverflow();
+    // The block's step mass is the whole grid's on its nodes only (some of the parcels'
+    // kernels reach the other block)
+    double blockMass = 0.0, wholeMassOnBlock = 0.0, wholeMass = 0.0;
+    forEachRow(partition.owned(0), spec.nodes,
+               [&](const IndexRow& row)
+               {
+                   for (std::size_t i = 0; i < row.length; ++i)
+                   {
+                       blockMass += block.stepValues()[(row.offsetInBox + i) * nQuantities];
+                       wholeMassOnBlock += whole.stepValues()[(row.first + i) * nQuantities];
+                   }
+               });
+    for (std::size_t n = 0; n < spec.nodeCount(); ++n)
+    {
+        wholeMass += whole.stepValues()[n * nQuantities];
+    }
+    EXPECT_NEAR(blockMass, wholeMassOnBlock, 1e-14 * wholeMass);
+    EXPECT_LT(blockMass, 0.99 * wholeMass);
     EXPECT_NO_THROW(block.commitStep());
     const IndexBox other = partition.owned(1);
     const std::size_t foreign = spec.flatIndex(other.hi[0], other.hi[1], other.hi[2]);
     EXPECT_FALSE(block.owns(foreign));
     double sums[nQuantities];
     EXPECT_THROW(block.windowTotal(foreign, sums), std::out_of_range);
-    EXPECT_THROW(block.addToNode(foreign, sums), std::invalid_argument);
 }
 
 TEST(GridBlocks, WindowStateRestoresOnTheSameBlockOnly)
@@ -345,21 +368,18 @@ TEST(GridBlocks, WindowStateRestoresOnTheSameBlockOnly)
     const GridSpec spec = grid3D();
     const GridPartition two = GridPartition::bisection(spec, 2);
     const GridPartition three = GridPartition::bisection(spec, 3);
-    Blocks blocks = makeBlocks(spec, two, 2, 2);
-    for (int p = 0; p < 2; ++p)
+    Blocks blocks = makeBlocks(two, spec, 2);
+    for (const Parcel& parcel : randomParcels(spec, 30, 5))
     {
-        for (const Parcel& parcel : randomParcels(spec, 30, 5))
-        {
-            blocks.grids[static_cast<std::size_t>(p)]->deposit(parcel, 1e-3);
-        }
+        depositOnBlocks(blocks, 0, parcel, 1e-3);
     }
-    exchangeAndCommit(spec, blocks);
+    commit(blocks);
     const WindowState state = blocks.grids[1]->saveWindow();
     EXPECT_EQ(state.counters[0], 2); // a block's format
-    DensityGrid same(spec, KernelSettings{}, 2, GridBlock{two.owned(1), two.storageBox(spec, 1, 0)});
+    DensityGrid same(spec, KernelSettings{}, 2, GridBlock{two.owned(1), two.owned(1)});
     same.restoreWindow(state);
     EXPECT_TRUE(same.windowTotals() == blocks.grids[1]->windowTotals());
-    DensityGrid other(spec, KernelSettings{}, 2, GridBlock{three.owned(1), three.storageBox(spec, 1, 2)});
+    DensityGrid other(spec, KernelSettings{}, 2, GridBlock{three.owned(1), three.owned(1)});
     EXPECT_THROW(other.restoreWindow(state), std::invalid_argument);
     DensityGrid whole(spec, KernelSettings{}, 2);
     EXPECT_THROW(whole.restoreWindow(state), std::invalid_argument);
@@ -385,7 +405,7 @@ TEST(GridBlocks, WholeGridWindowRestoresOntoEachBlock)
     const GridPartition two = GridPartition::bisection(spec, 2);
     for (int p = 0; p < 2; ++p)
     {
-        DensityGrid block(spec, KernelSettings{}, 2, GridBlock{two.owned(p), two.storageBox(spec, p, 1)});
+        DensityGrid block(spec, KernelSettings{}, 2, GridBlock{two.owned(p), two.owned(p)});
         block.restoreWindow(state);
         const IndexBox owned = two.owned(p);
         for (int k = owned.lo[2]; k <= owned.hi[2]; ++k)
