@@ -101,5 +101,5 @@ mean = sum(r["droplets"] for r in rows) / max(sum(r["parcels"] for r in rows), 1
 print(f"  droplets per parcel (mean over the run): {mean:.0f}; parcels in the last step: {rows[-1]['parcels']:.0f}")
 PY
 echo "  the function object's deposit report (log.pimpleFoam):"
-grep -A3 -E "(deposit of the parcels takes|: deposit [0-9]+ % of the wall time)" log.pimpleFoam \
-    | grep -v "^--$" | sed 's/^/    /' || echo "    (none: is this build older than the deposit report?)"
+grep -A6 -E "(deposit of the parcels takes|: deposit [0-9]+ % of the wall time)" log.pimpleFoam \
+    | grep -v -e "^--$" -e "^dropletFiberCollision .*: parcels" -e "^cloudInfo" | sed 's/^/    /' || echo "    (none: is this build older than the deposit report?)"
