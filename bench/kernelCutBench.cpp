@@ -168,7 +168,7 @@ void capTable(const ParcelClass& c)
         grids.back()->deposit(p, dt);
         grids.back()->commitStep();
     }
-    std::printf("\n%s, stationary, width %.2f mm: rMaxCap against none (negligibleWeight 0)\n", c.name,
+    std::printf("\n%s, width %.2f mm: rMaxCap against none (negligibleWeight 0)\n", c.name,
                 1e3 * width);
     std::printf("  rMaxCap [widths]  density at 0, 1, 2, 3, 4 widths / uncapped  | line integral at 0, 1, 2, "
                 "3, 4 widths / uncapped\n");

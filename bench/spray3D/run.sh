@@ -2,8 +2,8 @@
 #------------------------------------------------------------------------------
 # spray3D/run.sh - the channelSpray tutorial made 3D with parcels of thousands of
 # droplets, run once; prints the function object's share of the solver's wall
-# time and the widest kernels the function object reported. The case of
-# issue-class "spray-solver parcels" (docs/performance.md, 3D spray case).
+# time and the widest kernels the function object reported: the cost of spray
+# parcels of many droplets (docs/performance.md, wide kernels).
 #
 # Usage: bench/spray3D/run.sh [libDir]
 #   libDir   folder with the libdropletFiber.so to measure (default: the one
