@@ -168,8 +168,7 @@ void capTable(const ParcelClass& c)
         grids.back()->deposit(p, dt);
         grids.back()->commitStep();
     }
-    std::printf("\n%s, width %.2f mm: rMaxCap against none (negligibleWeight 0)\n", c.name,
-                1e3 * width);
+    std::printf("\n%s, width %.2f mm: rMaxCap against none (negligibleWeight 0)\n", c.name, 1e3 * width);
     std::printf("  rMaxCap [widths]  density at 0, 1, 2, 3, 4 widths / uncapped  | line integral at 0, 1, 2, "
                 "3, 4 widths / uncapped\n");
     for (std::size_t k = 1; k < caps.size(); ++k)
