@@ -101,5 +101,20 @@ mean = sum(r["droplets"] for r in rows) / max(sum(r["parcels"] for r in rows), 1
 print(f"  droplets per parcel (mean over the run): {mean:.0f}; parcels in the last step: {rows[-1]['parcels']:.0f}")
 PY
 echo "  the function object's deposit report (log.pimpleFoam):"
-grep -A6 -E "(deposit of the parcels takes|: deposit [0-9]+ % of the wall time)" log.pimpleFoam \
-    | grep -v -e "^--$" -e "^dropletFiberCollision .*: parcels" -e "^cloudInfo" | sed 's/^/    /' || echo "    (none: is this build older than the deposit report?)"
+python3 - <<'PY'
+# each report: its first line and the indented lines that follow it
+import re
+start = re.compile(r"(deposit of the parcels takes|: deposit [0-9]+ % of the wall time)")
+lines = open("log.pimpleFoam", errors="replace").read().splitlines()
+shown = 0
+for i, line in enumerate(lines):
+    if start.search(line):
+        print("    " + line.strip())
+        for follow in lines[i + 1:]:
+            if not re.match(r"\s{4}", follow) or follow.strip().startswith(("number of", "mass in")):
+                break
+            print("    " + follow)
+        shown += 1
+if not shown:
+    print("    (none: is this build older than the deposit report?)")
+PY
