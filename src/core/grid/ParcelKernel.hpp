@@ -44,7 +44,7 @@ struct KernelSettings
     // the kept nodes). The error it allows (docs/model.md sec. 4): the tail mass beyond the
     // cut moves to the kept nodes, epsilon of the largest node value in 2D and about
     // 2 sqrt(ln(1/epsilon) / pi) epsilon in 3D: 5e-8 at 1e-8, the default (reach 6.1 kernel
-    // widths; 1e-17, reach 8.9 widths, visits 3.1x more nodes in 3D for 7e-17).
+    // widths; 1e-17, reach 8.9 widths, visits 3x more nodes in 3D for 7e-17).
     // 0: exact tails (every node within reach).
     double negligibleWeight = 1e-8;
     // Moving parcels' node weights with the batched AVX2 + FMA node loop when the CPU has
