@@ -1,5 +1,7 @@
 #include "grid/StepStatistics.hpp"
 
+#include <algorithm>
+
 namespace dropletFiber
 {
 
@@ -17,6 +19,8 @@ StepStatistics& StepStatistics::operator+=(const StepStatistics& other)
     massIn += other.massIn;
     massDeposited += other.massDeposited;
     massOutside += other.massOutside;
+    widestKernelWidth = std::max(widestKernelWidth, other.widestKernelWidth);
+    widestKernelReach = std::max(widestKernelReach, other.widestKernelReach);
     return *this;
 }
 

@@ -1,6 +1,7 @@
 // StepStatistics: what happened to the parcels deposited in one time step, so that the
-// caller can report and warn (mass outside the grid, capped kernels, fallbacks). All
-// members are sums, so per-rank statistics add up across MPI ranks.
+// caller can report and warn (mass outside the grid, capped kernels, fallbacks, wide
+// kernels). All members but the two widest-kernel figures are sums, so per-rank statistics
+// add up across MPI ranks; those two are maxima (operator+= takes the larger).
 #pragma once
 
 #include <cstdint>
@@ -24,6 +25,11 @@ struct StepStatistics
     double massIn = 0.0;                   // sum of parcel masses n m(r_p), kg
     double massDeposited = 0.0;            // mass put on the grid nodes, kg
     double massOutside = 0.0;              // massIn - massDeposited (part of the step outside the box)
+    // The widest kernel of the step, in node spacings (the largest spacing): its width
+    // r_max / sqrt(2 alpha) (eq. 16) and its evaluated reach (support P9 or negligibleWeight
+    // cut P10); cloud-in-cell parcels not counted. Filled by KernelExtentMeter::record.
+    double widestKernelWidth = 0.0;
+    double widestKernelReach = 0.0;
 
     StepStatistics& operator+=(const StepStatistics& other);
 };

@@ -157,6 +157,14 @@ void Foam::functionObjects::dropletFiberCollision::buildStatefulParts
             }
         )
     );
+    depositReport_.reset
+    (
+        new dropletFiber::depositReport
+        (
+            type() + " " + name(), gridSettings_.spec, gridSettings_.kernel,
+            grid_->kernelDimension()
+        )
+    );
 }
 
 
@@ -933,6 +941,10 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
     totals_.deposited += step.deposit.massDeposited;
     totals_.outside += step.deposit.massOutside;
     step.depositionTime = depositionStart.elapsed();
+    depositReport_->record
+    (
+        parcels_, dt, step.deposit, step.depositionTime, time_.timeName()
+    );
 
     // 3. New fibers
     clockValue fiberStart(true);
@@ -971,6 +983,7 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
     {
         coreCall("writing the restart state", [this]() { writeState(); });
         reportConservation();
+        depositReport_->reportAtWrite(time_.timeName());
     }
     return true;
 }

@@ -33,6 +33,10 @@ fi
 # A run without the function object (library not loaded) fails here too, whatever
 # the Allrun does
 "$root/bin/checkFunctionObjectRan" "$work" || die "the run of $work went on without the function object"
+# The tutorial's deposit is a small share of its run: no deposit warning
+# (src/openfoam/depositReport; the figures at write times are there)
+! grep -q "deposit of the parcels takes" "$work"/log.pimpleFoam || die "the tutorial warned of its deposit's share"
+grep -q "% of the wall time over" "$work"/log.pimpleFoam || die "the tutorial's log has no deposit figures"
 table="$work/postProcessing/dropletFiber/0/dropletFiber.dat"
 reference="$here/reference.$mode.dat"
 if [ "$update" = --update ]; then

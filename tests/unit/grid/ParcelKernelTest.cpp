@@ -130,7 +130,7 @@ TEST(ParcelKernel, RejectsInvalidSettings)
     EXPECT_THROW(ParcelKernel(-1e-5, 10.0, KernelSettings{}, 2), std::invalid_argument);
     EXPECT_THROW(ParcelKernel(1e-5, 0.0, KernelSettings{}, 2), std::invalid_argument);
     KernelSettings cut;
-    EXPECT_EQ(cut.negligibleWeight, 1e-17);
+    EXPECT_EQ(cut.negligibleWeight, 1e-8);
     cut.negligibleWeight = 0.0; // exact tails
     EXPECT_NO_THROW(cut.validate());
     cut.negligibleWeight = 1e-6;

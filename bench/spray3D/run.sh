@@ -1,0 +1,120 @@
+#!/usr/bin/env bash
+#------------------------------------------------------------------------------
+# spray3D/run.sh - the channelSpray tutorial made 3D with parcels of thousands of
+# droplets, run once; prints the function object's share of the solver's wall
+# time and the widest kernels the function object reported: the cost of spray
+# parcels of many droplets (docs/performance.md, wide kernels).
+#
+# Usage: bench/spray3D/run.sh [libDir]
+#   libDir   folder with the libdropletFiber.so to measure (default: the one
+#            ./Allwmake built, $FOAM_USER_LIBBIN)
+# Environment: SPRAY3D_DIR scratch folder (default: a new mktemp -d folder),
+#              SPRAY3D_END end time in s (default 0.2: 400 steps)
+#
+# The case, generated from tutorials/channelSpray (same channel, air, nozzles,
+# fibers and function-object settings):
+#   - 3D: 25 x 75 x 5 cells of 2 mm (the tutorial's 1 cell in z), the front and
+#     back walls no-slip walls the parcels escape through; the grid 1 mm in
+#     every direction (51 x 151 x 11 nodes);
+#   - parcelsPerSecond 1000 instead of 10000 at the same mass flow
+#     (parcelBasisType mass): 5e-8 kg per parcel, about 3,400 droplets of
+#     30 um, 11,000 of 20 um (the tutorial: 340 of 30 um);
+#   - no rMaxCap (the tutorial has 6 mm), every other grid entry at its
+#     default: the cost of default settings.
+# The share is the function object's wall time (its table's deposition and
+# fiber columns) over the solver's ExecutionTime (bench/tutorialShare.py).
+#------------------------------------------------------------------------------
+set -euo pipefail
+here="$(cd "${0%/*}" && pwd)"
+root="$(cd "$here/../.." && pwd)"
+# shellcheck disable=SC1091
+. "$root/bin/functions.sh"
+loadFoamEnvironment
+lib="${1:-$FOAM_USER_LIBBIN}"
+[ -f "$lib/libdropletFiber.so" ] || die "no libdropletFiber.so in $lib"
+lib="$(cd "$lib" && pwd)"
+endTime="${SPRAY3D_END:-0.2}"
+dir="${SPRAY3D_DIR:-$(mktemp -d /tmp/spray3D.XXXXXX)}"
+rm -rf "$dir"
+cp -r "$root/tutorials/channelSpray" "$dir"
+cd "$dir"
+./Allclean > /dev/null 2>&1 || true
+rm -f system/controlDict.short
+
+# edit FILE OLD NEW: replace a line's text, and fail when it is not there
+edit() {
+    grep -qF -- "$2" "$1" || die "spray3D: '$2' not found in $1 (tutorial changed?)"
+    python3 - "$@" <<'PY'
+import sys
+path, old, new = sys.argv[1:4]
+text = open(path).read()
+open(path, "w").write(text.replace(old, new))
+PY
+}
+edit system/blockMeshDict "(25 75 1)" "(25 75 5)"
+edit system/blockMeshDict "type empty;" "type wall;"
+python3 - <<'PY'
+# frontAndBack: no-slip walls for the air (U), zero gradient for p
+import re
+for name, bc in (("0.orig/U", "noSlip;"), ("0.orig/p", "zeroGradient;")):
+    text = open(name).read()
+    text, n = re.subn(r"(frontAndBack\s*\{\s*type\s+)empty;", r"\g<1>" + bc, text)
+    assert n == 1, name
+    open(name, "w").write(text)
+PY
+edit constant/kinematicCloudProperties "parcelsPerSecond 10000;" "parcelsPerSecond 1000;"
+edit constant/kinematicCloudProperties "            outlet
+            {
+                type        escape;
+            }" "            outlet
+            {
+                type        escape;
+            }
+            frontAndBack
+            {
+                type        escape;
+            }"
+foamDictionary system/controlDict -entry functions/dropletFiber/grid/rMaxCap -remove > /dev/null
+! grep -q rMaxCap system/controlDict || die "spray3D: could not remove rMaxCap"
+foamDictionary system/controlDict -entry endTime -set "$endTime" > /dev/null
+foamDictionary system/controlDict -entry writeInterval -set "$(python3 -c "print($endTime / 4)")" > /dev/null
+
+cp -r 0.orig 0
+blockMesh > log.blockMesh 2>&1 || die "spray3D: blockMesh failed, see $dir/log.blockMesh"
+info "spray3D: $dir, endTime $endTime s, library $lib/libdropletFiber.so"
+LD_LIBRARY_PATH="$lib:$LD_LIBRARY_PATH" pimpleFoam > log.pimpleFoam 2>&1 \
+    || die "spray3D: pimpleFoam failed, see $dir/log.pimpleFoam"
+"$root/bin/checkFunctionObjectRan" log.pimpleFoam \
+    || die "spray3D: the run went on without the function object"
+
+python3 "$root/bench/tutorialShare.py" . --label "spray3D ($lib)"
+python3 - <<'PY'
+# droplets per parcel over the run (the table's parcels and droplets columns)
+rows, names = [], None
+for line in open("postProcessing/dropletFiber/0/dropletFiber.dat"):
+    if line.startswith("#"):
+        names = line[1:].split()
+    elif line.strip():
+        rows.append(dict(zip(names, map(float, line.split()))))
+rows = [r for r in rows if r["parcels"] > 0]
+mean = sum(r["droplets"] for r in rows) / max(sum(r["parcels"] for r in rows), 1)
+print(f"  droplets per parcel (mean over the run): {mean:.0f}; parcels in the last step: {rows[-1]['parcels']:.0f}")
+PY
+echo "  the function object's deposit report (log.pimpleFoam):"
+python3 - <<'PY'
+# each report: its first line and the indented lines that follow it
+import re
+start = re.compile(r"(deposit of the parcels takes|: deposit [0-9]+ % of the wall time)")
+lines = open("log.pimpleFoam", errors="replace").read().splitlines()
+shown = 0
+for i, line in enumerate(lines):
+    if start.search(line):
+        print("    " + line.strip())
+        for follow in lines[i + 1:]:
+            if not re.match(r"\s{4}", follow) or follow.strip().startswith(("number of", "mass in")):
+                break
+            print("    " + follow)
+        shown += 1
+if not shown:
+    print("    (none: is this build older than the deposit report?)")
+PY

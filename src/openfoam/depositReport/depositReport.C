@@ -1,0 +1,243 @@
+/*---------------------------------------------------------------------------*\
+  dropletFiber: stochastic droplet-fiber coupling for OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "depositReport.H"
+#include "Pstream.H"
+#include "List.H"
+#include "ops.H"
+#include "messageStream.H"
+#include "error.H"
+#include "OStringStream.H"
+
+#include <algorithm>
+#include <cmath>
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::dropletFiber::depositReport::depositReport
+(
+    const word& owner,
+    const ::dropletFiber::GridSpec& spec,
+    const ::dropletFiber::KernelSettings& kernel,
+    const label kernelDimension
+)
+:
+    owner_(owner),
+    meter_(spec, kernel, int(kernelDimension)),
+    kernel_(kernel),
+    activeDimensions_(spec.activeDimensions()),
+    spacing_(meter_.spacing()),
+    since_(),
+    lastStep_(),
+    timing_(false),
+    warned_(false)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::dropletFiber::depositReport::record
+(
+    const cloudParcels& parcels,
+    const scalar dt,
+    const ::dropletFiber::StepStatistics& deposit,
+    const scalar depositTime,
+    const word& timeName
+)
+{
+    // The wall time of a step: from this call to the next (the same point of
+    // every step); the first step is not timed
+    const auto now = std::chrono::steady_clock::now();
+    if (timing_)
+    {
+        since_.stepTime += std::chrono::duration<double>(now - lastStep_).count();
+        since_.depositTime += depositTime;
+        ++since_.steps;
+    }
+    lastStep_ = now;
+    timing_ = true;
+
+    const ::dropletFiber::StepStatistics kernels = widestKernels(parcels, dt);
+    since_.widestWidth = max(since_.widestWidth, kernels.widestKernelWidth);
+    since_.widestReach = max(since_.widestReach, kernels.widestKernelReach);
+    since_.nodesVisited += scalar(deposit.nodesVisited);
+    since_.parcelsOnGrid +=
+        scalar(deposit.parcels - deposit.parcelsEmpty - deposit.parcelsOutside);
+
+    // One scalar reduction per step decides for all processors
+    const scalar share =
+        since_.stepTime > 0 ? since_.depositTime/since_.stepTime : 0;
+    const bool large =
+        returnReduce(share, maxOp<scalar>()) > largeShare
+     && since_.steps >= minSteps;
+    if (warned_ || !large)
+    {
+        return;
+    }
+    warn(timeName);
+    warned_ = true;
+    since_ = interval();
+}
+
+
+::dropletFiber::StepStatistics
+Foam::dropletFiber::depositReport::widestKernels
+(
+    const cloudParcels& parcels,
+    const scalar dt
+) const
+{
+    ::dropletFiber::StepStatistics kernels;
+    for (label i = 0; i < parcels.size(); ++i)
+    {
+        ::dropletFiber::Parcel p;
+        const point& x = parcels.position[i];
+        const vector& U = parcels.U[i];
+        p.position = Eigen::Vector3d(x.x(), x.y(), x.z());
+        p.velocity = Eigen::Vector3d(U.x(), U.y(), U.z());
+        p.diameter = parcels.d[i];
+        p.nParticle = parcels.nParticle[i];
+        p.rhoDroplet = parcels.rho[i];
+        meter_.record(p, dt, kernels);
+    }
+    return kernels;
+}
+
+
+void Foam::dropletFiber::depositReport::warn(const word& timeName) const
+{
+    const interval all = overProcessors();
+    OStringStream text;
+    text.precision(3);
+    text<< owner_ << ": the deposit of the parcels takes "
+        << label(100*all.depositTime/all.stepTime + 0.5)
+        << " % of the wall time (" << all.steps << " steps to time "
+        << timeName << "; reported above " << label(100*largeShare)
+        << " %)" << nl;
+    writeFigures(text, all);
+    writeAdvice(text, all);
+    text<< "    (warned once; the figures are given again at write times)";
+    WarningInFunction << text.str().c_str() << endl;
+}
+
+
+void Foam::dropletFiber::depositReport::reportAtWrite(const word& timeName)
+{
+    const interval all = overProcessors();
+    if (all.steps > 0)
+    {
+        const scalar share = all.depositTime/all.stepTime;
+        OStringStream text;
+        text.precision(3);
+        text<< owner_ << ": deposit " << label(100*share + 0.5)
+            << " % of the wall time over " << all.steps
+            << " steps to time " << timeName << nl;
+        writeFigures(text, all);
+        if (share > largeShare)
+        {
+            writeAdvice(text, all);
+        }
+        Info<< text.str().c_str();
+    }
+    since_ = interval();
+}
+
+
+Foam::dropletFiber::depositReport::interval
+Foam::dropletFiber::depositReport::overProcessors() const
+{
+    List<scalar> sums(2);
+    sums[0] = since_.nodesVisited;
+    sums[1] = since_.parcelsOnGrid;
+    Pstream::listCombineGather(sums, plusEqOp<scalar>());
+    Pstream::listCombineScatter(sums);
+    List<scalar> maxima(4);
+    maxima[0] = since_.widestWidth;
+    maxima[1] = since_.widestReach;
+    maxima[2] = since_.stepTime > 0 ? since_.depositTime/since_.stepTime : 0;
+    maxima[3] = since_.stepTime;
+    Pstream::listCombineGather(maxima, maxEqOp<scalar>());
+    Pstream::listCombineScatter(maxima);
+
+    interval all = since_;
+    all.nodesVisited = sums[0];
+    all.parcelsOnGrid = sums[1];
+    all.widestWidth = maxima[0];
+    all.widestReach = maxima[1];
+    // The largest share of any processor, on the longest step time
+    all.stepTime = maxima[3];
+    all.depositTime = maxima[2]*maxima[3];
+    return all;
+}
+
+
+void Foam::dropletFiber::depositReport::writeFigures
+(
+    Ostream& os,
+    const interval& all
+) const
+{
+    const scalar perParcel =
+        all.parcelsOnGrid > 0 ? all.nodesVisited/all.parcelsOnGrid : 0;
+    const scalar parcelsPerStep = all.parcelsOnGrid/max(all.steps, label(1));
+    if (all.widestWidth > 0)
+    {
+        os  << "    widest kernel: width " << all.widestWidth
+            << " node spacings (eq. 16), reach " << all.widestReach
+            << " spacings (node spacing " << spacing_ << " m); ";
+    }
+    else
+    {
+        os  << "    every parcel with cloud-in-cell weights (cloudInCellBelow); ";
+    }
+    os  << label(perParcel + 0.5) << " nodes visited per parcel on the grid ("
+        << label(parcelsPerStep + 0.5) << " parcels per step)" << nl;
+}
+
+
+void Foam::dropletFiber::depositReport::writeAdvice
+(
+    Ostream& os,
+    const interval& all
+) const
+{
+    // Nodes per parcel ~ (2 reach / h)^D: what each setting does to them
+    const scalar D = scalar(activeDimensions_);
+    os  << "    settings that would help (docs/model.md sec. 4, cost of wide"
+        << " kernels):" << nl
+        << "      grid.spacing " << 2*spacing_ << " (twice the present): about "
+        << std::pow(2.0, D) << "x fewer nodes per parcel; a coarser density"
+        << " field for the collision" << nl;
+    const scalar epsilon = kernel_.negligibleWeight;
+    if (epsilon > 0 && epsilon < 1e-8)
+    {
+        // The cut reach grows as sqrt(-ln negligibleWeight) (P10)
+        const scalar shorter = std::sqrt(std::log(1e8)/(-std::log(epsilon)));
+        os  << "      grid.negligibleWeight 1e-8 (now " << epsilon
+            << "): reach about " << shorter << " of the present where the cut"
+            << " binds, about " << std::pow(1/shorter, D)
+            << "x fewer nodes; node weights below 1e-8 of a parcel's largest"
+            << " left out (mass kept)" << nl;
+    }
+    if (!(kernel_.rMaxCap > 0))
+    {
+        os  << "      grid.rMaxCap " << 3*all.widestWidth*spacing_
+            << " (3 widths of the widest kernel): about "
+            << std::pow(all.widestReach/max(3*all.widestWidth, 1e-300), D)
+            << "x fewer nodes for it; but it cuts the kernel's support and"
+            << " moves its mass inwards: density +10 % at the centre, a fiber"
+            << " passing at 3 widths captures 58-95 % less (docs/model.md"
+            << " sec. 4)" << nl;
+    }
+    if (all.widestWidth < 2)
+    {
+        os  << "      grid.cloudInCellBelow " << all.widestWidth
+            << ": every parcel to its cell corners (2^D nodes per point of"
+            << " its path); kernels of width up to that are then not resolved"
+            << nl;
+    }
+}
+
+
+// ************************************************************************* //
