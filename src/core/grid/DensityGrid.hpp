@@ -99,6 +99,7 @@
 
 #include <array>
 #include <cstddef>
+#include <functional>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -156,6 +157,23 @@ public:
     void commitStep();
     const StepStatistics& stepStatistics() const { return stepStatistics_; }
     const StepStatistics& lastStepStatistics() const { return lastStepStatistics_; }
+
+    // --- the deposit's weights re-evaluated (depletion, docs/model.md sec. 7) ------------
+    // A value per global flat node index.
+    using NodeFraction = std::function<double(std::size_t)>;
+    // sum over the nodes n of the share of the parcel's mass deposit(parcel, dt) gives n
+    // (w_n f: eq. 24's weight, folded, or the cloud-in-cell weight, times the part f of the
+    // step inside the box) times fraction(n); nothing is accumulated, the statistics stay
+    // as they are. The same code path as deposit(), so the weights are the deposit's to the
+    // bit. Only nodes in `where` are asked for: a parcel whose nodes (and those of its
+    // cloud-in-cell fallback) all lie outside it gives 0 before any weight is evaluated.
+    // The weights cover the whole grid whatever the block (fraction() decides which nodes
+    // count): blocks that each ask for their owned nodes give parts that add up.
+    double depositedShare(const Parcel& parcel, double dt, const IndexBox& where,
+                          const NodeFraction& fraction);
+    // Quantity q of the newest committed step at an owned node (global flat index): what
+    // the step's parcels, summed over the blocks, deposited there; 0 before any commit.
+    double lastStepValue(std::size_t node, int q) const;
 
     // --- step accumulator and the block's exchanges -------------------------------------
     const IndexBox& ownedBox() const { return owned_; }
@@ -234,9 +252,24 @@ private:
     }
 
     // --- deposit(), in the order of its steps (top of this file) ------------------------
-    // Steps 1-2: clips the parcel's path and books the mass outside the box; false when
-    // nothing of the parcel is to be deposited.
-    bool clipPath(const Parcel& parcel, double dt, double mass, ClippedPath& path);
+    // Where a parcel's weights go (steps 4-7): the step accumulator, the parcel's quantities
+    // times the weight (deposit), or a sum of weight times fraction(node) (depositedShare).
+    struct WeightSink
+    {
+        StepStatistics& statistics;
+        const std::array<double, nQuantities>* totals; // deposit: the parcel's quantities
+        const IndexBox* where;                         // depositedShare: the nodes asked for
+        const NodeFraction* fraction;                  // depositedShare: per node
+        double sum;                                    // depositedShare: sum weight * fraction
+        bool accumulates() const { return totals != nullptr; }
+        bool wants(const IndexBox& box) const { return where == nullptr || !box.intersected(*where).empty(); }
+    };
+
+    // Steps 1-2: clips the parcel's path and books the mass outside the box in stats; false
+    // when nothing of the parcel is to be deposited.
+    bool clipPath(const Parcel& parcel, double dt, double mass, StepStatistics& stats, ClippedPath& path);
+    // Steps 3-6: the kernel's (or the cloud-in-cell) weights of the clipped path into sink.
+    void weighPath(const Parcel& parcel, const ClippedPath& path, WeightSink& sink);
     // Distance from the path beyond which a node's weight is below
     // KernelSettings::negligibleWeight times the parcel's largest (<= reach).
     double negligibleDistance(const ParcelKernel& kernel, double pathLength) const;
@@ -258,10 +291,10 @@ private:
                               const IndexBox& box);
     // Step 4 for a box with ghost nodes: omega of every lattice node of the box (batched or
     // node by node), each added to its mirror image (folded kernels); the nodes of
-    // foldedBox that got weight go to scratch_, in node order. Returns sum omega over the
-    // lattice nodes.
+    // foldedBox (mirrorBox(box), called first) that got weight go to scratch_, in node
+    // order. Returns sum omega over the lattice nodes.
     double weighAndFold(const PathWeight& pathWeight, const Eigen::Vector3d& start, const IndexBox& box,
-                        bool batched, IndexBox& foldedBox);
+                        bool batched, const IndexBox& foldedBox);
     // omega of every lattice node of the box node by node (i fastest), valid until the next call.
     const double* latticeOmegas(const PathWeight& pathWeight, const Eigen::Vector3d& start,
                                 const IndexBox& box);
@@ -270,17 +303,19 @@ private:
     IndexBox mirrorBox(const IndexBox& box);
     // Sums omega over the lattice box of mirrorBox and folds it onto foldedBox's nodes.
     double foldOntoNodes(const double* omega, const IndexBox& foldedBox);
-    // Steps 5 and 7: scratch_'s nodes get omega / sum omega of the parcel's totals.
-    void depositWeighted(double inverseSum, const std::array<double, nQuantities>& parcelTotals,
-                         const IndexBox& box);
-    // Step 6 (and unresolved kernels): cloud-in-cell weights along the path.
-    void depositFallback(const Eigen::Vector3d& start, const Eigen::Vector3d& displacement,
-                         const std::array<double, nQuantities>& parcelTotals);
+    // Steps 5 and 7: scratch_'s nodes get omega / sum omega into the sink.
+    void sendWeighted(double inverseSum, const IndexBox& box, WeightSink& sink);
+    // Step 6 (and unresolved kernels): cloud-in-cell weights along the path into the sink.
+    void weighCloudInCell(const Eigen::Vector3d& start, const Eigen::Vector3d& displacement,
+                          WeightSink& sink);
+    // The nodes weighCloudInCell weighs for this path.
+    IndexBox cloudInCellBox(const Eigen::Vector3d& start, const Eigen::Vector3d& displacement) const;
     // One point's share on the corners of its cell (paths across many cells).
-    void depositAtCorners(const Eigen::Vector3d& point, double share,
-                          const std::array<double, nQuantities>& parcelTotals);
-    // The path's weights summed per node of its cell box (pathWeights_) onto the grid.
-    void depositPathWeights(const IndexBox& box, const std::array<double, nQuantities>& parcelTotals);
+    void sendCorners(const Eigen::Vector3d& point, double share, WeightSink& sink);
+    // The path's weights summed per node of its cell box (pathWeights_) into the sink.
+    void sendPathWeights(const IndexBox& box, WeightSink& sink);
+    // One node's weight into the sink.
+    void send(WeightSink& sink, std::size_t node, double weight);
     // Step 7 for one node.
     void accumulate(std::size_t node, double weight, const std::array<double, nQuantities>& parcelTotals);
     // The step values of a node (global flat index): stored, or its overflow entry.
