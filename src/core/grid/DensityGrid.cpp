@@ -320,6 +320,44 @@ double DensityGrid::depositedShare(const Parcel& parcel, double dt, const IndexB
     return path.fraction * sink.sum;
 }
 
+IndexBox DensityGrid::depositBox(const Parcel& parcel, double dt) const
+{
+    checkParcel(parcel, dt);
+    StepStatistics unused;
+    ClippedPath path;
+    if (parcel.nParticle == 0.0 || parcel.diameter == 0.0
+        || !clipPath(parcel, dt, parcelMass(parcel), unused, path))
+    {
+        return IndexBox{};
+    }
+    // weighPath's choices: cloud-in-cell, or the kernel's nodes with the fallback's.
+    const IndexBox cloudInCell = cloudInCellBox(path.start, path.displacement);
+    const ParcelKernel kernel(0.5 * parcel.diameter, parcel.nParticle, kernelSettings_, kernelDimension_);
+    if (kernel.width() < kernelSettings_.cloudInCellBelow * largestSpacing_)
+    {
+        return cloudInCell;
+    }
+    const double reach = negligibleDistance(kernel, path.displacement.norm());
+    const IndexBox box = nodeBox(path, reach);
+    return (withinGrid(box) ? box : foldedBox(box)).united(cloudInCell);
+}
+
+IndexBox DensityGrid::foldedBox(const IndexBox& box) const
+{
+    IndexBox folded;
+    for (int d = 0; d < 3; ++d)
+    {
+        folded.lo[d] = spec_.nodes[d];
+        folded.hi[d] = -1;
+        for (int i = box.lo[d]; i <= box.hi[d]; ++i)
+        {
+            folded.lo[d] = std::min(folded.lo[d], spec_.mirrorIndex(d, i));
+            folded.hi[d] = std::max(folded.hi[d], spec_.mirrorIndex(d, i));
+        }
+    }
+    return folded;
+}
+
 void DensityGrid::weighPath(const Parcel& parcel, const ClippedPath& path, WeightSink& sink)
 {
     StepStatistics& stats = sink.statistics;
@@ -374,7 +412,7 @@ void DensityGrid::weighPath(const Parcel& parcel, const ClippedPath& path, Weigh
 }
 
 bool DensityGrid::clipPath(const Parcel& parcel, double dt, double mass, StepStatistics& stats,
-                           ClippedPath& path)
+                           ClippedPath& path) const
 {
     const Eigen::Vector3d displacement = parcel.velocity * dt;
     const Eigen::Vector3d start = parcel.position - displacement;
@@ -1024,6 +1062,20 @@ double DensityGrid::lastStepValue(std::size_t node, int q) const
         throw std::out_of_range("DensityGrid: node " + std::to_string(node) + " is not owned by this block");
     }
     return window_.newestStepValue(flatIndexInBox(owned_, n[0], n[1], n[2]), q);
+}
+
+double DensityGrid::densityParts(const CornerWeights& corners, const double* cornerTotals,
+                                 double* parts) const
+{
+    double sum = 0.0;
+    for (int c = 0; c < corners.count; ++c)
+    {
+        const std::size_t node = corners.node[static_cast<std::size_t>(c)];
+        const double w = corners.weight[static_cast<std::size_t>(c)];
+        parts[c] = w * (cellsPerNodeVolume(node) * cornerTotals[c * nQuantities + quantityMass]);
+        sum += parts[c];
+    }
+    return sum;
 }
 
 double DensityGrid::windowMassPerStep() const

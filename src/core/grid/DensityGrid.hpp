@@ -171,6 +171,11 @@ public:
     // count): blocks that each ask for their owned nodes give parts that add up.
     double depositedShare(const Parcel& parcel, double dt, const IndexBox& where,
                           const NodeFraction& fraction);
+    // A box (grid indices) holding every node deposit(parcel, dt) can give mass to: the
+    // kernel's nodes (folded) and those of its cloud-in-cell fallback; empty when the
+    // parcel gives the grid nothing. A parallel caller sends a parcel to the blocks whose
+    // nodes of interest (CaptureLimit::takenBox) this box meets.
+    IndexBox depositBox(const Parcel& parcel, double dt) const;
     // Quantity q of the newest committed step at an owned node (global flat index): what
     // the step's parcels, summed over the blocks, deposited there; 0 before any commit.
     double lastStepValue(std::size_t node, int q) const;
@@ -226,6 +231,11 @@ public:
     // sample()'s value from the window sums of the corners (corner c's nQuantities values
     // at cornerTotals + c * nQuantities): the same arithmetic, in the same order.
     DropletFieldValue interpolated(const CornerWeights& corners, const double* cornerTotals) const;
+    // Each corner's part of the interpolated mass sum that gives sample()'s rho (the
+    // corner weight times the corner's window mass per whole cell), into parts[c]; returns
+    // their sum, rho times (node volume x steps in the window): the same arithmetic, in the
+    // same order, as interpolated().
+    double densityParts(const CornerWeights& corners, const double* cornerTotals, double* parts) const;
     // Window mass per step on the owned nodes: sum over them of S_mass / s (kg).
     double windowMassPerStep() const;
 
@@ -267,7 +277,8 @@ private:
 
     // Steps 1-2: clips the parcel's path and books the mass outside the box in stats; false
     // when nothing of the parcel is to be deposited.
-    bool clipPath(const Parcel& parcel, double dt, double mass, StepStatistics& stats, ClippedPath& path);
+    bool clipPath(const Parcel& parcel, double dt, double mass, StepStatistics& stats,
+                  ClippedPath& path) const;
     // Steps 3-6: the kernel's (or the cloud-in-cell) weights of the clipped path into sink.
     void weighPath(const Parcel& parcel, const ClippedPath& path, WeightSink& sink);
     // Distance from the path beyond which a node's weight is below
@@ -289,6 +300,9 @@ private:
     double weighNodesBatched(const PathWeight& pathWeight, const Eigen::Vector3d& start, const IndexBox& box);
     double weighNodesOneByOne(const PathWeight& pathWeight, const Eigen::Vector3d& start,
                               const IndexBox& box);
+    // The nodes the lattice box's nodes fold onto (mirror images; the box itself when it
+    // holds no ghost node).
+    IndexBox foldedBox(const IndexBox& box) const;
     // Step 4 for a box with ghost nodes: omega of every lattice node of the box (batched or
     // node by node), each added to its mirror image (folded kernels); the nodes of
     // foldedBox (mirrorBox(box), called first) that got weight go to scratch_, in node
