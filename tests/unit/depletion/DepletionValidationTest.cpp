@@ -117,6 +117,9 @@ TEST(DepletionValidation, FiberRowsBalanceSprayedAirborneLeftCaptured)
     spray.fiberRadius = 1.19e-3;
     spray.run(warmUp, measured);
     const double balance = spray.sprayed - (spray.airborne() + spray.left + spray.captured);
+    std::printf("captured %.4f of the sprayed mass, balance %.1e of it, %lld node-steps limited\n",
+                spray.captured / spray.sprayed, balance / spray.sprayed,
+                static_cast<long long>(spray.limits.nodesLimited));
     EXPECT_GT(spray.limits.nodesLimited, 0);
     EXPECT_GT(spray.captured, 0.5 * spray.sprayed);
     EXPECT_LT(std::abs(balance), 1e-12 * spray.sprayed);
@@ -172,10 +175,11 @@ TEST(DepletionValidation, RandomMatPenetrationFollowsSingleFiberTheory)
     const double E = 1.0 + dp / dF;
     const double c = 2.0 * (spray.fiberRadius + spray.dropletRadius) / spray.h; // per fiber and column
     double worst = 0.0;
-    for (int q = 1; q <= 20; ++q)
+    for (int q = 0; q <= 20; ++q)
     {
-        // The mat down to depth t: its fibers' capture, its solidity from its fibers.
-        const double t = q * 2.0 * spray.h;
+        // The mat down to depth t (1, 2, 4, ... 40 spacings): its fibers' capture, its
+        // solidity from its fibers.
+        const double t = std::max(1, 2 * q) * spray.h;
         int count = 0;
         double captured = 0.0;
         for (std::size_t n = 0; n < spray.fibers.size(); ++n)
@@ -202,9 +206,9 @@ TEST(DepletionValidation, RandomMatPenetrationFollowsSingleFiberTheory)
                     alpha * t / dF, model, theory, model / theory, tolerance);
         EXPECT_NEAR(model / theory, 1.0, tolerance) << "depth " << t;
         worst = std::max(worst, std::abs(model / theory - 1.0));
-        if (q == 1)
+        if (q == 0)
         {
-            EXPECT_GT(theory, 0.85); // the range asked for: from ~0.9 ...
+            EXPECT_GT(theory, 0.9); // the range asked for: from ~0.9 ...
         }
         if (q == 20)
         {
@@ -213,5 +217,6 @@ TEST(DepletionValidation, RandomMatPenetrationFollowsSingleFiberTheory)
     }
     const double balance = spray.sprayed - (spray.airborne() + spray.left + spray.captured);
     EXPECT_LT(std::abs(balance), 1e-12 * spray.sprayed);
-    std::printf("largest deviation from theory %.4f\n", worst);
+    std::printf("largest deviation from theory %.4f; balance %.1e of the sprayed mass\n", worst,
+                balance / spray.sprayed);
 }
