@@ -11,7 +11,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <fstream>
 #include <random>
+#include <string>
 
 using namespace dropletFiber;
 
@@ -54,6 +57,14 @@ std::vector<double> passingFractions(const test::StraightSpray& spray, int rowCo
     return passing;
 }
 
+// With DROPLETFIBER_DEPLETION_CSV set to a folder (validation/run.sh), the tables of
+// docs/validation.md (depletion) go to NAME.csv there; otherwise nowhere.
+std::ofstream validationTable(const std::string& name)
+{
+    const char* folder = std::getenv("DROPLETFIBER_DEPLETION_CSV");
+    return folder == nullptr ? std::ofstream{} : std::ofstream(std::string(folder) + "/" + name + ".csv");
+}
+
 constexpr int rowCount = 12;
 // Warm-up: the spray crosses the 56 spacings in 112 steps; then every step is the same.
 constexpr int warmUp = 120, measured = 8;
@@ -89,8 +100,14 @@ TEST(DepletionValidation, WithoutDepletionTheRowsErrorGrowsWithoutBound)
     test::StraightSpray depleted = fiberRows(rowCount, true);
     depleted.run(warmUp, measured);
     const std::vector<double> passingDepleted = passingFractions(depleted, rowCount);
+    std::ofstream table = validationTable("depletionRows");
+    table.precision(10);
+    table << "rows,depleted,notDepleted,oneMinusFToTheK,onePlusFToTheMinusK\n";
     for (int k = 1; k <= rowCount; ++k)
     {
+        table << k << ',' << passingDepleted[static_cast<std::size_t>(k)] << ','
+              << passing[static_cast<std::size_t>(k)] << ',' << std::pow(1.0 - f, k) << ','
+              << std::pow(1.0 + f, -k) << '\n';
         // Every row sees the undepleted spray: P_k = 1 - k f exactly (the grid reads the
         // incoming density exactly, StraightSpray.hpp), below (1 - f)^k by
         // C(k,2) f^2 - C(k,3) f^3 + ..., which grows as k^2 and turns negative at k = 1/f.
@@ -175,6 +192,9 @@ TEST(DepletionValidation, RandomMatPenetrationFollowsSingleFiberTheory)
     const double E = 1.0 + dp / dF;
     const double c = 2.0 * (spray.fiberRadius + spray.dropletRadius) / spray.h; // per fiber and column
     double worst = 0.0;
+    std::ofstream table = validationTable("depletionMat");
+    table.precision(10);
+    table << "alphaTOverDF,model,theory,tolerance\n";
     for (int q = 0; q <= 20; ++q)
     {
         // The mat down to depth t (1, 2, 4, ... 40 spacings): its fibers' capture, its
@@ -204,6 +224,7 @@ TEST(DepletionValidation, RandomMatPenetrationFollowsSingleFiberTheory)
         const double tolerance = -std::log(theory) * (0.5 * kappa * spray.speed * spray.dt + 0.5 * c) + 0.005;
         std::printf("alpha t/dF %.3f: P model %.4f, theory %.4f, ratio %.4f, tolerance %.4f\n",
                     alpha * t / dF, model, theory, model / theory, tolerance);
+        table << alpha * t / dF << ',' << model << ',' << theory << ',' << tolerance << '\n';
         EXPECT_NEAR(model / theory, 1.0, tolerance) << "depth " << t;
         worst = std::max(worst, std::abs(model / theory - 1.0));
         if (q == 0)
