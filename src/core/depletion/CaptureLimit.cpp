@@ -88,6 +88,7 @@ void CaptureLimit::clear()
     granted_.clear();
     taken_.clear();
     takenBox_ = IndexBox{};
+    takenBricks_.clear();
 }
 
 void CaptureLimit::addDemand(const SampleCapture& sample)
@@ -139,7 +140,13 @@ CaptureLimitReport CaptureLimit::limit(const DensityGrid& grid)
     CaptureLimitReport report;
     taken_.clear();
     takenBox_ = IndexBox{};
+    takenBricks_.clear();
     const std::array<int, 3> nodes = grid.spec().nodes;
+    for (int d = 0; d < 3; ++d)
+    {
+        bricks_[static_cast<std::size_t>(d)]
+            = static_cast<std::size_t>((nodes[d] + brickSize - 1) / brickSize);
+    }
     for (const auto& [node, demand] : demand_)
     {
         if (!grid.owns(node))
@@ -157,17 +164,44 @@ CaptureLimitReport CaptureLimit::limit(const DensityGrid& grid)
         if (granted > 0.0)
         {
             taken_[node] = std::min(1.0, demand / supply);
-            const auto i = static_cast<int>(node % static_cast<std::size_t>(nodes[0]));
-            const auto j = static_cast<int>((node / static_cast<std::size_t>(nodes[0]))
-                                            % static_cast<std::size_t>(nodes[1]));
-            const auto k = static_cast<int>(
-                node / (static_cast<std::size_t>(nodes[0]) * static_cast<std::size_t>(nodes[1])));
-            IndexBox one;
-            one.lo = one.hi = {{i, j, k}};
-            takenBox_ = takenBox_.united(one);
+            markTaken(node, nodes);
         }
     }
     return report;
+}
+
+void CaptureLimit::markTaken(std::size_t node, const std::array<int, 3>& nodes)
+{
+    const auto nx = static_cast<std::size_t>(nodes[0]);
+    const auto ny = static_cast<std::size_t>(nodes[1]);
+    IndexBox one;
+    one.lo = one.hi = {{static_cast<int>(node % nx), static_cast<int>((node / nx) % ny),
+                        static_cast<int>(node / (nx * ny))}};
+    takenBox_ = takenBox_.united(one);
+    takenBricks_.insert(brickIndex(one.lo[0] / brickSize, one.lo[1] / brickSize, one.lo[2] / brickSize));
+}
+
+bool CaptureLimit::mayTake(const IndexBox& box) const
+{
+    const IndexBox candidates = box.intersected(takenBox_);
+    if (candidates.empty())
+    {
+        return false;
+    }
+    for (int k = candidates.lo[2] / brickSize; k <= candidates.hi[2] / brickSize; ++k)
+    {
+        for (int j = candidates.lo[1] / brickSize; j <= candidates.hi[1] / brickSize; ++j)
+        {
+            for (int i = candidates.lo[0] / brickSize; i <= candidates.hi[0] / brickSize; ++i)
+            {
+                if (takenBricks_.count(brickIndex(i, j, k)) != 0)
+                {
+                    return true;
+                }
+            }
+        }
+    }
+    return false;
 }
 
 double CaptureLimit::grantedRatio(std::size_t node) const
@@ -229,7 +263,8 @@ double CaptureLimit::capturedFraction(DensityGrid& grid, const Parcel& parcel, d
         return 0.0;
     }
     const DensityGrid::NodeFraction fraction = [this](std::size_t node) { return takenFraction(node); };
-    return std::min(1.0, grid.depositedShare(parcel, dt, takenBox_, fraction));
+    const DensityGrid::NodeBoxTest asks = [this](const IndexBox& box) { return mayTake(box); };
+    return std::min(1.0, grid.depositedShare(parcel, dt, asks, fraction));
 }
 
 } // namespace dropletFiber

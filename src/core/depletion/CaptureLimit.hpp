@@ -40,6 +40,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 namespace dropletFiber
@@ -124,16 +125,30 @@ public:
     double takenFraction(std::size_t node) const;
     // The owned nodes with f_n > 0 (a block tells the others; empty: nothing to remove here).
     const IndexBox& takenBox() const { return takenBox_; }
+    // True when the box (grid indices) may hold a node with f_n > 0: it meets a brick of
+    // brickSize^3 nodes that holds one.
+    bool mayTake(const IndexBox& box) const;
     // c_p over the nodes this block owns (the whole grid: c_p itself), in [0, 1]. The same
-    // parcel and dt as deposited this step. Parcels whose deposit box misses takenBox()
-    // cost a clip and a box.
+    // parcel and dt as deposited this step. A parcel whose deposit nodes meet no brick
+    // with f_n > 0 costs a clip and a box, not its weights.
     double capturedFraction(DensityGrid& grid, const Parcel& parcel, double dt) const;
+    static constexpr int brickSize = 4;
 
 private:
+    // f_n > 0 at the node: takenBox_ and its brick.
+    void markTaken(std::size_t node, const std::array<int, 3>& nodes);
+    std::size_t brickIndex(int i, int j, int k) const
+    {
+        return static_cast<std::size_t>(i)
+            + bricks_[0] * (static_cast<std::size_t>(j) + bricks_[1] * static_cast<std::size_t>(k));
+    }
+
     std::unordered_map<std::size_t, double> demand_;
     std::unordered_map<std::size_t, double> granted_; // g_n
     std::unordered_map<std::size_t, double> taken_;   // f_n > 0, owned nodes
     IndexBox takenBox_;
+    std::array<std::size_t, 3> bricks_{}; // per direction, over the grid
+    std::unordered_set<std::size_t> takenBricks_;
 };
 
 } // namespace dropletFiber

@@ -300,11 +300,11 @@ void DensityGrid::deposit(const Parcel& parcel, double dt)
     weighPath(parcel, path, sink);
 }
 
-double DensityGrid::depositedShare(const Parcel& parcel, double dt, const IndexBox& where,
+double DensityGrid::depositedShare(const Parcel& parcel, double dt, const NodeBoxTest& asks,
                                    const NodeFraction& fraction)
 {
     checkParcel(parcel, dt);
-    if (parcel.nParticle == 0.0 || parcel.diameter == 0.0 || where.empty())
+    if (parcel.nParticle == 0.0 || parcel.diameter == 0.0)
     {
         return 0.0;
     }
@@ -315,7 +315,7 @@ double DensityGrid::depositedShare(const Parcel& parcel, double dt, const IndexB
     {
         return 0.0;
     }
-    WeightSink sink{unused, nullptr, &where, &fraction, 0.0};
+    WeightSink sink{unused, nullptr, &asks, &fraction, 0.0};
     weighPath(parcel, path, sink);
     return path.fraction * sink.sum;
 }

@@ -161,15 +161,17 @@ public:
     // --- the deposit's weights re-evaluated (depletion, docs/model.md sec. 7) ------------
     // A value per global flat node index.
     using NodeFraction = std::function<double(std::size_t)>;
+    // True when a box of nodes (grid indices) may hold a node whose fraction is not 0.
+    using NodeBoxTest = std::function<bool(const IndexBox&)>;
     // sum over the nodes n of the share of the parcel's mass deposit(parcel, dt) gives n
     // (w_n f: eq. 24's weight, folded, or the cloud-in-cell weight, times the part f of the
     // step inside the box) times fraction(n); nothing is accumulated, the statistics stay
     // as they are. The same code path as deposit(), so the weights are the deposit's to the
-    // bit. Only nodes in `where` are asked for: a parcel whose nodes (and those of its
-    // cloud-in-cell fallback) all lie outside it gives 0 before any weight is evaluated.
+    // bit. A parcel whose nodes (and those of its cloud-in-cell fallback) `asks` turns down
+    // gives 0 before any weight is evaluated (cheap where few nodes have a fraction).
     // The weights cover the whole grid whatever the block (fraction() decides which nodes
     // count): blocks that each ask for their owned nodes give parts that add up.
-    double depositedShare(const Parcel& parcel, double dt, const IndexBox& where,
+    double depositedShare(const Parcel& parcel, double dt, const NodeBoxTest& asks,
                           const NodeFraction& fraction);
     // A box (grid indices) holding every node deposit(parcel, dt) can give mass to: the
     // kernel's nodes (folded) and those of its cloud-in-cell fallback; empty when the
@@ -268,11 +270,11 @@ private:
     {
         StepStatistics& statistics;
         const std::array<double, nQuantities>* totals; // deposit: the parcel's quantities
-        const IndexBox* where;                         // depositedShare: the nodes asked for
+        const NodeBoxTest* asks;                       // depositedShare: boxes that may matter
         const NodeFraction* fraction;                  // depositedShare: per node
         double sum;                                    // depositedShare: sum weight * fraction
         bool accumulates() const { return totals != nullptr; }
-        bool wants(const IndexBox& box) const { return where == nullptr || !box.intersected(*where).empty(); }
+        bool wants(const IndexBox& box) const { return asks == nullptr || (!box.empty() && (*asks)(box)); }
     };
 
     // Steps 1-2: clips the parcel's path and books the mass outside the box in stats; false

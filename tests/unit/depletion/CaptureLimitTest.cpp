@@ -68,6 +68,8 @@ void checkSharesAgainstDeposit(const GridSpec& spec, const KernelSettings& setti
         f = unit(rng);
     }
     const DensityGrid::NodeFraction fractionAt = [&](std::size_t node) { return fraction[node]; };
+    const DensityGrid::NodeBoxTest askAll = [](const IndexBox&) { return true; };
+    const DensityGrid::NodeBoxTest askNone = [](const IndexBox&) { return false; };
     int withMass = 0;
     for (const Parcel& parcel : randomParcels(spec, 300, seed))
     {
@@ -86,14 +88,9 @@ void checkSharesAgainstDeposit(const GridSpec& spec, const KernelSettings& setti
         const double parcelTotal = parcelMass(parcel);
         expected /= parcelTotal;
         withMass += expected > 0.0 ? 1 : 0;
-        EXPECT_NEAR(grid.depositedShare(parcel, dt, spec.fullBox(), fractionAt), expected, 1e-13);
-        // Asking for nodes away from the parcel's box gives 0 without weighing.
-        IndexBox far = box;
-        far.lo[0] = far.hi[0] = box.hi[0] + 1;
-        if (box.hi[0] + 1 < spec.nodes[0])
-        {
-            EXPECT_EQ(grid.depositedShare(parcel, dt, far, fractionAt), 0.0);
-        }
+        EXPECT_NEAR(grid.depositedShare(parcel, dt, askAll, fractionAt), expected, 1e-13);
+        // A test that turns down every box gives 0 (nothing weighed).
+        EXPECT_EQ(grid.depositedShare(parcel, dt, askNone, fractionAt), 0.0);
     }
     EXPECT_GT(withMass, 200);
     EXPECT_GT(grid.lastStepStatistics().parcels, 0);
@@ -122,9 +119,10 @@ TEST(DepositedShare, LeavesTheStepAndItsStatisticsAlone)
     const std::vector<double> before = grid.stepValues();
     const std::int64_t parcelsBefore = grid.stepStatistics().parcels;
     const DensityGrid::NodeFraction one = [](std::size_t) { return 1.0; };
+    const DensityGrid::NodeBoxTest askAll = [](const IndexBox&) { return true; };
     for (const Parcel& parcel : parcels)
     {
-        grid.depositedShare(parcel, 1e-3, spec.fullBox(), one);
+        grid.depositedShare(parcel, 1e-3, askAll, one);
     }
     EXPECT_EQ(grid.stepValues(), before);
     EXPECT_EQ(grid.stepStatistics().parcels, parcelsBefore);
@@ -231,6 +229,16 @@ TEST(CaptureLimit, TakesAtMostWhatTheStepDepositedAndScalesTheSamples)
     EXPECT_NEAR(limit.capturedFraction(grid, p, 1e-3), 1.0, 1e-15);
     p.position = spec.nodePosition(9, 5, 0);
     EXPECT_NEAR(limit.capturedFraction(grid, p, 1e-3), 0.25, 1e-15);
+    // Only boxes near A and B may take (bricks of 4 nodes: A in brick 1, B in brick 2 of x).
+    IndexBox nearA, far;
+    nearA.lo = {{4, 4, 0}};
+    nearA.hi = {{5, 5, 0}};
+    far.lo = {{20, 10, 0}};
+    far.hi = {{25, 15, 0}};
+    EXPECT_TRUE(limit.mayTake(nearA));
+    EXPECT_FALSE(limit.mayTake(far));
+    p.position = spec.nodePosition(22, 12, 0);
+    EXPECT_EQ(limit.capturedFraction(grid, p, 1e-3), 0.0);
     EXPECT_THROW(limit.grantedRatio(spec.flatIndex(1, 1, 0)), std::out_of_range);
     EXPECT_THROW(limit.addDemand(nodeA, -1.0), std::invalid_argument);
 }
