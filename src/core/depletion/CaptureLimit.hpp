@@ -26,8 +26,8 @@
 // (takeForeignDemand -> send -> addDemand); limit() runs on each block over its owned
 // nodes; g_n of remote corners is asked of their owners (grantedRatio there,
 // setGrantedRatio here); c_p is a sum over nodes, so each block evaluates the part over
-// the nodes it owns for every parcel whose deposit box meets its takenBox(), and the
-// parts of one parcel from several blocks add up.
+// the nodes it owns for every parcel whose deposit box (DensityGrid::depositBox) meets its
+// takenBox(), and the parts of one parcel from several blocks add up (clamp the sum to 1).
 #pragma once
 
 #include "collision/CollisionMass.hpp"

@@ -72,6 +72,10 @@
 // interpolated() forms sample()'s value from the totals of a point's corners, wherever
 // they were read. With the whole grid as the block (the default) nothing changes.
 //
+// Depletion (docs/model.md sec. 7): depositedShare() re-evaluates a parcel's weights by
+// deposit()'s own code path (steps 1-6 send them to a sink: the step accumulator, or a
+// sum weighted per node), lastStepValue() reads what the newest committed step deposited.
+//
 // Restart: saveWindow()/restoreWindow() (AveragingWindow.hpp); the restored grid gives
 // bit-for-bit the same fields and the same results for later steps.
 //
