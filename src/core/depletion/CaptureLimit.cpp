@@ -256,6 +256,34 @@ double CaptureLimit::takenFraction(std::size_t node) const
     return entry == taken_.end() ? 0.0 : entry->second;
 }
 
+std::vector<NodeMass> CaptureLimit::takenFractions() const
+{
+    std::vector<NodeMass> fractions;
+    for (const auto& [node, fraction] : taken_)
+    {
+        fractions.push_back(NodeMass{node, fraction});
+    }
+    std::sort(fractions.begin(), fractions.end(),
+              [](const NodeMass& x, const NodeMass& y) { return x.node < y.node; });
+    return fractions;
+}
+
+void CaptureLimit::setTakenFraction(std::size_t node, double fraction, const std::array<int, 3>& gridNodes)
+{
+    if (!(fraction > 0.0 && fraction <= 1.0))
+    {
+        throw std::invalid_argument("CaptureLimit::setTakenFraction: fraction at node " + std::to_string(node)
+                                    + " must be in (0, 1], got " + std::to_string(fraction));
+    }
+    for (int d = 0; d < 3; ++d)
+    {
+        bricks_[static_cast<std::size_t>(d)]
+            = static_cast<std::size_t>((gridNodes[d] + brickSize - 1) / brickSize);
+    }
+    taken_[node] = fraction;
+    markTaken(node, gridNodes);
+}
+
 double CaptureLimit::capturedFraction(DensityGrid& grid, const Parcel& parcel, double dt) const
 {
     if (taken_.empty())

@@ -123,6 +123,12 @@ public:
     // --- 3. removal -------------------------------------------------------------------------------
     // f_n (0 at nodes without demand).
     double takenFraction(std::size_t node) const;
+    // The nodes with f_n > 0 known here and their f_n (NodeMass::mass holds f_n), in node order.
+    std::vector<NodeMass> takenFractions() const;
+    // f_n of a node owned elsewhere (its owner's takenFractions()): a block that has them
+    // for every node its parcels' deposit boxes reach evaluates their whole c_p itself,
+    // instead of sending them to the owners.
+    void setTakenFraction(std::size_t node, double fraction, const std::array<int, 3>& gridNodes);
     // The owned nodes with f_n > 0 (a block tells the others; empty: nothing to remove here).
     const IndexBox& takenBox() const { return takenBox_; }
     // True when the box (grid indices) may hold a node with f_n > 0: it meets a brick of

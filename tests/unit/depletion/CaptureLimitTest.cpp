@@ -317,4 +317,18 @@ TEST(CaptureLimit, BlocksGivePartsThatAddUpToTheWholeGrids)
     }
     // Removed from the parcels = granted to the fibers (P14).
     EXPECT_NEAR(removed, wholeReport.massGranted, 1e-12 * wholeReport.massGranted);
+    // The other way: block 0 imports every f_n from the owners and evaluates c_p alone.
+    CaptureLimit imported;
+    for (const CaptureLimit& owner : blockLimits)
+    {
+        for (const NodeMass& entry : owner.takenFractions())
+        {
+            imported.setTakenFraction(entry.node, entry.mass, spec.nodes);
+        }
+    }
+    for (const Parcel& parcel : parcels)
+    {
+        EXPECT_NEAR(imported.capturedFraction(*blocks[0], parcel, dt),
+                    wholeLimit.capturedFraction(whole, parcel, dt), 1e-14);
+    }
 }
