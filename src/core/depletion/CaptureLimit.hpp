@@ -27,7 +27,9 @@
 // nodes; g_n of remote corners is asked of their owners (grantedRatio there,
 // setGrantedRatio here); c_p is a sum over nodes, so each block evaluates the part over
 // the nodes it owns for every parcel whose deposit box (DensityGrid::depositBox) meets its
-// takenBox(), and the parts of one parcel from several blocks add up (clamp the sum to 1).
+// takenBox(), and the parts of one parcel from several blocks add up (clamp the sum to 1);
+// or a block imports the owners' f_n (takenFractions -> setTakenFraction) for the nodes its
+// parcels' deposit boxes reach and evaluates whole c_p itself.
 #pragma once
 
 #include "collision/CollisionMass.hpp"
