@@ -258,6 +258,35 @@ def accuracy(d, out):
     finish(fig, os.path.join(out, "accuracy.png"))
 
 
+def depletion(d, out):
+    """Depletion (docs/model.md sec. 7): fiber rows and a random mat, from the CSVs the
+    depletion unit tests write (validation/run.sh); skipped when they are absent."""
+    if not os.path.exists(os.path.join(d, "depletionRows.csv")):
+        return
+    rows, mat = read(d, "depletionRows"), read(d, "depletionMat")
+    fig, (a, b) = plt.subplots(1, 2, figsize=(13, 4.8))
+    k = rows["rows"]
+    a.fill_between(k, rows["oneMinusFToTheK"], rows["onePlusFToTheMinusK"], color="tab:green", alpha=0.2,
+                   label="bracket (1-f)^k ... (1+f)^-k")
+    a.plot(k, rows["oneMinusFToTheK"], color="black", lw=2.0, label="(1-f)^k, f = 0.05")
+    a.plot(k, rows["depleted"], color="tab:green", marker="o", ms=4, label="grid, depletion")
+    a.plot(k, rows["notDepleted"], color="tab:red", ls="--", marker="x", label="grid, no depletion (1 - k f)")
+    a.set_xlabel("rows of fibers passed, k")
+    a.set_ylabel("fraction of the sprayed mass passing")
+    a.set_title("Rows of parallel fibers, spacing s, f = 2 (r_F + r_p) / s")
+    a.legend(fontsize=8)
+    a.grid(alpha=0.3)
+    x = mat["alphaTOverDF"]
+    b.semilogy(x, mat["theory"], color="black", lw=2.0, label="exp(-4 alpha E t / (pi d_F)) (eq. P15)")
+    b.semilogy(x, mat["model"], color="tab:green", marker="o", ms=4, ls="none", label="grid, depletion")
+    b.set_xlabel("alpha t / d_F")
+    b.set_ylabel("penetration P")
+    b.set_title("Random fiber mat, straight paths, E = 1 + d_p / d_F = 5/3")
+    b.legend(fontsize=8)
+    b.grid(alpha=0.3, which="both")
+    finish(fig, os.path.join(out, "depletion.png"))
+
+
 def main():
     if len(sys.argv) < 2:
         print(__doc__)
@@ -265,7 +294,7 @@ def main():
     data = sys.argv[1]
     out = sys.argv[2] if len(sys.argv) > 2 else data
     os.makedirs(out, exist_ok=True)
-    for make in (figure7, figure8, figure9, figure10, radius, sawtooth, accuracy):
+    for make in (figure7, figure8, figure9, figure10, radius, sawtooth, accuracy, depletion):
         make(data, out)
 
 

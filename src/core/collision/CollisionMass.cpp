@@ -55,13 +55,17 @@ Eigen::Vector3d samplePoint(const Eigen::Vector3d& a, const Eigen::Vector3d& b, 
 SegmentCollision collisionMassFromSamples(const DropletFieldValue* fields, int samples,
                                           const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                                           double fiberRadius, const Eigen::Vector3d& segmentVelocity,
-                                          double dt, const CollisionOptions& options)
+                                          double dt, const CollisionOptions& options, double* sampleMasses)
 {
     SegmentCollision result;
     const Eigen::Vector3d piece = (b - a) / samples;
     result.samples = samples;
     for (int s = 0; s < samples; ++s)
     {
+        if (sampleMasses != nullptr)
+        {
+            sampleMasses[s] = 0.0;
+        }
         const DropletFieldValue& field = fields[s];
         if (!field.inside)
         {
@@ -78,6 +82,10 @@ SegmentCollision collisionMassFromSamples(const DropletFieldValue* fields, int s
         const double mass = collisionMass(field.rho, meanRadius, fiberRadius, piece, relative, dt);
         result.mass += mass;
         result.momentum += mass * field.velocity;
+        if (sampleMasses != nullptr)
+        {
+            sampleMasses[s] = mass;
+        }
     }
     return result;
 }

@@ -75,10 +75,13 @@ int collisionSamples(const GridSpec& spec, const Eigen::Vector3d& a, const Eigen
 Eigen::Vector3d samplePoint(const Eigen::Vector3d& a, const Eigen::Vector3d& b, int samples, int s);
 
 // Eq. 9 and the momentum for the segment from a to b, from the droplet field at its
-// `samples` sample points (fields[s] at samplePoint(a, b, samples, s)).
+// `samples` sample points (fields[s] at samplePoint(a, b, samples, s)). With sampleMasses
+// (`samples` values) each sample's m_coll too (0 outside the grid or where rho is 0): the
+// segment's mass is their sum (depletion attributes them to the nodes, CaptureLimit.hpp).
 SegmentCollision collisionMassFromSamples(const DropletFieldValue* fields, int samples,
                                           const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                                           double fiberRadius, const Eigen::Vector3d& segmentVelocity,
-                                          double dt, const CollisionOptions& options);
+                                          double dt, const CollisionOptions& options,
+                                          double* sampleMasses = nullptr);
 
 } // namespace dropletFiber

@@ -180,6 +180,17 @@ void AveragingWindow::push(const double* step, const IndexBox& stepRegion, const
     staleBox_ = staleBox_.united(evicted.united(local));
 }
 
+double AveragingWindow::newestStepValue(std::size_t node, int q) const
+{
+    if (filled_ == 0)
+    {
+        return 0.0;
+    }
+    // A slot is zero outside its box (push clears the evicted box), so any node reads it.
+    const std::vector<double>& newest = slots_[slotIndex(filled_ - 1)];
+    return newest[node * static_cast<std::size_t>(nQuantities_) + static_cast<std::size_t>(q)];
+}
+
 const std::vector<double>& AveragingWindow::total() const
 {
     if (!staleBox_.empty())

@@ -71,6 +71,8 @@ public:
     const std::vector<double>& total() const;
     // The window total of one node, nQuantities values into `sums` (no full update).
     void nodeTotal(std::size_t node, double* sums) const;
+    // Quantity q of the newest committed step at a node of the region (0 before any).
+    double newestStepValue(std::size_t node, int q) const;
     int length() const { return length_; }
     int filled() const { return filled_; } // steps in the window, <= length
     std::int64_t committedSteps() const { return committed_; }

@@ -291,12 +291,77 @@ void DensityGrid::deposit(const Parcel& parcel, double dt)
 
     // 1-2. Path during the step, clipped to the grid box.
     ClippedPath path;
-    if (!clipPath(parcel, dt, mass, path))
+    if (!clipPath(parcel, dt, mass, stats, path))
     {
         return;
     }
+    // 3-7. The weights of the nodes, onto the step accumulator.
     const std::array<double, nQuantities> totals = parcelTotals(parcel, mass, path.fraction);
+    WeightSink sink{stats, &totals, nullptr, nullptr, 0.0};
+    weighPath(parcel, path, sink);
+}
 
+double DensityGrid::depositedShare(const Parcel& parcel, double dt, const NodeBoxTest& asks,
+                                   const NodeFraction& fraction)
+{
+    checkParcel(parcel, dt);
+    if (parcel.nParticle == 0.0 || parcel.diameter == 0.0)
+    {
+        return 0.0;
+    }
+    // deposit()'s steps on their own statistics, the weights into the sum.
+    StepStatistics unused;
+    ClippedPath path;
+    if (!clipPath(parcel, dt, parcelMass(parcel), unused, path))
+    {
+        return 0.0;
+    }
+    WeightSink sink{unused, nullptr, &asks, &fraction, 0.0};
+    weighPath(parcel, path, sink);
+    return path.fraction * sink.sum;
+}
+
+IndexBox DensityGrid::depositBox(const Parcel& parcel, double dt) const
+{
+    checkParcel(parcel, dt);
+    StepStatistics unused;
+    ClippedPath path;
+    if (parcel.nParticle == 0.0 || parcel.diameter == 0.0
+        || !clipPath(parcel, dt, parcelMass(parcel), unused, path))
+    {
+        return IndexBox{};
+    }
+    // weighPath's choices: cloud-in-cell, or the kernel's nodes with the fallback's.
+    const IndexBox cloudInCell = cloudInCellBox(path.start, path.displacement);
+    const ParcelKernel kernel(0.5 * parcel.diameter, parcel.nParticle, kernelSettings_, kernelDimension_);
+    if (kernel.width() < kernelSettings_.cloudInCellBelow * largestSpacing_)
+    {
+        return cloudInCell;
+    }
+    const double reach = negligibleDistance(kernel, path.displacement.norm());
+    const IndexBox box = nodeBox(path, reach);
+    return (withinGrid(box) ? box : foldedBox(box)).united(cloudInCell);
+}
+
+IndexBox DensityGrid::foldedBox(const IndexBox& box) const
+{
+    IndexBox folded;
+    for (int d = 0; d < 3; ++d)
+    {
+        folded.lo[d] = spec_.nodes[d];
+        folded.hi[d] = -1;
+        for (int i = box.lo[d]; i <= box.hi[d]; ++i)
+        {
+            folded.lo[d] = std::min(folded.lo[d], spec_.mirrorIndex(d, i));
+            folded.hi[d] = std::max(folded.hi[d], spec_.mirrorIndex(d, i));
+        }
+    }
+    return folded;
+}
+
+void DensityGrid::weighPath(const Parcel& parcel, const ClippedPath& path, WeightSink& sink)
+{
+    StepStatistics& stats = sink.statistics;
     // 3. Kernel; unresolved ones go to the cell corners.
     const double radius = 0.5 * parcel.diameter;
     const ParcelKernel kernel(radius, parcel.nParticle, kernelSettings_, kernelDimension_);
@@ -307,7 +372,7 @@ void DensityGrid::deposit(const Parcel& parcel, double dt)
     if (kernel.width() < kernelSettings_.cloudInCellBelow * largestSpacing_)
     {
         ++stats.parcelsCloudInCell;
-        depositFallback(path.start, path.displacement, totals);
+        weighCloudInCell(path.start, path.displacement, sink);
         return;
     }
     PathWeight pathWeight(kernel, path.start, path.displacement);
@@ -317,11 +382,16 @@ void DensityGrid::deposit(const Parcel& parcel, double dt)
     // 4. Weights of the lattice nodes in the bounding box of the swept capsule; ghost
     // nodes beyond the faces are folded onto their mirror images.
     const IndexBox box = nodeBox(path, reach);
+    const bool folded = !withinGrid(box);
+    const IndexBox weightedBox = folded ? mirrorBox(box) : box;
+    if (!sink.wants(weightedBox) && !sink.wants(cloudInCellBox(path.start, path.displacement)))
+    {
+        return; // depositedShare: neither these nodes nor the fallback's are asked for
+    }
     const bool batched
         = batched_ && !pathWeight.stationary() && box.nodeCount() >= PathWeightBatch::minimumBoxNodes;
-    IndexBox weightedBox = box;
     double omegaSum = 0.0;
-    if (!withinGrid(box))
+    if (folded)
     {
         omegaSum = weighAndFold(pathWeight, path.start, box, batched, weightedBox);
     }
@@ -336,10 +406,10 @@ void DensityGrid::deposit(const Parcel& parcel, double dt)
     if (!(omegaSum >= DBL_MIN))
     {
         ++stats.parcelsFallback;
-        depositFallback(path.start, path.displacement, totals);
+        weighCloudInCell(path.start, path.displacement, sink);
         return;
     }
-    depositWeighted(1.0 / omegaSum, totals, weightedBox);
+    sendWeighted(1.0 / omegaSum, weightedBox, sink);
 }
 
 void DensityGrid::depositCopy(const Parcel& parcel, double dt)
@@ -359,56 +429,30 @@ void DensityGrid::depositCopy(const Parcel& parcel, double dt)
     std::swap(stepStatistics_, copyStatistics_);
 }
 
-IndexBox DensityGrid::reachedNodes(const Parcel& parcel, double dt) const
-{
-    ClippedPath path;
-    if (parcel.nParticle == 0.0 || parcel.diameter == 0.0 || !clippedPath(parcel, dt, path)
-        || !(path.fraction > 0.0))
-    {
-        return IndexBox{};
-    }
-    // The cloud-in-cell corners of every point of the path (unresolved kernels, fallback)
-    IndexBox reached = nodeBox(path, largestSpacing_).intersected(spec_.fullBox());
-    const ParcelKernel kernel(0.5 * parcel.diameter, parcel.nParticle, kernelSettings_, kernelDimension_);
-    if (kernel.width() < kernelSettings_.cloudInCellBelow * largestSpacing_)
-    {
-        return reached;
-    }
-    // The kernel's lattice box, its ghost nodes folded onto their mirror images
-    const IndexBox box = nodeBox(path, negligibleDistance(kernel, path.displacement.norm()));
-    if (box.empty())
-    {
-        return reached;
-    }
-    IndexBox folded;
-    for (int d = 0; d < 3; ++d)
-    {
-        std::tie(folded.lo[d], folded.hi[d]) = foldedRange(d, box.lo[d], box.hi[d]);
-    }
-    return reached.united(folded);
-}
-
-std::pair<int, int> DensityGrid::foldedRange(int d, int lo, int hi) const
-{
-    int first = spec_.nodes[d], last = -1;
-    for (int i = lo; i <= hi; ++i)
-    {
-        first = std::min(first, spec_.mirrorIndex(d, i));
-        last = std::max(last, spec_.mirrorIndex(d, i));
-    }
-    return {first, last};
-}
-
-bool DensityGrid::clippedPath(const Parcel& parcel, double dt, ClippedPath& path) const
+bool DensityGrid::clipPath(const Parcel& parcel, double dt, double mass, StepStatistics& stats,
+                           ClippedPath& path) const
 {
     const Eigen::Vector3d displacement = parcel.velocity * dt;
     const Eigen::Vector3d start = parcel.position - displacement;
     double t0 = 0.0, t1 = 1.0;
     if (!clipToBox(spec_, start, displacement, t0, t1))
     {
+        ++stats.parcelsOutside;
+        stats.massOutside += mass;
         return false;
     }
     path.fraction = (displacement.squaredNorm() > 0.0) ? t1 - t0 : 1.0;
+    if (path.fraction < 1.0)
+    {
+        ++stats.parcelsPartlyOutside;
+    }
+    const double massInside = path.fraction * mass;
+    stats.massDeposited += massInside;
+    stats.massOutside += mass - massInside;
+    if (!(path.fraction > 0.0))
+    {
+        return false; // touches the box in a single point: measure zero
+    }
     // Projected into the active directions (flat: on the node layer).
     path.start = start + t0 * displacement;
     path.displacement = (t1 - t0) * displacement;
@@ -421,26 +465,6 @@ bool DensityGrid::clippedPath(const Parcel& parcel, double dt, ClippedPath& path
         }
     }
     return true;
-}
-
-bool DensityGrid::clipPath(const Parcel& parcel, double dt, double mass, ClippedPath& path)
-{
-    StepStatistics& stats = stepStatistics_;
-    if (!clippedPath(parcel, dt, path))
-    {
-        ++stats.parcelsOutside;
-        stats.massOutside += mass;
-        return false;
-    }
-    if (path.fraction < 1.0)
-    {
-        ++stats.parcelsPartlyOutside;
-    }
-    const double massInside = path.fraction * mass;
-    stats.massDeposited += massInside;
-    stats.massOutside += mass - massInside;
-    // A path touching the box in a single point: measure zero
-    return path.fraction > 0.0;
 }
 
 IndexBox DensityGrid::nodeBox(const ClippedPath& path, double reach) const
@@ -547,13 +571,12 @@ double DensityGrid::weighNodesOneByOne(const PathWeight& pathWeight, const Eigen
 }
 
 double DensityGrid::weighAndFold(const PathWeight& pathWeight, const Eigen::Vector3d& start,
-                                 const IndexBox& box, bool batched, IndexBox& foldedBox)
+                                 const IndexBox& box, bool batched, const IndexBox& foldedBox)
 {
     const double* omega = batched
         ? batch_.boxOmegas(pathWeight, start, latticeCoordinates(0), latticeCoordinates(1),
                            latticeCoordinates(2), box.lo, box.hi)
         : latticeOmegas(pathWeight, start, box);
-    foldedBox = mirrorBox(box);
     return foldOntoNodes(omega, foldedBox);
 }
 
@@ -638,16 +661,18 @@ double DensityGrid::foldOntoNodes(const double* omega, const IndexBox& foldedBox
     return omegaSum;
 }
 
-void DensityGrid::depositWeighted(double inverseSum, const std::array<double, nQuantities>& parcelTotals,
-                                  const IndexBox& box)
+void DensityGrid::sendWeighted(double inverseSum, const IndexBox& box, WeightSink& sink)
 {
     for (const auto& [node, omega] : scratch_)
     {
-        accumulate(node, omega * inverseSum, parcelTotals);
+        send(sink, node, omega * inverseSum);
     }
-    stepStatistics_.nodesWeighted += static_cast<std::int64_t>(scratch_.size());
+    sink.statistics.nodesWeighted += static_cast<std::int64_t>(scratch_.size());
     // The touched box: the weighted nodes lie inside it.
-    touch(box);
+    if (sink.accumulates())
+    {
+        touch(box);
+    }
 }
 
 double DensityGrid::negligibleDistance(const ParcelKernel& kernel, double pathLength) const
@@ -690,6 +715,16 @@ double* DensityGrid::stepValuesOfBlockNode(std::size_t node)
         : nullptr;
 }
 
+void DensityGrid::send(WeightSink& sink, std::size_t node, double weight)
+{
+    if (sink.accumulates())
+    {
+        accumulate(node, weight, *sink.totals);
+        return;
+    }
+    sink.sum += weight * (*sink.fraction)(node);
+}
+
 void DensityGrid::accumulate(std::size_t node, double weight,
                              const std::array<double, nQuantities>& parcelTotals)
 {
@@ -704,8 +739,22 @@ void DensityGrid::accumulate(std::size_t node, double weight,
     }
 }
 
-void DensityGrid::depositFallback(const Eigen::Vector3d& start, const Eigen::Vector3d& displacement,
-                                  const std::array<double, nQuantities>& parcelTotals)
+IndexBox DensityGrid::cloudInCellBox(const Eigen::Vector3d& start, const Eigen::Vector3d& displacement) const
+{
+    // The box weighCloudInCell's points weigh: that of the half-spacing points holds that of
+    // the finer points near a face (both span the cells of the path's first and last point).
+    const PathPoints points(start, displacement, smallestSpacing_);
+    const PathCells coarse = pathCells(spec_, spacing_, points);
+    if (displacement.squaredNorm() > 0.0 && touchesFace(coarse.box))
+    {
+        return pathCells(spec_, spacing_, PathPoints(start, displacement, smallestSpacing_ / faceRefinement))
+            .box;
+    }
+    return coarse.box;
+}
+
+void DensityGrid::weighCloudInCell(const Eigen::Vector3d& start, const Eigen::Vector3d& displacement,
+                                   WeightSink& sink)
 {
     PathPoints points(start, displacement, smallestSpacing_);
     PathCells cells = pathCells(spec_, spacing_, points);
@@ -715,9 +764,16 @@ void DensityGrid::depositFallback(const Eigen::Vector3d& start, const Eigen::Vec
         points = PathPoints(start, displacement, smallestSpacing_ / faceRefinement);
         cells = pathCells(spec_, spacing_, points);
     }
-    touch(cells.box);
+    if (!sink.wants(cells.box))
+    {
+        return;
+    }
+    if (sink.accumulates())
+    {
+        touch(cells.box);
+    }
     const int corners = (spec_.flat(0) ? 1 : 2) * (spec_.flat(1) ? 1 : 2) * (spec_.flat(2) ? 1 : 2);
-    stepStatistics_.nodesVisited += static_cast<std::int64_t>(points.count) * corners;
+    sink.statistics.nodesVisited += static_cast<std::int64_t>(points.count) * corners;
 
     if (cells.nodeCount > maximumPathBoxNodes)
     {
@@ -725,9 +781,9 @@ void DensityGrid::depositFallback(const Eigen::Vector3d& start, const Eigen::Vec
         // point's corners straight onto the grid.
         for (int p = 0; p < points.count; ++p)
         {
-            depositAtCorners(points.at(p), points.share, parcelTotals);
+            sendCorners(points.at(p), points.share, sink);
         }
-        stepStatistics_.nodesWeighted += static_cast<std::int64_t>(points.count) * corners;
+        sink.statistics.nodesWeighted += static_cast<std::int64_t>(points.count) * corners;
         return;
     }
     pathWeights_.assign(cells.nodeCount, 0.0);
@@ -735,21 +791,20 @@ void DensityGrid::depositFallback(const Eigen::Vector3d& start, const Eigen::Vec
     {
         addCornerWeights(spec_, spacing_, cells, points.at(p), points.share, pathWeights_.data());
     }
-    depositPathWeights(cells.box, parcelTotals);
+    sendPathWeights(cells.box, sink);
 }
 
-void DensityGrid::depositAtCorners(const Eigen::Vector3d& point, double share,
-                                   const std::array<double, nQuantities>& parcelTotals)
+void DensityGrid::sendCorners(const Eigen::Vector3d& point, double share, WeightSink& sink)
 {
     const CornerWeights cornerWeights = multilinearWeights(spec_, point);
     for (int c = 0; c < cornerWeights.count; ++c)
     {
         const auto u = static_cast<std::size_t>(c);
-        accumulate(cornerWeights.node[u], share * cornerWeights.weight[u], parcelTotals);
+        send(sink, cornerWeights.node[u], share * cornerWeights.weight[u]);
     }
 }
 
-void DensityGrid::depositPathWeights(const IndexBox& box, const std::array<double, nQuantities>& parcelTotals)
+void DensityGrid::sendPathWeights(const IndexBox& box, WeightSink& sink)
 {
     std::int64_t weighted = 0;
     forEachRow(box, spec_.nodes,
@@ -760,12 +815,12 @@ void DensityGrid::depositPathWeights(const IndexBox& box, const std::array<doubl
                        const double weight = pathWeights_[row.offsetInBox + i];
                        if (weight > 0.0)
                        {
-                           accumulate(row.first + i, weight, parcelTotals);
+                           send(sink, row.first + i, weight);
                            ++weighted;
                        }
                    }
                });
-    stepStatistics_.nodesWeighted += weighted;
+    sink.statistics.nodesWeighted += weighted;
 }
 
 void DensityGrid::commitStep()
@@ -956,6 +1011,16 @@ void DensityGrid::addOwnedCornerSums(const CornerWeights& corners,
     }
 }
 
+DropletFieldValue DensityGrid::interpolated(const CornerWeights& corners, const double* cornerTotals) const
+{
+    std::array<double, nQuantities> sums{};
+    for (int c = 0; c < corners.count; ++c)
+    {
+        addCornerSum(corners, c, cornerTotals + c * nQuantities, sums);
+    }
+    return fieldFromSums(sums);
+}
+
 void DensityGrid::addCornerSum(const CornerWeights& corners, int c, const double* total,
                                std::array<double, nQuantities>& sums) const
 {
@@ -966,6 +1031,34 @@ void DensityGrid::addCornerSum(const CornerWeights& corners, int c, const double
     {
         sums[static_cast<std::size_t>(q)] += w * (scale * total[q]);
     }
+}
+
+double DensityGrid::lastStepValue(std::size_t node, int q) const
+{
+    if (ownsWholeGrid_)
+    {
+        return window_.newestStepValue(node, q);
+    }
+    const std::array<int, 3> n = nodeIndices(node);
+    if (node >= spec_.nodeCount() || !owned_.holds(n[0], n[1], n[2]))
+    {
+        throw std::out_of_range("DensityGrid: node " + std::to_string(node) + " is not owned by this block");
+    }
+    return window_.newestStepValue(flatIndexInBox(owned_, n[0], n[1], n[2]), q);
+}
+
+double DensityGrid::densityParts(const CornerWeights& corners, const double* cornerTotals,
+                                 double* parts) const
+{
+    double sum = 0.0;
+    for (int c = 0; c < corners.count; ++c)
+    {
+        const std::size_t node = corners.node[static_cast<std::size_t>(c)];
+        const double w = corners.weight[static_cast<std::size_t>(c)];
+        parts[c] = w * (cellsPerNodeVolume(node) * cornerTotals[c * nQuantities + quantityMass]);
+        sum += parts[c];
+    }
+    return sum;
 }
 
 double DensityGrid::windowMassPerStep() const

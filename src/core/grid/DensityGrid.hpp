@@ -65,7 +65,7 @@
 // weights normalised over the global lattice, folding, node volumes) is that of the whole
 // grid; only storage and indexing are local, so a block deposits exactly what the whole
 // grid would at the nodes it stores, and leaves the other nodes to the blocks that store
-// them. The caller gives every parcel to each block its deposit reaches (reachedNodes):
+// them. The caller gives every parcel to each block its deposit reaches (depositBox):
 // the block whose processor holds the parcel calls deposit(), which counts it in the step
 // statistics; the others call depositCopy(), which does not. Summed over the blocks, each
 // node gets every parcel's weight once, the same weight the whole grid gives it. Then
@@ -73,6 +73,10 @@
 // an owned node; addOwnedCornerSums() gives a block's share of sample()'s sums at a point,
 // and the shares of the blocks owning its corners add up to them. With the whole grid as the block (the default)
 // nothing changes.
+//
+// Depletion (docs/model.md sec. 7): depositedShare() re-evaluates a parcel's weights by
+// deposit()'s own code path (steps 1-6 send them to a sink: the step accumulator, or a
+// sum weighted per node), lastStepValue() reads what the newest committed step deposited.
 //
 // Restart: saveWindow()/restoreWindow() (AveragingWindow.hpp); the restored grid gives
 // bit-for-bit the same fields and the same results for later steps.
@@ -101,6 +105,8 @@
 
 #include <array>
 #include <cstddef>
+#include <functional>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -147,10 +153,6 @@ public:
     // A parcel another block holds and deposits (see Blocks above): the same deposit onto
     // the nodes stored here, counted in copyStatistics() instead of stepStatistics().
     void depositCopy(const Parcel& parcel, double dt);
-    // The nodes a deposit of the parcel can give mass to (grid indices, a superset: the
-    // kernel's box folded at the faces, united with the cloud-in-cell corners of its path);
-    // empty when it gives none. The parcel must be valid (deposit() checks it first).
-    IndexBox reachedNodes(const Parcel& parcel, double dt) const;
     // Ends the step: the accumulator enters the window and is cleared; statistics move
     // to lastStepStatistics().
     void commitStep();
@@ -158,6 +160,31 @@ public:
     const StepStatistics& lastStepStatistics() const { return lastStepStatistics_; }
     // What depositCopy() did this step (cleared by commitStep()).
     const StepStatistics& copyStatistics() const { return copyStatistics_; }
+
+    // --- the deposit's weights re-evaluated (depletion, docs/model.md sec. 7) ------------
+    // A value per global flat node index.
+    using NodeFraction = std::function<double(std::size_t)>;
+    // True when a box of nodes (grid indices) may hold a node whose fraction is not 0.
+    using NodeBoxTest = std::function<bool(const IndexBox&)>;
+    // sum over the nodes n of the share of the parcel's mass deposit(parcel, dt) gives n
+    // (w_n f: eq. 24's weight, folded, or the cloud-in-cell weight, times the part f of the
+    // step inside the box) times fraction(n); nothing is accumulated, the statistics stay
+    // as they are. The same code path as deposit(), so the weights are the deposit's to the
+    // bit. A parcel whose nodes (and those of its cloud-in-cell fallback) `asks` turns down
+    // gives 0 before any weight is evaluated (cheap where few nodes have a fraction).
+    // The weights cover the whole grid whatever the block (fraction() decides which nodes
+    // count): blocks that each ask for their owned nodes give parts that add up.
+    double depositedShare(const Parcel& parcel, double dt, const NodeBoxTest& asks,
+                          const NodeFraction& fraction);
+    // A box (grid indices) holding every node deposit(parcel, dt) can give mass to: the
+    // kernel's nodes (folded) and those of its cloud-in-cell fallback; empty when the
+    // parcel gives the grid nothing. A parallel caller sends a parcel to the blocks whose
+    // owned nodes this box meets (deposit), or whose nodes of interest
+    // (CaptureLimit::takenBox) it meets (depletion).
+    IndexBox depositBox(const Parcel& parcel, double dt) const;
+    // Quantity q of the newest committed step at an owned node (global flat index): what
+    // the step's parcels, summed over the blocks, deposited there; 0 before any commit.
+    double lastStepValue(std::size_t node, int q) const;
 
     // --- step accumulator and the block's exchanges -------------------------------------
     const IndexBox& ownedBox() const { return owned_; }
@@ -207,6 +234,14 @@ public:
     {
         return fieldFromSums(sums);
     }
+    // sample()'s value from the window sums of the corners (corner c's nQuantities values
+    // at cornerTotals + c * nQuantities): the same arithmetic, in the same order.
+    DropletFieldValue interpolated(const CornerWeights& corners, const double* cornerTotals) const;
+    // Each corner's part of the interpolated mass sum that gives sample()'s rho (the
+    // corner weight times the corner's window mass per whole cell), into parts[c]; returns
+    // their sum, rho times (node volume x steps in the window): the same arithmetic, in the
+    // same order, as interpolated().
+    double densityParts(const CornerWeights& corners, const double* cornerTotals, double* parts) const;
     // Window mass per step on the owned nodes: sum over them of S_mass / s (kg).
     double windowMassPerStep() const;
 
@@ -236,14 +271,25 @@ private:
     }
 
     // --- deposit(), in the order of its steps (top of this file) ------------------------
-    // Steps 1-2: clips the parcel's path and books the mass outside the box; false when
-    // nothing of the parcel is to be deposited.
-    bool clipPath(const Parcel& parcel, double dt, double mass, ClippedPath& path);
-    // The clipping alone: false when the path misses the box.
-    bool clippedPath(const Parcel& parcel, double dt, ClippedPath& path) const;
-    // The lattice indices lo..hi of direction d folded onto the nodes: the range of their
-    // mirror images (GridSpec::mirrorIndex).
-    std::pair<int, int> foldedRange(int d, int lo, int hi) const;
+    // Where a parcel's weights go (steps 4-7): the step accumulator, the parcel's quantities
+    // times the weight (deposit), or a sum of weight times fraction(node) (depositedShare).
+    struct WeightSink
+    {
+        StepStatistics& statistics;
+        const std::array<double, nQuantities>* totals; // deposit: the parcel's quantities
+        const NodeBoxTest* asks;                       // depositedShare: boxes that may matter
+        const NodeFraction* fraction;                  // depositedShare: per node
+        double sum;                                    // depositedShare: sum weight * fraction
+        bool accumulates() const { return totals != nullptr; }
+        bool wants(const IndexBox& box) const { return asks == nullptr || (!box.empty() && (*asks)(box)); }
+    };
+
+    // Steps 1-2: clips the parcel's path and books the mass outside the box in stats; false
+    // when nothing of the parcel is to be deposited.
+    bool clipPath(const Parcel& parcel, double dt, double mass, StepStatistics& stats,
+                  ClippedPath& path) const;
+    // Steps 3-6: the kernel's (or the cloud-in-cell) weights of the clipped path into sink.
+    void weighPath(const Parcel& parcel, const ClippedPath& path, WeightSink& sink);
     // Distance from the path beyond which a node's weight is below
     // KernelSettings::negligibleWeight times the parcel's largest (<= reach).
     double negligibleDistance(const ParcelKernel& kernel, double pathLength) const;
@@ -263,12 +309,15 @@ private:
     double weighNodesBatched(const PathWeight& pathWeight, const Eigen::Vector3d& start, const IndexBox& box);
     double weighNodesOneByOne(const PathWeight& pathWeight, const Eigen::Vector3d& start,
                               const IndexBox& box);
+    // The nodes the lattice box's nodes fold onto (mirror images; the box itself when it
+    // holds no ghost node).
+    IndexBox foldedBox(const IndexBox& box) const;
     // Step 4 for a box with ghost nodes: omega of every lattice node of the box (batched or
     // node by node), each added to its mirror image (folded kernels); the nodes of
-    // foldedBox that got weight go to scratch_, in node order. Returns sum omega over the
-    // lattice nodes.
+    // foldedBox (mirrorBox(box), called first) that got weight go to scratch_, in node
+    // order. Returns sum omega over the lattice nodes.
     double weighAndFold(const PathWeight& pathWeight, const Eigen::Vector3d& start, const IndexBox& box,
-                        bool batched, IndexBox& foldedBox);
+                        bool batched, const IndexBox& foldedBox);
     // omega of every lattice node of the box node by node (i fastest), valid until the next call.
     const double* latticeOmegas(const PathWeight& pathWeight, const Eigen::Vector3d& start,
                                 const IndexBox& box);
@@ -277,17 +326,19 @@ private:
     IndexBox mirrorBox(const IndexBox& box);
     // Sums omega over the lattice box of mirrorBox and folds it onto foldedBox's nodes.
     double foldOntoNodes(const double* omega, const IndexBox& foldedBox);
-    // Steps 5 and 7: scratch_'s nodes get omega / sum omega of the parcel's totals.
-    void depositWeighted(double inverseSum, const std::array<double, nQuantities>& parcelTotals,
-                         const IndexBox& box);
-    // Step 6 (and unresolved kernels): cloud-in-cell weights along the path.
-    void depositFallback(const Eigen::Vector3d& start, const Eigen::Vector3d& displacement,
-                         const std::array<double, nQuantities>& parcelTotals);
+    // Steps 5 and 7: scratch_'s nodes get omega / sum omega into the sink.
+    void sendWeighted(double inverseSum, const IndexBox& box, WeightSink& sink);
+    // Step 6 (and unresolved kernels): cloud-in-cell weights along the path into the sink.
+    void weighCloudInCell(const Eigen::Vector3d& start, const Eigen::Vector3d& displacement,
+                          WeightSink& sink);
+    // The nodes weighCloudInCell weighs for this path.
+    IndexBox cloudInCellBox(const Eigen::Vector3d& start, const Eigen::Vector3d& displacement) const;
     // One point's share on the corners of its cell (paths across many cells).
-    void depositAtCorners(const Eigen::Vector3d& point, double share,
-                          const std::array<double, nQuantities>& parcelTotals);
-    // The path's weights summed per node of its cell box (pathWeights_) onto the grid.
-    void depositPathWeights(const IndexBox& box, const std::array<double, nQuantities>& parcelTotals);
+    void sendCorners(const Eigen::Vector3d& point, double share, WeightSink& sink);
+    // The path's weights summed per node of its cell box (pathWeights_) into the sink.
+    void sendPathWeights(const IndexBox& box, WeightSink& sink);
+    // One node's weight into the sink.
+    void send(WeightSink& sink, std::size_t node, double weight);
     // Step 7 for one node.
     void accumulate(std::size_t node, double weight, const std::array<double, nQuantities>& parcelTotals);
     // The step values of a node (global flat index); nullptr when not stored here.

@@ -22,7 +22,7 @@
 // blocks then match the processors' parcels less well: more traffic).
 //
 // holdersOf(): the processors whose owned nodes a box of nodes meets (the blocks a
-// parcel's deposit reaches, DensityGrid::reachedNodes).
+// parcel's deposit reaches, DensityGrid::depositBox).
 #pragma once
 
 #include "grid/GridSpec.hpp"

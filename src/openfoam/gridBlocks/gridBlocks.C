@@ -247,7 +247,7 @@ void Foam::dropletFiber::gridBlocks::depositCopies
     }
     for (const auto& parcel : parcels)
     {
-        const ::dropletFiber::IndexBox reached = grid.reachedNodes(parcel, dt);
+        const ::dropletFiber::IndexBox reached = grid.depositBox(parcel, dt);
         if (reached.intersected(owned_) == reached)
         {
             continue; // on this block only (or nowhere)

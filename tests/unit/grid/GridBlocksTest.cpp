@@ -1,5 +1,5 @@
 // Grid blocks: a grid split into blocks that each store their owned nodes, every parcel
-// given to each block its deposit reaches (DensityGrid::reachedNodes), deposits what the
+// given to each block its deposit reaches (DensityGrid::depositBox), deposits what the
 // whole grid deposits: one parcel bit for bit (each node gets the same product), many
 // parcels to round-off (the sums at a node add in another order). The partition tiles the
 // grid from subdomain bounds, or by bisection when they do not.
@@ -71,7 +71,7 @@ void depositOnBlocks(Blocks& blocks, int holder, const Parcel& parcel, double dt
     DensityGrid& held = *blocks.grids[static_cast<std::size_t>(holder)];
     held.deposit(parcel, dt);
     std::vector<int> others;
-    blocks.partition.holdersOf(held.reachedNodes(parcel, dt), holder, others);
+    blocks.partition.holdersOf(held.depositBox(parcel, dt), holder, others);
     for (const int p : others)
     {
         blocks.grids[static_cast<std::size_t>(p)]->depositCopy(parcel, dt);
@@ -194,7 +194,7 @@ TEST(GridBlocks, EachBlocksNodesEqualTheWholeGridBitForBit)
 {
     // A parcel deposited on every block: each block's nodes hold the whole grid's values
     // there, each the same product, to the bit; and no node the whole grid's deposit
-    // touches lies outside reachedNodes().
+    // touches lies outside depositBox().
     for (const GridSpec& spec : {grid3D(), grid2D()})
     {
         const GridPartition partition = GridPartition::bisection(spec, 3);
@@ -202,7 +202,7 @@ TEST(GridBlocks, EachBlocksNodesEqualTheWholeGridBitForBit)
         {
             DensityGrid whole(spec);
             whole.deposit(parcel, 1e-3);
-            const IndexBox reached = whole.reachedNodes(parcel, 1e-3);
+            const IndexBox reached = whole.depositBox(parcel, 1e-3);
             std::vector<double> assembled(spec.nodeCount() * nQuantities, 0.0);
             for (int p = 0; p < partition.processors(); ++p)
             {

@@ -1,0 +1,298 @@
+#include "depletion/CaptureLimit.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace dropletFiber
+{
+
+CaptureLimitReport& CaptureLimitReport::operator+=(const CaptureLimitReport& other)
+{
+    nodesDemanded += other.nodesDemanded;
+    nodesLimited += other.nodesLimited;
+    massDemanded += other.massDemanded;
+    massGranted += other.massGranted;
+    return *this;
+}
+
+SampleCapture attributeSample(const DensityGrid& grid, const CornerWeights& corners,
+                              const double* cornerTotals, double sampleMass, const Eigen::Vector3d& velocity)
+{
+    SampleCapture capture;
+    capture.velocity = velocity;
+    std::array<double, 8> parts{};
+    // The parts of the interpolated mass sum that rho is formed from (DensityGrid::interpolated).
+    const double sum = grid.densityParts(corners, cornerTotals, parts.data());
+    if (!(sampleMass > 0.0) || !(sum > 0.0))
+    {
+        return capture;
+    }
+    for (int c = 0; c < corners.count; ++c)
+    {
+        const auto u = static_cast<std::size_t>(c);
+        if (parts[u] > 0.0)
+        {
+            const auto n = static_cast<std::size_t>(capture.count++);
+            capture.node[n] = corners.node[u];
+            capture.mass[n] = sampleMass * (parts[u] / sum);
+        }
+    }
+    return capture;
+}
+
+SegmentCapture segmentCapture(const DensityGrid& grid, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                              double fiberRadius, const Eigen::Vector3d& segmentVelocity, double dt,
+                              const CollisionOptions& options)
+{
+    const int samples = collisionSamples(grid, a, b, options);
+    const auto count = static_cast<std::size_t>(samples);
+    std::vector<CornerWeights> corners(count);
+    std::vector<std::array<double, 8 * nQuantities>> totals(count);
+    std::vector<DropletFieldValue> fields(count);
+    for (std::size_t s = 0; s < count; ++s)
+    {
+        // DensityGrid::sample's steps, keeping the corners and their sums.
+        const Eigen::Vector3d point = samplePoint(a, b, samples, static_cast<int>(s));
+        if (!insideActiveBox(grid.spec(), point))
+        {
+            fields[s].inside = false;
+            continue;
+        }
+        corners[s] = multilinearWeights(grid.spec(), point);
+        for (int c = 0; c < corners[s].count; ++c)
+        {
+            grid.windowTotal(corners[s].node[static_cast<std::size_t>(c)],
+                             totals[s].data() + c * nQuantities);
+        }
+        fields[s] = grid.interpolated(corners[s], totals[s].data());
+    }
+    SegmentCapture result;
+    std::vector<double> masses(count);
+    result.collision = collisionMassFromSamples(fields.data(), samples, a, b, fiberRadius, segmentVelocity,
+                                                dt, options, masses.data());
+    for (std::size_t s = 0; s < count; ++s)
+    {
+        if (masses[s] > 0.0)
+        {
+            result.samples.push_back(
+                attributeSample(grid, corners[s], totals[s].data(), masses[s], fields[s].velocity));
+        }
+    }
+    return result;
+}
+
+void CaptureLimit::clear()
+{
+    demand_.clear();
+    granted_.clear();
+    taken_.clear();
+    takenBox_ = IndexBox{};
+    takenBricks_.clear();
+}
+
+void CaptureLimit::addDemand(const SampleCapture& sample)
+{
+    for (int c = 0; c < sample.count; ++c)
+    {
+        addDemand(sample.node[static_cast<std::size_t>(c)], sample.mass[static_cast<std::size_t>(c)]);
+    }
+}
+
+void CaptureLimit::addDemand(const SegmentCapture& segment)
+{
+    for (const SampleCapture& sample : segment.samples)
+    {
+        addDemand(sample);
+    }
+}
+
+void CaptureLimit::addDemand(std::size_t node, double mass)
+{
+    if (!(mass >= 0.0))
+    {
+        throw std::invalid_argument("CaptureLimit::addDemand: mass at node " + std::to_string(node)
+                                    + " must be >= 0, got " + std::to_string(mass));
+    }
+    demand_[node] += mass;
+}
+
+std::vector<NodeMass> CaptureLimit::takeForeignDemand(const DensityGrid& grid)
+{
+    std::vector<NodeMass> foreign;
+    for (auto entry = demand_.begin(); entry != demand_.end();)
+    {
+        if (grid.owns(entry->first))
+        {
+            ++entry;
+            continue;
+        }
+        foreign.push_back(NodeMass{entry->first, entry->second});
+        entry = demand_.erase(entry);
+    }
+    std::sort(foreign.begin(), foreign.end(),
+              [](const NodeMass& x, const NodeMass& y) { return x.node < y.node; });
+    return foreign;
+}
+
+CaptureLimitReport CaptureLimit::limit(const DensityGrid& grid)
+{
+    CaptureLimitReport report;
+    taken_.clear();
+    takenBox_ = IndexBox{};
+    takenBricks_.clear();
+    const std::array<int, 3> nodes = grid.spec().nodes;
+    for (int d = 0; d < 3; ++d)
+    {
+        bricks_[static_cast<std::size_t>(d)]
+            = static_cast<std::size_t>((nodes[d] + brickSize - 1) / brickSize);
+    }
+    for (const auto& [node, demand] : demand_)
+    {
+        if (!grid.owns(node))
+        {
+            throw std::logic_error("CaptureLimit::limit: demand at node " + std::to_string(node)
+                                   + ", which this grid does not own (takeForeignDemand first)");
+        }
+        const double supply = grid.lastStepValue(node, quantityMass);
+        const double granted = demand > supply ? supply : demand; // min(d_n, s_n)
+        granted_[node] = demand > 0.0 ? std::min(1.0, supply / demand) : 1.0;
+        report.massDemanded += demand;
+        report.massGranted += granted;
+        report.nodesDemanded += demand > 0.0 ? 1 : 0;
+        report.nodesLimited += demand > supply ? 1 : 0;
+        if (granted > 0.0)
+        {
+            taken_[node] = std::min(1.0, demand / supply);
+            markTaken(node, nodes);
+        }
+    }
+    return report;
+}
+
+void CaptureLimit::markTaken(std::size_t node, const std::array<int, 3>& nodes)
+{
+    const auto nx = static_cast<std::size_t>(nodes[0]);
+    const auto ny = static_cast<std::size_t>(nodes[1]);
+    IndexBox one;
+    one.lo = one.hi = {{static_cast<int>(node % nx), static_cast<int>((node / nx) % ny),
+                        static_cast<int>(node / (nx * ny))}};
+    takenBox_ = takenBox_.united(one);
+    takenBricks_.insert(brickIndex(one.lo[0] / brickSize, one.lo[1] / brickSize, one.lo[2] / brickSize));
+}
+
+bool CaptureLimit::mayTake(const IndexBox& box) const
+{
+    const IndexBox candidates = box.intersected(takenBox_);
+    if (candidates.empty())
+    {
+        return false;
+    }
+    for (int k = candidates.lo[2] / brickSize; k <= candidates.hi[2] / brickSize; ++k)
+    {
+        for (int j = candidates.lo[1] / brickSize; j <= candidates.hi[1] / brickSize; ++j)
+        {
+            for (int i = candidates.lo[0] / brickSize; i <= candidates.hi[0] / brickSize; ++i)
+            {
+                if (takenBricks_.count(brickIndex(i, j, k)) != 0)
+                {
+                    return true;
+                }
+            }
+        }
+    }
+    return false;
+}
+
+double CaptureLimit::grantedRatio(std::size_t node) const
+{
+    const auto entry = granted_.find(node);
+    if (entry == granted_.end())
+    {
+        throw std::out_of_range("CaptureLimit: no granted ratio for node " + std::to_string(node)
+                                + " (no demand there, or its owner's answer was not set)");
+    }
+    return entry->second;
+}
+
+void CaptureLimit::setGrantedRatio(std::size_t node, double ratio)
+{
+    if (!(ratio >= 0.0 && ratio <= 1.0))
+    {
+        throw std::invalid_argument("CaptureLimit::setGrantedRatio: ratio at node " + std::to_string(node)
+                                    + " must be in [0, 1], got " + std::to_string(ratio));
+    }
+    granted_[node] = ratio;
+}
+
+double CaptureLimit::grantedMass(const SampleCapture& sample) const
+{
+    double mass = 0.0;
+    for (int c = 0; c < sample.count; ++c)
+    {
+        const auto u = static_cast<std::size_t>(c);
+        mass += sample.mass[u] * grantedRatio(sample.node[u]);
+    }
+    return mass;
+}
+
+SegmentCollision CaptureLimit::granted(const SegmentCapture& segment) const
+{
+    SegmentCollision result = segment.collision;
+    result.mass = 0.0;
+    result.momentum.setZero();
+    for (const SampleCapture& sample : segment.samples)
+    {
+        const double mass = grantedMass(sample);
+        result.mass += mass;
+        result.momentum += mass * sample.velocity;
+    }
+    return result;
+}
+
+double CaptureLimit::takenFraction(std::size_t node) const
+{
+    const auto entry = taken_.find(node);
+    return entry == taken_.end() ? 0.0 : entry->second;
+}
+
+std::vector<NodeMass> CaptureLimit::takenFractions() const
+{
+    std::vector<NodeMass> fractions;
+    for (const auto& [node, fraction] : taken_)
+    {
+        fractions.push_back(NodeMass{node, fraction});
+    }
+    std::sort(fractions.begin(), fractions.end(),
+              [](const NodeMass& x, const NodeMass& y) { return x.node < y.node; });
+    return fractions;
+}
+
+void CaptureLimit::setTakenFraction(std::size_t node, double fraction, const std::array<int, 3>& gridNodes)
+{
+    if (!(fraction > 0.0 && fraction <= 1.0))
+    {
+        throw std::invalid_argument("CaptureLimit::setTakenFraction: fraction at node " + std::to_string(node)
+                                    + " must be in (0, 1], got " + std::to_string(fraction));
+    }
+    for (int d = 0; d < 3; ++d)
+    {
+        bricks_[static_cast<std::size_t>(d)]
+            = static_cast<std::size_t>((gridNodes[d] + brickSize - 1) / brickSize);
+    }
+    taken_[node] = fraction;
+    markTaken(node, gridNodes);
+}
+
+double CaptureLimit::capturedFraction(DensityGrid& grid, const Parcel& parcel, double dt) const
+{
+    if (taken_.empty())
+    {
+        return 0.0;
+    }
+    const DensityGrid::NodeFraction fraction = [this](std::size_t node) { return takenFraction(node); };
+    const DensityGrid::NodeBoxTest asks = [this](const IndexBox& box) { return mayTake(box); };
+    return std::min(1.0, grid.depositedShare(parcel, dt, asks, fraction));
+}
+
+} // namespace dropletFiber

@@ -1,0 +1,334 @@
+// Depletion's pieces (docs/model.md sec. 7): the deposit's weights re-evaluated
+// (DensityGrid::depositedShare) against what deposit() put on the nodes, the attribution of
+// a sample's mass to its corners (P12) against a hand calculation, the limit (P13) at
+// nodes with too little mass, and the removal split over grid blocks adding up to the
+// whole grid's.
+#include "depletion/CaptureLimit.hpp"
+
+#include "grid/GridPartition.hpp"
+
+#include "../grid/TestGrids.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <random>
+
+using namespace dropletFiber;
+
+namespace
+{
+
+// Parcels in and a little beyond the box: wide kernels (folded near the faces), narrow
+// ones (cloud-in-cell or the zero-weight fallback), moving and still.
+std::vector<Parcel> randomParcels(const GridSpec& spec, int count, unsigned seed)
+{
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    std::vector<Parcel> parcels;
+    for (int n = 0; n < count; ++n)
+    {
+        Parcel p;
+        for (int d = 0; d < 3; ++d)
+        {
+            const double size = spec.upper[d] - spec.lower[d];
+            p.position[d] = spec.flat(d) ? 0.5 * (spec.lower[d] + spec.upper[d])
+                                         : spec.lower[d] - 0.05 * size + 1.1 * size * unit(rng);
+            p.velocity[d] = spec.flat(d) ? 0.0 : (n % 5 == 0 ? 0.0 : 4.0 * (unit(rng) - 0.5));
+        }
+        p.diameter = 2e-5 * (0.5 + unit(rng));
+        p.nParticle = n % 3 == 0 ? 2.0 : 20.0 + 200.0 * unit(rng);
+        p.rhoDroplet = 1000.0;
+        parcels.push_back(p);
+    }
+    return parcels;
+}
+
+std::array<int, 3> indices(const GridSpec& spec, std::size_t node)
+{
+    const auto nx = static_cast<std::size_t>(spec.nodes[0]);
+    const auto ny = static_cast<std::size_t>(spec.nodes[1]);
+    return {{static_cast<int>(node % nx), static_cast<int>((node / nx) % ny),
+             static_cast<int>(node / (nx * ny))}};
+}
+
+// Per parcel: deposit() alone on a grid, the mass it put on each node read back after the
+// commit; depositedShare with a random fraction per node must give sum m_n f_n / m_p, and
+// depositBox must hold every node that got mass.
+void checkSharesAgainstDeposit(const GridSpec& spec, const KernelSettings& settings, unsigned seed)
+{
+    const double dt = 1e-3;
+    DensityGrid grid(spec, settings, 1);
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    std::vector<double> fraction(spec.nodeCount());
+    for (double& f : fraction)
+    {
+        f = unit(rng);
+    }
+    const DensityGrid::NodeFraction fractionAt = [&](std::size_t node) { return fraction[node]; };
+    const DensityGrid::NodeBoxTest askAll = [](const IndexBox&) { return true; };
+    const DensityGrid::NodeBoxTest askNone = [](const IndexBox&) { return false; };
+    int withMass = 0;
+    for (const Parcel& parcel : randomParcels(spec, 300, seed))
+    {
+        grid.deposit(parcel, dt);
+        grid.commitStep();
+        const IndexBox box = grid.depositBox(parcel, dt);
+        double expected = 0.0;
+        for (std::size_t node = 0; node < spec.nodeCount(); ++node)
+        {
+            const double mass = grid.lastStepValue(node, quantityMass);
+            expected += mass * fraction[node];
+            const std::array<int, 3> n = indices(spec, node);
+            ASSERT_TRUE(mass == 0.0 || box.holds(n[0], n[1], n[2]))
+                << "node " << node << " outside depositBox";
+        }
+        const double parcelTotal = parcelMass(parcel);
+        expected /= parcelTotal;
+        withMass += expected > 0.0 ? 1 : 0;
+        EXPECT_NEAR(grid.depositedShare(parcel, dt, askAll, fractionAt), expected, 1e-13);
+        // A test that turns down every box gives 0 (nothing weighed).
+        EXPECT_EQ(grid.depositedShare(parcel, dt, askNone, fractionAt), 0.0);
+    }
+    EXPECT_GT(withMass, 200);
+    EXPECT_GT(grid.lastStepStatistics().parcels, 0);
+}
+
+} // namespace
+
+TEST(DepositedShare, EqualsTheDepositsWeightsKernelFoldedAndFallback2D)
+{
+    checkSharesAgainstDeposit(test::grid2D(), KernelSettings{}, 3);
+}
+
+TEST(DepositedShare, EqualsTheDepositsWeightsCloudInCell3D)
+{
+    KernelSettings settings;
+    settings.cloudInCellBelow = 0.5;
+    checkSharesAgainstDeposit(test::grid3D(), settings, 4);
+}
+
+TEST(DepositedShare, LeavesTheStepAndItsStatisticsAlone)
+{
+    const GridSpec spec = test::grid2D();
+    DensityGrid grid(spec, KernelSettings{}, 1);
+    const std::vector<Parcel> parcels = randomParcels(spec, 20, 5);
+    grid.deposit(parcels[1], 1e-3);
+    const std::vector<double> before = grid.stepValues();
+    const std::int64_t parcelsBefore = grid.stepStatistics().parcels;
+    const DensityGrid::NodeFraction one = [](std::size_t) { return 1.0; };
+    const DensityGrid::NodeBoxTest askAll = [](const IndexBox&) { return true; };
+    for (const Parcel& parcel : parcels)
+    {
+        grid.depositedShare(parcel, 1e-3, askAll, one);
+    }
+    EXPECT_EQ(grid.stepValues(), before);
+    EXPECT_EQ(grid.stepStatistics().parcels, parcelsBefore);
+}
+
+TEST(CaptureAttribution, SplitsTheSampleMassByCornerWeightTimesDensity)
+{
+    // 2D grid, 1 mm spacing. Masses put on four nodes by still parcels of two droplets
+    // sitting exactly on them (cloud-in-cell: the whole parcel on the node). Node (0, 0)
+    // is a corner of the box (a quarter cell), node (0, 1) on a face (half a cell): their
+    // densities are mass * 4 / cell volume and mass * 2 / cell volume.
+    const GridSpec spec = test::grid2D();
+    KernelSettings settings;
+    settings.cloudInCellBelow = 0.5;
+    DensityGrid grid(spec, settings, 1);
+    const double rhoP = 1000.0, d = 2e-5;
+    const std::array<double, 4> nParticle{{2.0, 3.0, 5.0, 7.0}};
+    const std::array<std::array<int, 2>, 4> at{{{{0, 0}}, {{1, 0}}, {{0, 1}}, {{1, 1}}}};
+    for (int c = 0; c < 4; ++c)
+    {
+        Parcel p;
+        p.position = spec.nodePosition(at[c][0], at[c][1], 0);
+        p.diameter = d;
+        p.nParticle = nParticle[c];
+        p.rhoDroplet = rhoP;
+        grid.deposit(p, 1e-3);
+    }
+    grid.commitStep();
+    // rho per corner relative to a droplet's mass per cell volume: corner 2*4, face 3*2 and 5*2, inside 7.
+    const std::array<double, 4> rho{{8.0, 6.0, 10.0, 7.0}};
+    // A point at 0.25 and 0.6 of the cell: weights (1-a)(1-b), a(1-b), (1-a)b, ab.
+    const double a = 0.25, b = 0.6;
+    const std::array<double, 4> w{{(1 - a) * (1 - b), a * (1 - b), (1 - a) * b, a * b}};
+    double norm = 0.0;
+    for (int c = 0; c < 4; ++c)
+    {
+        norm += w[c] * rho[c];
+    }
+    const Eigen::Vector3d point = spec.nodePosition(0, 0, 0) + Eigen::Vector3d(a * 1e-3, b * 1e-3, 0.0);
+    const CornerWeights corners = multilinearWeights(spec, point);
+    std::array<double, 4 * nQuantities> totals{};
+    for (int c = 0; c < 4; ++c)
+    {
+        grid.windowTotal(corners.node[c], totals.data() + c * nQuantities);
+    }
+    const double sampleMass = 3.7e-9;
+    const SampleCapture capture
+        = attributeSample(grid, corners, totals.data(), sampleMass, Eigen::Vector3d::Zero());
+    ASSERT_EQ(capture.count, 4);
+    double sum = 0.0;
+    for (int c = 0; c < 4; ++c)
+    {
+        const std::size_t node = spec.flatIndex(at[c][0], at[c][1], 0);
+        ASSERT_EQ(capture.node[c], node);
+        EXPECT_NEAR(capture.mass[c], sampleMass * w[c] * rho[c] / norm, 1e-14 * sampleMass) << "corner " << c;
+        sum += capture.mass[c];
+    }
+    EXPECT_NEAR(sum, sampleMass, 1e-15 * sampleMass);
+}
+
+TEST(CaptureLimit, TakesAtMostWhatTheStepDepositedAndScalesTheSamples)
+{
+    const GridSpec spec = test::grid2D();
+    KernelSettings settings;
+    settings.cloudInCellBelow = 0.5;
+    DensityGrid grid(spec, settings, 3);
+    Parcel p;
+    p.diameter = 2e-5;
+    p.nParticle = 4.0;
+    p.rhoDroplet = 1000.0;
+    const std::size_t nodeA = spec.flatIndex(5, 5, 0), nodeB = spec.flatIndex(9, 5, 0);
+    const std::size_t nodeC = spec.flatIndex(12, 5, 0); // demand, no parcel this step
+    // An older step in the window at node C: the window has mass there, the step none.
+    p.position = spec.nodePosition(12, 5, 0);
+    grid.deposit(p, 1e-3);
+    grid.commitStep();
+    for (const int i : {5, 9})
+    {
+        p.position = spec.nodePosition(i, 5, 0);
+        grid.deposit(p, 1e-3);
+    }
+    grid.commitStep();
+    const double s = parcelMass(p);
+    CaptureLimit limit;
+    SampleCapture sample;
+    sample.count = 3;
+    sample.node = {{nodeA, nodeB, nodeC}};
+    sample.mass = {{3.0 * s, 0.25 * s, 0.5 * s}};
+    limit.addDemand(sample);
+    const CaptureLimitReport report = limit.limit(grid);
+    EXPECT_EQ(report.nodesDemanded, 3);
+    EXPECT_EQ(report.nodesLimited, 2); // A (3 s > s) and C (no supply)
+    EXPECT_NEAR(report.massDemanded, 3.75 * s, 1e-14 * s);
+    EXPECT_NEAR(report.massGranted, 1.25 * s, 1e-14 * s);
+    EXPECT_NEAR(limit.grantedRatio(nodeA), 1.0 / 3.0, 1e-15);
+    EXPECT_EQ(limit.grantedRatio(nodeB), 1.0);
+    EXPECT_EQ(limit.grantedRatio(nodeC), 0.0);
+    EXPECT_EQ(limit.takenFraction(nodeA), 1.0);
+    EXPECT_NEAR(limit.takenFraction(nodeB), 0.25, 1e-15);
+    EXPECT_EQ(limit.takenFraction(nodeC), 0.0);
+    EXPECT_NEAR(limit.grantedMass(sample), 1.25 * s, 1e-14 * s);
+    // The parcels: the one at A loses all its droplets, the one at B a quarter.
+    p.position = spec.nodePosition(5, 5, 0);
+    EXPECT_NEAR(limit.capturedFraction(grid, p, 1e-3), 1.0, 1e-15);
+    p.position = spec.nodePosition(9, 5, 0);
+    EXPECT_NEAR(limit.capturedFraction(grid, p, 1e-3), 0.25, 1e-15);
+    // Only boxes near A and B may take (bricks of 4 nodes: A in brick 1, B in brick 2 of x).
+    IndexBox nearA, far;
+    nearA.lo = {{4, 4, 0}};
+    nearA.hi = {{5, 5, 0}};
+    far.lo = {{20, 10, 0}};
+    far.hi = {{25, 15, 0}};
+    EXPECT_TRUE(limit.mayTake(nearA));
+    EXPECT_FALSE(limit.mayTake(far));
+    p.position = spec.nodePosition(22, 12, 0);
+    EXPECT_EQ(limit.capturedFraction(grid, p, 1e-3), 0.0);
+    EXPECT_THROW(limit.grantedRatio(spec.flatIndex(1, 1, 0)), std::out_of_range);
+    EXPECT_THROW(limit.addDemand(nodeA, -1.0), std::invalid_argument);
+}
+
+TEST(CaptureLimit, BlocksGivePartsThatAddUpToTheWholeGrids)
+{
+    const GridSpec spec = test::grid2D();
+    const double dt = 1e-3;
+    const std::vector<Parcel> parcels = randomParcels(spec, 200, 8);
+    DensityGrid whole(spec, KernelSettings{}, 1);
+    const GridPartition partition = GridPartition::bisection(spec, 4);
+    std::vector<std::unique_ptr<DensityGrid>> blocks;
+    for (int b = 0; b < partition.processors(); ++b)
+    {
+        // Storage = the whole grid: the exchange is GridBlocksTest's business; here each
+        // block gets the whole step (as after the exchange) and owns its box.
+        blocks.push_back(std::make_unique<DensityGrid>(spec, KernelSettings{}, 1,
+                                                       GridBlock{partition.owned(b), spec.fullBox()}));
+    }
+    for (const Parcel& parcel : parcels)
+    {
+        whole.deposit(parcel, dt);
+        for (auto& block : blocks)
+        {
+            block->deposit(parcel, dt);
+        }
+    }
+    whole.commitStep();
+    for (auto& block : blocks)
+    {
+        block->commitStep();
+    }
+    // Demand at random nodes, some above the supply.
+    std::mt19937_64 rng(2);
+    std::uniform_int_distribution<std::size_t> anyNode(0, spec.nodeCount() - 1);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    CaptureLimit wholeLimit;
+    std::vector<CaptureLimit> blockLimits(blocks.size());
+    for (int n = 0; n < 150; ++n)
+    {
+        const std::size_t node = anyNode(rng);
+        const double demand = 2.0 * unit(rng) * (whole.lastStepValue(node, quantityMass) + 1e-12);
+        wholeLimit.addDemand(node, demand);
+        blockLimits[0].addDemand(node, demand); // as if a fiber on block 0 asked
+    }
+    const std::vector<NodeMass> foreign = blockLimits[0].takeForeignDemand(*blocks[0]);
+    for (const NodeMass& entry : foreign)
+    {
+        for (std::size_t b = 1; b < blocks.size(); ++b)
+        {
+            if (blocks[b]->owns(entry.node))
+            {
+                blockLimits[b].addDemand(entry.node, entry.mass);
+            }
+        }
+    }
+    const CaptureLimitReport wholeReport = wholeLimit.limit(whole);
+    CaptureLimitReport blockReport;
+    for (std::size_t b = 0; b < blocks.size(); ++b)
+    {
+        blockReport += blockLimits[b].limit(*blocks[b]);
+    }
+    EXPECT_EQ(blockReport.nodesLimited, wholeReport.nodesLimited);
+    EXPECT_GT(wholeReport.nodesLimited, 10);
+    EXPECT_NEAR(blockReport.massGranted, wholeReport.massGranted, 1e-13 * wholeReport.massGranted);
+    double removed = 0.0;
+    for (const Parcel& parcel : parcels)
+    {
+        double parts = 0.0;
+        for (std::size_t b = 0; b < blocks.size(); ++b)
+        {
+            parts += blockLimits[b].capturedFraction(*blocks[b], parcel, dt);
+        }
+        EXPECT_NEAR(parts, wholeLimit.capturedFraction(whole, parcel, dt), 1e-14);
+        removed += parts * parcelMass(parcel);
+    }
+    // Removed from the parcels = granted to the fibers (P14).
+    EXPECT_NEAR(removed, wholeReport.massGranted, 1e-12 * wholeReport.massGranted);
+    // The other way: block 0 imports every f_n from the owners and evaluates c_p alone.
+    CaptureLimit imported;
+    for (const CaptureLimit& owner : blockLimits)
+    {
+        for (const NodeMass& entry : owner.takenFractions())
+        {
+            imported.setTakenFraction(entry.node, entry.mass, spec.nodes);
+        }
+    }
+    for (const Parcel& parcel : parcels)
+    {
+        EXPECT_NEAR(imported.capturedFraction(*blocks[0], parcel, dt),
+                    wholeLimit.capturedFraction(whole, parcel, dt), 1e-14);
+    }
+}
