@@ -316,19 +316,8 @@ void DensityGrid::deposit(const Parcel& parcel, double dt)
     // 4. Weights of the lattice nodes in the bounding box of the swept capsule; ghost
     // nodes beyond the faces are folded onto their mirror images.
     const IndexBox box = nodeBox(path, reach);
-    const bool batched
-        = batched_ && !pathWeight.stationary() && box.nodeCount() >= PathWeightBatch::minimumBoxNodes;
     IndexBox weightedBox = box;
-    double omegaSum = 0.0;
-    if (!withinGrid(box))
-    {
-        omegaSum = weighAndFold(pathWeight, path.start, box, batched, weightedBox);
-    }
-    else
-    {
-        omegaSum = batched ? weighNodesBatched(pathWeight, path.start, box)
-                           : weighNodesOneByOne(pathWeight, path.start, box);
-    }
+    const double omegaSum = weighLattice(pathWeight, path, box, weightedBox);
     stats.nodesVisited += static_cast<std::int64_t>(box.nodeCount());
 
     // 5-6. Normalise (eq. 24), or fall back to cloud-in-cell weights.
@@ -426,14 +415,47 @@ bool DensityGrid::withinGrid(const IndexBox& box) const
     return true;
 }
 
-double DensityGrid::weighNodesBatched(const PathWeight& pathWeight, const Eigen::Vector3d& start,
-                                      const IndexBox& box)
+double DensityGrid::weighLattice(const PathWeight& pathWeight, const ClippedPath& path, const IndexBox& box,
+                                 IndexBox& weightedBox)
 {
-    // CPU with AVX2 + FMA (KernelBuild.hpp): project every node of the box, then omega of
-    // all of them four at a time without branches (PathWeightBatch); the same sums and the
-    // same list of weighted nodes, in node order, as weighNodesOneByOne.
-    const double* boxOmega = batch_.boxOmegas(pathWeight, start, latticeCoordinates(0), latticeCoordinates(1),
-                                              latticeCoordinates(2), box.lo, box.hi);
+    const int points = separablePoints(pathWeight, std::sqrt(pathWeight.cutoffSquared()), box.nodeCount());
+    const double* omega = nullptr; // the whole box's omegas, where computed at once
+    if (points > 0)
+    {
+        ++stepStatistics_.parcelsSeparable;
+        omega = separable_.boxOmegas(pathWeight, path.start, path.displacement, points, latticeCoordinates(0),
+                                     latticeCoordinates(1), latticeCoordinates(2), box.lo, box.hi);
+    }
+    else if (batched_ && !pathWeight.stationary() && box.nodeCount() >= PathWeightBatch::minimumBoxNodes)
+    {
+        omega = batch_.boxOmegas(pathWeight, path.start, latticeCoordinates(0), latticeCoordinates(1),
+                                 latticeCoordinates(2), box.lo, box.hi);
+    }
+    if (!withinGrid(box))
+    {
+        omega = omega ? omega : latticeOmegas(pathWeight, path.start, box);
+        weightedBox = mirrorBox(box);
+        return foldOntoNodes(omega, weightedBox);
+    }
+    weightedBox = box;
+    return omega ? listWeighted(omega, box) : weighNodesOneByOne(pathWeight, path.start, box);
+}
+
+int DensityGrid::separablePoints(const PathWeight& pathWeight, double reach, std::size_t boxNodes) const
+{
+    if (kernelSettings_.method != DepositMethod::Automatic || reach < separableFromSpacings * largestSpacing_)
+    {
+        return 0;
+    }
+    // The parcel's largest omega is at least phi(c + L/2) (negligibleDistance).
+    const ParcelKernel& kernel = pathWeight.kernel();
+    const double largestWeightBound = kernel.phi(halfCellDiagonal_ + 0.5 * pathWeight.length());
+    const double k = std::sqrt(kernel.gamma()) * pathWeight.length();
+    return SeparableWeight::chooseQuadrature(k, kernel.edgeValue(), largestWeightBound, boxNodes);
+}
+
+double DensityGrid::listWeighted(const double* boxOmega, const IndexBox& box)
+{
     // List the nodes with omega > 0 without a branch: each node is written at the end of
     // the list and kept by advancing the count (omega <= 0 adds 0 to the sum).
     scratch_.clear();
@@ -480,17 +502,6 @@ double DensityGrid::weighNodesOneByOne(const PathWeight& pathWeight, const Eigen
                    }
                });
     return omegaSum;
-}
-
-double DensityGrid::weighAndFold(const PathWeight& pathWeight, const Eigen::Vector3d& start,
-                                 const IndexBox& box, bool batched, IndexBox& foldedBox)
-{
-    const double* omega = batched
-        ? batch_.boxOmegas(pathWeight, start, latticeCoordinates(0), latticeCoordinates(1),
-                           latticeCoordinates(2), box.lo, box.hi)
-        : latticeOmegas(pathWeight, start, box);
-    foldedBox = mirrorBox(box);
-    return foldOntoNodes(omega, foldedBox);
 }
 
 const double* DensityGrid::latticeOmegas(const PathWeight& pathWeight, const Eigen::Vector3d& start,

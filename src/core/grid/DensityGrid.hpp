@@ -93,6 +93,7 @@
 #include "grid/ParcelKernel.hpp"
 #include "grid/PathWeight.hpp"
 #include "grid/PathWeightBatch.hpp"
+#include "grid/SeparableWeight.hpp"
 #include "grid/StepStatistics.hpp"
 
 #include <Eigen/Core>
@@ -251,17 +252,25 @@ private:
     // (the midpoint rule's error along diagonal paths cancels between the cells around an
     // interior node, not at a face; docs/model.md sec. 4, edge nodes).
     static constexpr double faceRefinement = 8.0;
-    // Step 4: omega of every node of the box; the nodes with omega > 0 go to scratch_, in
-    // node order. Returns sum omega. Batched (AVX2 + FMA, moving parcels) or node by node.
-    double weighNodesBatched(const PathWeight& pathWeight, const Eigen::Vector3d& start, const IndexBox& box);
+    // Step 4: omega of every lattice node of the box: separably (wide kernels,
+    // separablePoints), batched (AVX2 + FMA, moving parcels) or node by node; the nodes with
+    // omega > 0 go to scratch_ in node order, ghost nodes folded onto their mirror images
+    // (weightedBox: the box of the listed nodes). Returns sum omega over the lattice nodes.
+    double weighLattice(const PathWeight& pathWeight, const ClippedPath& path, const IndexBox& box,
+                        IndexBox& weightedBox);
+    // Gauss-Legendre points for the separable weights of this parcel (SeparableWeight), 0
+    // for the exact code: KernelSettings::method, a kernel reaching (cut-off included) at
+    // least separableFromSpacings largest spacings, and SeparableWeight's bound.
+    int separablePoints(const PathWeight& pathWeight, double reach, std::size_t boxNodes) const;
+    // Kernels reaching fewer spacings keep the exact code: their boxes hold few nodes per
+    // axis table (depositionBench, wide kernels).
+    static constexpr double separableFromSpacings = 3.0;
+    // The box's omegas (i fastest) -> scratch_ (omega > 0, node order; box inside the
+    // grid). Returns their sum.
+    double listWeighted(const double* boxOmega, const IndexBox& box);
+    // Node by node, for boxes inside the grid (stationary parcels, small boxes, no AVX2).
     double weighNodesOneByOne(const PathWeight& pathWeight, const Eigen::Vector3d& start,
                               const IndexBox& box);
-    // Step 4 for a box with ghost nodes: omega of every lattice node of the box (batched or
-    // node by node), each added to its mirror image (folded kernels); the nodes of
-    // foldedBox that got weight go to scratch_, in node order. Returns sum omega over the
-    // lattice nodes.
-    double weighAndFold(const PathWeight& pathWeight, const Eigen::Vector3d& start, const IndexBox& box,
-                        bool batched, IndexBox& foldedBox);
     // omega of every lattice node of the box node by node (i fastest), valid until the next call.
     const double* latticeOmegas(const PathWeight& pathWeight, const Eigen::Vector3d& start,
                                 const IndexBox& box);
@@ -330,7 +339,8 @@ private:
     std::vector<double> latticeOmega_;
     std::array<std::vector<int>, 3> mirrorImage_;
     std::vector<double> foldedOmega_;
-    PathWeightBatch batch_; // the batched deposit (batchedKernel(); unused, empty, otherwise)
+    PathWeightBatch batch_;     // the batched deposit (batchedKernel(); unused, empty, otherwise)
+    SeparableWeight separable_; // wide kernels' per-axis tables
 };
 
 } // namespace dropletFiber

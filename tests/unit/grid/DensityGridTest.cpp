@@ -236,6 +236,9 @@ TEST(DensityGrid, NegligibleWeightsLeftOutAreBelowTheBound)
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     KernelSettings exactTails;
     exactTails.negligibleWeight = 0.0;
+    exactTails.method = DepositMethod::Exact;
+    KernelSettings cutTails;
+    cutTails.method = DepositMethod::Exact; // the exact code's cut (SeparableWeightTest: the other)
     int cutNodes = 0;
     for (const bool threeD : {false, true})
     {
@@ -247,7 +250,7 @@ TEST(DensityGrid, NegligibleWeightsLeftOutAreBelowTheBound)
         }
         for (int p = 0; p < 40; ++p)
         {
-            DensityGrid cut(spec);
+            DensityGrid cut(spec, cutTails);
             DensityGrid exact(spec, exactTails);
             const double n = 150.0 + 850.0 * unit(rng); // r_max 1.5-10 mm
             const double rp = 1e-5;
