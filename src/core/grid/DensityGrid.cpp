@@ -418,15 +418,15 @@ bool DensityGrid::withinGrid(const IndexBox& box) const
 double DensityGrid::weighLattice(const PathWeight& pathWeight, const ClippedPath& path, const IndexBox& box,
                                  IndexBox& weightedBox)
 {
-    const int points = separablePoints(pathWeight, std::sqrt(pathWeight.cutoffSquared()), box.nodeCount());
-    const double* omega = nullptr; // the whole box's omegas, where computed at once
+    double threshold = 0.0;
+    const int points = separablePoints(pathWeight, box.nodeCount(), threshold);
     if (points > 0)
     {
         ++stepStatistics_.parcelsSeparable;
-        omega = separable_.boxOmegas(pathWeight, path.start, path.displacement, points, latticeCoordinates(0),
-                                     latticeCoordinates(1), latticeCoordinates(2), box.lo, box.hi);
+        return weighSeparable(pathWeight, path, box, points, threshold, weightedBox);
     }
-    else if (batched_ && !pathWeight.stationary() && box.nodeCount() >= PathWeightBatch::minimumBoxNodes)
+    const double* omega = nullptr; // the whole box's omegas, where computed at once
+    if (batched_ && !pathWeight.stationary() && box.nodeCount() >= PathWeightBatch::minimumBoxNodes)
     {
         omega = batch_.boxOmegas(pathWeight, path.start, latticeCoordinates(0), latticeCoordinates(1),
                                  latticeCoordinates(2), box.lo, box.hi);
@@ -441,17 +441,54 @@ double DensityGrid::weighLattice(const PathWeight& pathWeight, const ClippedPath
     return omega ? listWeighted(omega, box) : weighNodesOneByOne(pathWeight, path.start, box);
 }
 
-int DensityGrid::separablePoints(const PathWeight& pathWeight, double reach, std::size_t boxNodes) const
+int DensityGrid::separablePoints(const PathWeight& pathWeight, std::size_t boxNodes, double& threshold) const
 {
+    const double reach = std::sqrt(pathWeight.cutoffSquared()); // after the negligible-weight cut
     if (kernelSettings_.method != DepositMethod::Automatic || reach < separableFromSpacings * largestSpacing_)
     {
         return 0;
     }
-    // The parcel's largest omega is at least phi(c + L/2) (negligibleDistance).
+    // The parcel's largest omega is at least phi(c + L/2) (negligibleDistance); nodes below
+    // negligibleWeight times that are left out, as the exact code leaves out those beyond the cut.
     const ParcelKernel& kernel = pathWeight.kernel();
     const double largestWeightBound = kernel.phi(halfCellDiagonal_ + 0.5 * pathWeight.length());
+    threshold = kernelSettings_.negligibleWeight * largestWeightBound;
     const double k = std::sqrt(kernel.gamma()) * pathWeight.length();
-    return SeparableWeight::chooseQuadrature(k, kernel.edgeValue(), largestWeightBound, boxNodes);
+    return SeparableWeight::chooseQuadrature(k, kernel.edgeValue(), threshold, largestWeightBound, boxNodes);
+}
+
+double DensityGrid::weighSeparable(const PathWeight& pathWeight, const ClippedPath& path, const IndexBox& box,
+                                   int points, double threshold, IndexBox& weightedBox)
+{
+    separable_.prepare(pathWeight, path.start, path.displacement, points,
+                       {{latticeCoordinates(0), latticeCoordinates(1), latticeCoordinates(2)}}, box.lo,
+                       box.hi);
+    weightedBox = box;
+    if (!withinGrid(box))
+    {
+        // Folded kernels: the tables fold axis by axis (SeparableWeight.hpp).
+        weightedBox = mirrorBox(box);
+        separable_.fold(mirrorImage_, weightedBox.lo, weightedBox.hi);
+    }
+    // The nodes above the threshold, in node order, listed without a branch.
+    scratch_.clear();
+    scratch_.resize(weightedBox.nodeCount());
+    std::size_t weighted = 0;
+    double omegaSum = 0.0;
+    forEachRow(weightedBox, spec_.nodes,
+               [&](const IndexRow& row)
+               {
+                   const double* omega = separable_.row(row.j - weightedBox.lo[1], row.k - weightedBox.lo[2]);
+                   for (std::size_t i = 0; i < row.length; ++i)
+                   {
+                       const double w = omega[i] > threshold ? omega[i] : 0.0;
+                       scratch_[weighted] = {row.first + i, w};
+                       weighted += w > 0.0 ? 1 : 0;
+                       omegaSum += w;
+                   }
+               });
+    scratch_.resize(weighted);
+    return omegaSum;
 }
 
 double DensityGrid::listWeighted(const double* boxOmega, const IndexBox& box)
@@ -588,9 +625,34 @@ double DensityGrid::foldOntoNodes(const double* omega, const IndexBox& foldedBox
 void DensityGrid::depositWeighted(double inverseSum, const std::array<double, nQuantities>& parcelTotals,
                                   const IndexBox& box)
 {
-    for (const auto& [node, omega] : scratch_)
+    if (storesWholeGrid_)
     {
-        accumulate(node, omega * inverseSum, parcelTotals);
+        // Serial runs: the nodes' values straight from the accumulator, each node's cache
+        // lines requested prefetchDistance nodes ahead (wide kernels touch thousands of
+        // nodes per parcel, mostly not in cache: the deposit's floor, docs/performance.md).
+        const std::size_t count = scratch_.size();
+        for (std::size_t n = 0; n < count; ++n)
+        {
+            if (n + prefetchDistance < count)
+            {
+                const double* ahead = step_.data() + scratch_[n + prefetchDistance].first * nQuantities;
+                __builtin_prefetch(ahead, 1);
+                __builtin_prefetch(ahead + nQuantities - 1, 1);
+            }
+            double* values = step_.data() + scratch_[n].first * nQuantities;
+            const double weight = scratch_[n].second * inverseSum;
+            for (int q = 0; q < nQuantities; ++q)
+            {
+                values[q] += weight * parcelTotals[static_cast<std::size_t>(q)];
+            }
+        }
+    }
+    else
+    {
+        for (const auto& [node, omega] : scratch_)
+        {
+            accumulate(node, omega * inverseSum, parcelTotals);
+        }
     }
     stepStatistics_.nodesWeighted += static_cast<std::int64_t>(scratch_.size());
     // The touched box: the weighted nodes lie inside it.

@@ -260,8 +260,13 @@ private:
                         IndexBox& weightedBox);
     // Gauss-Legendre points for the separable weights of this parcel (SeparableWeight), 0
     // for the exact code: KernelSettings::method, a kernel reaching (cut-off included) at
-    // least separableFromSpacings largest spacings, and SeparableWeight's bound.
-    int separablePoints(const PathWeight& pathWeight, double reach, std::size_t boxNodes) const;
+    // least separableFromSpacings largest spacings, and SeparableWeight's bound; threshold:
+    // the omega below which nodes are left out (negligible weights).
+    int separablePoints(const PathWeight& pathWeight, std::size_t boxNodes, double& threshold) const;
+    // Step 4 for wide kernels: SeparableWeight's tables (folded where the box has ghost
+    // nodes); nodes with omega > threshold go to scratch_ in node order. Returns their sum.
+    double weighSeparable(const PathWeight& pathWeight, const ClippedPath& path, const IndexBox& box,
+                          int points, double threshold, IndexBox& weightedBox);
     // Kernels reaching fewer spacings keep the exact code: their boxes hold few nodes per
     // axis table (depositionBench, wide kernels).
     static constexpr double separableFromSpacings = 3.0;
@@ -290,6 +295,8 @@ private:
                           const std::array<double, nQuantities>& parcelTotals);
     // The path's weights summed per node of its cell box (pathWeights_) onto the grid.
     void depositPathWeights(const IndexBox& box, const std::array<double, nQuantities>& parcelTotals);
+    // Nodes ahead in depositWeighted's list whose accumulator values are prefetched.
+    static constexpr std::size_t prefetchDistance = 32;
     // Step 7 for one node.
     void accumulate(std::size_t node, double weight, const std::array<double, nQuantities>& parcelTotals);
     // The step values of a node (global flat index): stored, or its overflow entry.

@@ -60,18 +60,18 @@ double SeparableWeight::quadratureBound(int points, double k)
     return cramerConstant * std::exp(logBound);
 }
 
-int SeparableWeight::chooseQuadrature(double k, double edgeValue, double largestWeightBound,
+int SeparableWeight::chooseQuadrature(double k, double edgeValue, double threshold, double largestWeightBound,
                                       std::size_t boxNodes)
 {
     if (!(largestWeightBound > 0.0) || !std::isfinite(k))
     {
         return 0;
     }
-    const double nodes = static_cast<double>(boxNodes) + 1.0;
+    const double nodes = 2.0 * static_cast<double>(boxNodes) + 1.0;
     const double budget = tolerance - 2.0 * relativeRounding;
     for (int points = 1; points <= maximumPoints; ++points)
     {
-        const double perNode = quadratureBound(points, k) + edgeValue * (1.0 + relativeRounding);
+        const double perNode = quadratureBound(points, k) + edgeValue * (1.0 + relativeRounding) + threshold;
         if (nodes * perNode / largestWeightBound <= budget)
         {
             return points;
@@ -80,62 +80,41 @@ int SeparableWeight::chooseQuadrature(double k, double edgeValue, double largest
     return 0;
 }
 
-const double* SeparableWeight::boxOmegas(const PathWeight& path, const Eigen::Vector3d& start,
-                                         const Eigen::Vector3d& displacement, int points, const double* x,
-                                         const double* y, const double* z, const std::array<int, 3>& lo,
-                                         const std::array<int, 3>& hi)
+void SeparableWeight::prepare(const PathWeight& path, const Eigen::Vector3d& start,
+                              const Eigen::Vector3d& displacement, int points,
+                              const std::array<const double*, 3>& coordinates, const std::array<int, 3>& lo,
+                              const std::array<int, 3>& hi)
 {
     if (points < 1 || points > maximumPoints)
     {
         throw std::invalid_argument("SeparableWeight: points must lie in [1, maximumPoints]");
     }
     const UnitRules& rules = unitRules();
+    points_ = points;
     for (int q = 0; q < points; ++q)
     {
-        tau_[q] = path.stationary() ? 0.5 : rules.tau[points][q];
-        weight_[q] = path.stationary() ? 1.0 : rules.weight[points][q];
+        const auto u = static_cast<std::size_t>(q);
+        tau_[u] = path.stationary() ? 0.5 : rules.tau[static_cast<std::size_t>(points)][u];
+        weight_[u] = path.stationary() ? 1.0 : rules.weight[static_cast<std::size_t>(points)][u];
     }
-    direction_ = path.stationary() ? Eigen::Vector3d::Zero() : Eigen::Vector3d(displacement / path.length());
-    const std::array<const double*, 3> coordinates{{x, y, z}};
     for (int d = 0; d < 3; ++d)
     {
-        axisTables(d, coordinates[d], lo[d], hi[d], path, start, displacement, points);
+        axisTable(d, coordinates[static_cast<std::size_t>(d)], lo[static_cast<std::size_t>(d)],
+                  hi[static_cast<std::size_t>(d)], path.kernel().gamma(), start, displacement);
     }
-    const std::size_t rowLength = offset_[0].size();
-    const std::size_t rows = offset_[1].size() * offset_[2].size();
-    omega_.resize(rowLength * rows);
-    rowSum_.resize(rowLength);
-    double* omega = omega_.data();
-    for (std::size_t k = 0; k < offset_[2].size(); ++k)
-    {
-        for (std::size_t j = 0; j < offset_[1].size(); ++j, omega += rowLength)
-        {
-            rowOmegas(static_cast<int>(j), static_cast<int>(k), points, path, omega);
-        }
-    }
-    return omega_.data();
+    rowOmega_.resize(length_[0]);
 }
 
-void SeparableWeight::axisTables(int d, const double* coordinate, int lo, int hi, const PathWeight& path,
-                                 const Eigen::Vector3d& start, const Eigen::Vector3d& displacement,
-                                 int points)
+void SeparableWeight::axisTable(int d, const double* coordinate, int lo, int hi, double gamma,
+                                const Eigen::Vector3d& start, const Eigen::Vector3d& displacement)
 {
     const auto n = static_cast<std::size_t>(hi - lo + 1);
-    std::vector<double>& offset = offset_[static_cast<std::size_t>(d)];
     std::vector<double>& factor = factor_[static_cast<std::size_t>(d)];
-    offset.resize(n);
-    factor.resize(n * static_cast<std::size_t>(points));
-    const double gamma = path.kernel().gamma();
-    // The node test uses PathWeight's distances: from the start along the path line, or
-    // (stationary) from the midpoint, offset - displacement / 2 rounded as it rounds them.
-    const double shift = path.stationary() ? 0.5 * displacement[d] : 0.0;
-    for (std::size_t i = 0; i < n; ++i)
+    length_[static_cast<std::size_t>(d)] = n;
+    factor.resize(n * static_cast<std::size_t>(points_));
+    for (int q = 0; q < points_; ++q)
     {
-        offset[i] = (coordinate[lo + static_cast<int>(i)] - start[d]) - shift;
-    }
-    for (int q = 0; q < points; ++q)
-    {
-        const double centre = start[d] + tau_[q] * displacement[d];
+        const double centre = start[d] + tau_[static_cast<std::size_t>(q)] * displacement[d];
         double* f = factor.data() + static_cast<std::size_t>(q) * n;
         for (std::size_t i = 0; i < n; ++i)
         {
@@ -145,43 +124,57 @@ void SeparableWeight::axisTables(int d, const double* coordinate, int lo, int hi
     }
 }
 
-void SeparableWeight::rowOmegas(int j, int k, int points, const PathWeight& path, double* omega)
+void SeparableWeight::fold(const std::array<std::vector<int>, 3>& image, const std::array<int, 3>& foldedLo,
+                           const std::array<int, 3>& foldedHi)
 {
-    const std::size_t n = offset_[0].size();
-    const double* px = offset_[0].data();
-    const double py = offset_[1][static_cast<std::size_t>(j)];
-    const double pz = offset_[2][static_cast<std::size_t>(k)];
-    const double ux = direction_.x(), uy = direction_.y(), uz = direction_.z();
-    const double cutoffSquared = path.cutoffSquared();
-    const double edgeValue = path.kernel().edgeValue();
-    const std::size_t ny = offset_[1].size(), nz = offset_[2].size();
-    for (int q = 0; q < points; ++q)
+    for (std::size_t d = 0; d < 3; ++d)
+    {
+        // Each lattice index's factor added to its node's (per point q), in lattice order.
+        const std::size_t n = length_[d];
+        const auto m = static_cast<std::size_t>(foldedHi[d] - foldedLo[d] + 1);
+        folded_[d].assign(m * static_cast<std::size_t>(points_), 0.0);
+        for (int q = 0; q < points_; ++q)
+        {
+            const double* from = factor_[d].data() + static_cast<std::size_t>(q) * n;
+            double* to = folded_[d].data() + static_cast<std::size_t>(q) * m;
+            for (std::size_t i = 0; i < n; ++i)
+            {
+                to[image[d][i] - foldedLo[d]] += from[i];
+            }
+        }
+        factor_[d].swap(folded_[d]);
+        length_[d] = m;
+    }
+    rowOmega_.resize(length_[0]);
+}
+
+const double* SeparableWeight::row(int j, int k)
+{
+    const std::size_t n = length_[0], ny = length_[1], nz = length_[2];
+    for (int q = 0; q < points_; ++q)
     {
         const auto u = static_cast<std::size_t>(q);
         rowFactor_[u] = weight_[u] * factor_[1][u * ny + static_cast<std::size_t>(j)]
             * factor_[2][u * nz + static_cast<std::size_t>(k)];
     }
-    // sum_q W_q f_x,q(i) f_y,q(j) f_z,q(k): one multiply-add per node and point.
-    std::fill(rowSum_.begin(), rowSum_.end(), 0.0);
-    for (int q = 0; q < points; ++q)
+    // sum_q W_q X_q(i) Y_q(j) Z_q(k): one multiply-add per node and point.
+    double* omega = rowOmega_.data();
+    const double r0 = rowFactor_[0];
+    const double* f0 = factor_[0].data();
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        omega[i] = r0 * f0[i];
+    }
+    for (int q = 1; q < points_; ++q)
     {
         const double r = rowFactor_[static_cast<std::size_t>(q)];
         const double* f = factor_[0].data() + static_cast<std::size_t>(q) * n;
         for (std::size_t i = 0; i < n; ++i)
         {
-            rowSum_[i] += r * f[i];
+            omega[i] += r * f[i];
         }
     }
-    // Keep the nodes PathWeight keeps: squared distance from the path line below the cut-off.
-    const double lambdaYZ = uy * py + uz * pz;
-    for (std::size_t i = 0; i < n; ++i)
-    {
-        const double lambda = ux * px[i] + lambdaYZ;
-        const double rx = px[i] - lambda * ux, ry = py - lambda * uy, rz = pz - lambda * uz;
-        const double distanceSquared = rx * rx + ry * ry + rz * rz;
-        const double value = std::max(rowSum_[i] - edgeValue, 0.0);
-        omega[i] = distanceSquared < cutoffSquared ? value : 0.0;
-    }
+    return omega;
 }
 
 } // namespace dropletFiber

@@ -273,11 +273,11 @@ TEST(SeparableWeight, ExactCodeWhereChosenOrWhereTheBoundFails)
         EXPECT_EQ(chosen.stepValues(), exact.stepValues());
     }
     // The truncation term E = exp(-gamma reach^2) alone breaks the bound: no quadrature.
-    EXPECT_EQ(SeparableWeight::chooseQuadrature(0.0, 1e-9, 1.0, 1000), 0);
-    EXPECT_EQ(SeparableWeight::chooseQuadrature(0.0, 1e-20, 1.0, 1000), 1);
+    EXPECT_EQ(SeparableWeight::chooseQuadrature(0.0, 1e-9, 0.0, 1.0, 1000), 0);
+    EXPECT_EQ(SeparableWeight::chooseQuadrature(0.0, 1e-20, 1e-17, 1.0, 1000), 1);
     // A path much longer than the kernel's width: more than maximumPoints points needed.
-    EXPECT_EQ(SeparableWeight::chooseQuadrature(20.0, 0.0, 1.0, 1000), 0);
+    EXPECT_EQ(SeparableWeight::chooseQuadrature(20.0, 0.0, 0.0, 1.0, 1000), 0);
     // Q grows with the path length.
-    EXPECT_LT(SeparableWeight::chooseQuadrature(0.1, 0.0, 1.0, 1000),
-              SeparableWeight::chooseQuadrature(1.0, 0.0, 1.0, 1000));
+    EXPECT_LT(SeparableWeight::chooseQuadrature(0.1, 0.0, 0.0, 1.0, 1000),
+              SeparableWeight::chooseQuadrature(1.0, 0.0, 0.0, 1.0, 1000));
 }
