@@ -272,6 +272,14 @@ TEST(SeparableWeight, ExactCodeWhereChosenOrWhereTheBoundFails)
         EXPECT_EQ(chosen.stepStatistics().parcelsSeparable, 0);
         EXPECT_EQ(chosen.stepValues(), exact.stepValues());
     }
+    // A capped kernel cut inside its Gaussian (r_max 6 cm, cap 5 mm: E = exp(-gamma cap^2)
+    // ~ 0.1): the left-out constant would be visible, so the exact code deposits it.
+    KernelSettings capped = settingsWith(DepositMethod::Automatic);
+    capped.rMaxCap = 5e-3;
+    DensityGrid cappedGrid(spec, capped);
+    cappedGrid.deposit(makeParcel(centre, Eigen::Vector3d(3.0, 1.0, 0.0), 3e-5, 2000.0), dt);
+    EXPECT_EQ(cappedGrid.stepStatistics().parcelsCapped, 1);
+    EXPECT_EQ(cappedGrid.stepStatistics().parcelsSeparable, 0);
     // The truncation term E = exp(-gamma reach^2) alone breaks the bound: no quadrature.
     EXPECT_EQ(SeparableWeight::chooseQuadrature(0.0, 1e-9, 0.0, 1.0, 1000), 0);
     EXPECT_EQ(SeparableWeight::chooseQuadrature(0.0, 1e-20, 1e-17, 1.0, 1000), 1);
@@ -280,4 +288,39 @@ TEST(SeparableWeight, ExactCodeWhereChosenOrWhereTheBoundFails)
     // Q grows with the path length.
     EXPECT_LT(SeparableWeight::chooseQuadrature(0.1, 0.0, 0.0, 1.0, 1000),
               SeparableWeight::chooseQuadrature(1.0, 0.0, 0.0, 1.0, 1000));
+}
+
+TEST(SeparableWeight, CappedTwoDimensionalSprayAgreesWithTheExactDeposit)
+{
+    // The tutorial's setting (channelSpray): 2D grid 5 x 15 cm, 1 mm spacing, 1 cm thick,
+    // rMaxCap 6 mm, cloudInCellBelow 0.5, dt 5e-4 s; parcels of 1-3000 droplets of 5-60 um
+    // moving up to 10 m/s (paths up to 5 spacings), some leaving the grid.
+    GridSpec spec;
+    spec.lower = Eigen::Vector3d(0.0, 0.0, 0.0);
+    spec.upper = Eigen::Vector3d(0.05, 0.15, 0.01);
+    spec.nodes = {{51, 151, 1}};
+    KernelSettings fastSettings = settingsWith(DepositMethod::Automatic);
+    fastSettings.rMaxCap = 6e-3;
+    fastSettings.cloudInCellBelow = 0.5;
+    KernelSettings exactSettings = fastSettings;
+    exactSettings.method = DepositMethod::Exact;
+    DensityGrid fast(spec, fastSettings);
+    DensityGrid exact(spec, exactSettings);
+    std::mt19937_64 random(5);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int p = 0; p < 400; ++p)
+    {
+        const Eigen::Vector3d position(0.052 * unit(random), 0.152 * unit(random), 0.01 * unit(random));
+        const Eigen::Vector3d velocity
+            = 10.0 * unit(random) * Eigen::Vector3d(unit(random) - 0.5, unit(random) - 0.5, 0.0);
+        const double n = std::exp(std::log(3000.0) * unit(random));
+        const Parcel parcel = makeParcel(position, velocity, 5e-6 + 55e-6 * unit(random), n);
+        fast.deposit(parcel, 5e-4);
+        exact.deposit(parcel, 5e-4);
+    }
+    EXPECT_GE(fast.stepStatistics().parcelsSeparable, 20);
+    EXPECT_LE(worstRelativeDifference(fast, exact), 1e-6);
+    std::printf("capped 2D spray: %lld of 400 separable, worst difference %.3g\n",
+                static_cast<long long>(fast.stepStatistics().parcelsSeparable),
+                worstRelativeDifference(fast, exact));
 }
