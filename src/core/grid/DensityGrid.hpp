@@ -27,6 +27,11 @@
 //     CPU has it and KernelSettings::vectorised is set (batchedKernel(); boxes of at least
 //     PathWeightBatch::minimumBoxNodes nodes), else node by node:
 //     the same nodes, boxes and statistics, weights equal to ~1 ulp of exp/erfc.
+//     Wide kernels (reach after the cut >= separableFromSpacings spacings;
+//     KernelSettings::method automatic) get separable weights instead (SeparableWeight:
+//     per-axis tables, Gauss-Legendre along the path, ghost nodes folded per axis) where
+//     its bound keeps them within 1e-7 of the parcel's largest weight; the same box, the
+//     nodes above negligibleWeight times the largest-weight bound (docs/model.md P12).
 //  5. Weights w_g = omega_g / sum omega (eq. 24, the sum over the lattice nodes), and each
 //     ghost node's weight added to its mirror image across the face (folded kernels,
 //     GridSpec::mirrorIndex): the mass given to the grid is f times the parcel's mass to
