@@ -90,12 +90,12 @@ void SeparableWeight::prepare(const PathWeight& path, const Eigen::Vector3d& sta
         throw std::invalid_argument("SeparableWeight: points must lie in [1, maximumPoints]");
     }
     const UnitRules& rules = unitRules();
-    points_ = points;
-    for (int q = 0; q < points; ++q)
+    points_ = path.stationary() ? 1 : points; // a point: its midpoint, as PathWeight takes it
+    for (int q = 0; q < points_; ++q)
     {
         const auto u = static_cast<std::size_t>(q);
-        tau_[u] = path.stationary() ? 0.5 : rules.tau[static_cast<std::size_t>(points)][u];
-        weight_[u] = path.stationary() ? 1.0 : rules.weight[static_cast<std::size_t>(points)][u];
+        tau_[u] = path.stationary() ? 0.5 : rules.tau[static_cast<std::size_t>(points_)][u];
+        weight_[u] = path.stationary() ? 1.0 : rules.weight[static_cast<std::size_t>(points_)][u];
     }
     for (int d = 0; d < 3; ++d)
     {
