@@ -33,7 +33,7 @@ out="${out:-$build/bench-results/$(date +%Y%m%d-%H%M%S)}"
 mkdir -p "$out"
 echo "bench/run.sh: outputs in $out"
 
-targets="depositionBench collisionBench fiberStepBench fiberScalingBench fiberTutorialBench paperSettingBench gridTrafficBench"
+targets="depositionBench collisionBench fiberStepBench fiberScalingBench fiberTutorialBench paperSettingBench gridTrafficBench wideKernelBench"
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release > "$out/cmake.log"
 # shellcheck disable=SC2086
 cmake --build "$build" -j2 --target $targets >> "$out/cmake.log" 2>&1
@@ -69,6 +69,7 @@ if $quick; then
     run fiberScaling "$bin/fiberScalingBench" --max-fibers 1000
     run fiberTutorial "$bin/fiberTutorialBench" --repeats 3
     run paperSetting "$bin/paperSettingBench" --quick
+    run wideKernel "$bin/wideKernelBench" --repeats 1 --seconds 0.05
 else
     run deposition "$bin/depositionBench" --budget 60 --repeats 3
     run collision "$bin/collisionBench" --repeats 5
@@ -76,6 +77,7 @@ else
     run fiberScaling "$bin/fiberScalingBench" --max-fibers 10000
     run fiberTutorial "$bin/fiberTutorialBench"
     run paperSetting "$bin/paperSettingBench" --steps 200
+    run wideKernel "$bin/wideKernelBench" --repeats 3
 fi
 run gridTraffic3D "$bin/gridTrafficBench" --synthetic3d
 

@@ -382,24 +382,13 @@ void DensityGrid::weighPath(const Parcel& parcel, const ClippedPath& path, Weigh
     // 4. Weights of the lattice nodes in the bounding box of the swept capsule; ghost
     // nodes beyond the faces are folded onto their mirror images.
     const IndexBox box = nodeBox(path, reach);
-    const bool folded = !withinGrid(box);
-    const IndexBox weightedBox = folded ? mirrorBox(box) : box;
-    if (!sink.wants(weightedBox) && !sink.wants(cloudInCellBox(path.start, path.displacement)))
+    if (!sink.wants(withinGrid(box) ? box : foldedBox(box))
+        && !sink.wants(cloudInCellBox(path.start, path.displacement)))
     {
         return; // depositedShare: neither these nodes nor the fallback's are asked for
     }
-    const bool batched
-        = batched_ && !pathWeight.stationary() && box.nodeCount() >= PathWeightBatch::minimumBoxNodes;
-    double omegaSum = 0.0;
-    if (folded)
-    {
-        omegaSum = weighAndFold(pathWeight, path.start, box, batched, weightedBox);
-    }
-    else
-    {
-        omegaSum = batched ? weighNodesBatched(pathWeight, path.start, box)
-                           : weighNodesOneByOne(pathWeight, path.start, box);
-    }
+    IndexBox weightedBox = box;
+    const double omegaSum = weighLattice(pathWeight, path, box, weightedBox, stats);
     stats.nodesVisited += static_cast<std::int64_t>(box.nodeCount());
 
     // 5-6. Normalise (eq. 24), or fall back to cloud-in-cell weights.
@@ -514,14 +503,88 @@ bool DensityGrid::withinGrid(const IndexBox& box) const
     return true;
 }
 
-double DensityGrid::weighNodesBatched(const PathWeight& pathWeight, const Eigen::Vector3d& start,
-                                      const IndexBox& box)
+double DensityGrid::weighLattice(const PathWeight& pathWeight, const ClippedPath& path, const IndexBox& box,
+                                 IndexBox& weightedBox, StepStatistics& stats)
 {
-    // CPU with AVX2 + FMA (KernelBuild.hpp): project every node of the box, then omega of
-    // all of them four at a time without branches (PathWeightBatch); the same sums and the
-    // same list of weighted nodes, in node order, as weighNodesOneByOne.
-    const double* boxOmega = batch_.boxOmegas(pathWeight, start, latticeCoordinates(0), latticeCoordinates(1),
-                                              latticeCoordinates(2), box.lo, box.hi);
+    double threshold = 0.0;
+    const int points = separablePoints(pathWeight, box.nodeCount(), threshold);
+    if (points > 0)
+    {
+        ++stats.parcelsSeparable;
+        return weighSeparable(pathWeight, path, box, points, threshold, weightedBox);
+    }
+    const double* omega = nullptr; // the whole box's omegas, where computed at once
+    if (batched_ && !pathWeight.stationary() && box.nodeCount() >= PathWeightBatch::minimumBoxNodes)
+    {
+        omega = batch_.boxOmegas(pathWeight, path.start, latticeCoordinates(0), latticeCoordinates(1),
+                                 latticeCoordinates(2), box.lo, box.hi);
+    }
+    if (!withinGrid(box))
+    {
+        omega = omega ? omega : latticeOmegas(pathWeight, path.start, box);
+        weightedBox = mirrorBox(box);
+        return foldOntoNodes(omega, weightedBox);
+    }
+    weightedBox = box;
+    return omega ? listWeighted(omega, box) : weighNodesOneByOne(pathWeight, path.start, box);
+}
+
+int DensityGrid::separablePoints(const PathWeight& pathWeight, std::size_t boxNodes, double& threshold) const
+{
+    const double reach = std::sqrt(pathWeight.cutoffSquared()); // after the negligible-weight cut
+    if (kernelSettings_.method != DepositMethod::Automatic || reach < separableFromSpacings * largestSpacing_)
+    {
+        return 0;
+    }
+    // The parcel's largest omega is at least phi(c + L/2) (negligibleDistance). Within the
+    // cut's box, nodes below separableThreshold times that are left out: not the cut's
+    // negligibleWeight, because the bound counts the threshold once per node of the box
+    // ((2N + 1) t / P), which a 1e-8 cut would spend on a few nodes; so the separable weights
+    // stay within the bound of the untruncated integral, and within the bound plus the cut's
+    // own error (docs/model.md P10: 5e-8 of the largest node value at 1e-8) of the exact code.
+    const ParcelKernel& kernel = pathWeight.kernel();
+    const double largestWeightBound = kernel.phi(halfCellDiagonal_ + 0.5 * pathWeight.length());
+    threshold = std::min(kernelSettings_.negligibleWeight, separableThreshold) * largestWeightBound;
+    const double k = std::sqrt(kernel.gamma()) * pathWeight.length();
+    return SeparableWeight::chooseQuadrature(k, kernel.edgeValue(), threshold, largestWeightBound, boxNodes);
+}
+
+double DensityGrid::weighSeparable(const PathWeight& pathWeight, const ClippedPath& path, const IndexBox& box,
+                                   int points, double threshold, IndexBox& weightedBox)
+{
+    separable_.prepare(pathWeight, path.start, path.displacement, points,
+                       {{latticeCoordinates(0), latticeCoordinates(1), latticeCoordinates(2)}}, box.lo,
+                       box.hi);
+    weightedBox = box;
+    if (!withinGrid(box))
+    {
+        // Folded kernels: the tables fold axis by axis (SeparableWeight.hpp).
+        weightedBox = mirrorBox(box);
+        separable_.fold(mirrorImage_, weightedBox.lo, weightedBox.hi);
+    }
+    // The nodes above the threshold, in node order, listed without a branch.
+    scratch_.clear();
+    scratch_.resize(weightedBox.nodeCount());
+    std::size_t weighted = 0;
+    double omegaSum = 0.0;
+    forEachRow(weightedBox, spec_.nodes,
+               [&](const IndexRow& row)
+               {
+                   const double* omega = separable_.row(row.j - weightedBox.lo[1], row.k - weightedBox.lo[2]);
+                   for (std::size_t i = 0; i < row.length; ++i)
+                   {
+                       const double w = omega[i] > threshold ? omega[i] : 0.0;
+                       scratch_[weighted] = {row.first + i, w};
+                       weighted += w > 0.0 ? 1 : 0;
+                       omegaSum += w;
+                   }
+               });
+    scratch_.resize(weighted);
+    return omegaSum;
+}
+
+double DensityGrid::listWeighted(const double* boxOmega, const IndexBox& box)
+{
     // List the nodes with omega > 0 without a branch: each node is written at the end of
     // the list and kept by advancing the count (omega <= 0 adds 0 to the sum).
     scratch_.clear();
@@ -568,16 +631,6 @@ double DensityGrid::weighNodesOneByOne(const PathWeight& pathWeight, const Eigen
                    }
                });
     return omegaSum;
-}
-
-double DensityGrid::weighAndFold(const PathWeight& pathWeight, const Eigen::Vector3d& start,
-                                 const IndexBox& box, bool batched, const IndexBox& foldedBox)
-{
-    const double* omega = batched
-        ? batch_.boxOmegas(pathWeight, start, latticeCoordinates(0), latticeCoordinates(1),
-                           latticeCoordinates(2), box.lo, box.hi)
-        : latticeOmegas(pathWeight, start, box);
-    return foldOntoNodes(omega, foldedBox);
 }
 
 const double* DensityGrid::latticeOmegas(const PathWeight& pathWeight, const Eigen::Vector3d& start,
@@ -663,9 +716,35 @@ double DensityGrid::foldOntoNodes(const double* omega, const IndexBox& foldedBox
 
 void DensityGrid::sendWeighted(double inverseSum, const IndexBox& box, WeightSink& sink)
 {
-    for (const auto& [node, omega] : scratch_)
+    if (sink.accumulates() && storesWholeGrid_)
     {
-        send(sink, node, omega * inverseSum);
+        // Serial runs: the nodes' values straight from the accumulator, each node's cache
+        // lines requested prefetchDistance nodes ahead (wide kernels touch thousands of
+        // nodes per parcel, mostly not in cache: the deposit's floor, docs/performance.md).
+        const std::array<double, nQuantities>& parcelTotals = *sink.totals;
+        const std::size_t count = scratch_.size();
+        for (std::size_t n = 0; n < count; ++n)
+        {
+            if (n + prefetchDistance < count)
+            {
+                const double* ahead = step_.data() + scratch_[n + prefetchDistance].first * nQuantities;
+                __builtin_prefetch(ahead, 1);
+                __builtin_prefetch(ahead + nQuantities - 1, 1);
+            }
+            double* values = step_.data() + scratch_[n].first * nQuantities;
+            const double weight = scratch_[n].second * inverseSum;
+            for (int q = 0; q < nQuantities; ++q)
+            {
+                values[q] += weight * parcelTotals[static_cast<std::size_t>(q)];
+            }
+        }
+    }
+    else
+    {
+        for (const auto& [node, omega] : scratch_)
+        {
+            send(sink, node, omega * inverseSum);
+        }
     }
     sink.statistics.nodesWeighted += static_cast<std::int64_t>(scratch_.size());
     // The touched box: the weighted nodes lie inside it.

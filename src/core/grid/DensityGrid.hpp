@@ -27,6 +27,11 @@
 //     CPU has it and KernelSettings::vectorised is set (batchedKernel(); boxes of at least
 //     PathWeightBatch::minimumBoxNodes nodes), else node by node:
 //     the same nodes, boxes and statistics, weights equal to ~1 ulp of exp/erfc.
+//     Wide kernels (reach after the cut >= separableFromSpacings spacings;
+//     KernelSettings::method automatic) get separable weights instead (SeparableWeight:
+//     per-axis tables, Gauss-Legendre along the path, ghost nodes folded per axis) where
+//     its bound keeps them within 1e-7 of the parcel's largest weight; the same box, the
+//     nodes above negligibleWeight times the largest-weight bound (docs/model.md P16).
 //  5. Weights w_g = omega_g / sum omega (eq. 24, the sum over the lattice nodes), and each
 //     ghost node's weight added to its mirror image across the face (folded kernels,
 //     GridSpec::mirrorIndex): the mass given to the grid is f times the parcel's mass to
@@ -99,6 +104,7 @@
 #include "grid/ParcelKernel.hpp"
 #include "grid/PathWeight.hpp"
 #include "grid/PathWeightBatch.hpp"
+#include "grid/SeparableWeight.hpp"
 #include "grid/StepStatistics.hpp"
 
 #include <Eigen/Core>
@@ -304,20 +310,38 @@ private:
     // (the midpoint rule's error along diagonal paths cancels between the cells around an
     // interior node, not at a face; docs/model.md sec. 4, edge nodes).
     static constexpr double faceRefinement = 8.0;
-    // Step 4: omega of every node of the box; the nodes with omega > 0 go to scratch_, in
-    // node order. Returns sum omega. Batched (AVX2 + FMA, moving parcels) or node by node.
-    double weighNodesBatched(const PathWeight& pathWeight, const Eigen::Vector3d& start, const IndexBox& box);
+    // Step 4: omega of every lattice node of the box: separably (wide kernels,
+    // separablePoints), batched (AVX2 + FMA, moving parcels) or node by node; the nodes with
+    // omega > 0 go to scratch_ in node order, ghost nodes folded onto their mirror images
+    // (weightedBox: the box of the listed nodes). Returns sum omega over the lattice nodes.
+    double weighLattice(const PathWeight& pathWeight, const ClippedPath& path, const IndexBox& box,
+                        IndexBox& weightedBox, StepStatistics& stats);
+    // Gauss-Legendre points for the separable weights of this parcel (SeparableWeight), 0
+    // for the exact code: KernelSettings::method, a kernel reaching (cut-off included) at
+    // least separableFromSpacings largest spacings, and SeparableWeight's bound; threshold:
+    // the omega below which nodes are left out (negligible weights).
+    int separablePoints(const PathWeight& pathWeight, std::size_t boxNodes, double& threshold) const;
+    // Step 4 for wide kernels: SeparableWeight's tables (folded where the box has ghost
+    // nodes); nodes with omega > threshold go to scratch_ in node order. Returns their sum.
+    double weighSeparable(const PathWeight& pathWeight, const ClippedPath& path, const IndexBox& box,
+                          int points, double threshold, IndexBox& weightedBox);
+    // Kernels reaching fewer spacings keep the exact code: at reach 1-2 spacings the
+    // separable weights were 0.7-1.1x the exact code's speed (stationary; moving ones mostly
+    // fail the bound: a path of h/2 is long against such a kernel), at 3.3 spacings 1.3-2.6x
+    // (wideKernelBench).
+    static constexpr double separableFromSpacings = 3.0;
+    // Separable weights below this times the parcel's largest-weight bound are left out
+    // (separablePoints: why not negligibleWeight).
+    static constexpr double separableThreshold = 1e-17;
+    // The box's omegas (i fastest) -> scratch_ (omega > 0, node order; box inside the
+    // grid). Returns their sum.
+    double listWeighted(const double* boxOmega, const IndexBox& box);
+    // Node by node, for boxes inside the grid (stationary parcels, small boxes, no AVX2).
     double weighNodesOneByOne(const PathWeight& pathWeight, const Eigen::Vector3d& start,
                               const IndexBox& box);
     // The nodes the lattice box's nodes fold onto (mirror images; the box itself when it
     // holds no ghost node).
     IndexBox foldedBox(const IndexBox& box) const;
-    // Step 4 for a box with ghost nodes: omega of every lattice node of the box (batched or
-    // node by node), each added to its mirror image (folded kernels); the nodes of
-    // foldedBox (mirrorBox(box), called first) that got weight go to scratch_, in node
-    // order. Returns sum omega over the lattice nodes.
-    double weighAndFold(const PathWeight& pathWeight, const Eigen::Vector3d& start, const IndexBox& box,
-                        bool batched, const IndexBox& foldedBox);
     // omega of every lattice node of the box node by node (i fastest), valid until the next call.
     const double* latticeOmegas(const PathWeight& pathWeight, const Eigen::Vector3d& start,
                                 const IndexBox& box);
@@ -339,6 +363,8 @@ private:
     void sendPathWeights(const IndexBox& box, WeightSink& sink);
     // One node's weight into the sink.
     void send(WeightSink& sink, std::size_t node, double weight);
+    // Nodes ahead in sendWeighted's list whose accumulator values are prefetched.
+    static constexpr std::size_t prefetchDistance = 32;
     // Step 7 for one node.
     void accumulate(std::size_t node, double weight, const std::array<double, nQuantities>& parcelTotals);
     // The step values of a node (global flat index); nullptr when not stored here.
@@ -387,7 +413,8 @@ private:
     std::vector<double> latticeOmega_;
     std::array<std::vector<int>, 3> mirrorImage_;
     std::vector<double> foldedOmega_;
-    PathWeightBatch batch_; // the batched deposit (batchedKernel(); unused, empty, otherwise)
+    PathWeightBatch batch_;     // the batched deposit (batchedKernel(); unused, empty, otherwise)
+    SeparableWeight separable_; // wide kernels' per-axis tables
 };
 
 } // namespace dropletFiber

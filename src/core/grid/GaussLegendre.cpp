@@ -10,9 +10,16 @@ namespace
 
 GaussLegendreRule makeRule()
 {
-    constexpr double pi = 3.14159265358979323846;
-    constexpr int n = GaussLegendreRule::order;
     GaussLegendreRule rule;
+    gaussLegendreRule(GaussLegendreRule::order, rule.node.data(), rule.weight.data());
+    return rule;
+}
+
+} // namespace
+
+void gaussLegendreRule(int n, double* node, double* weight)
+{
+    constexpr double pi = 3.14159265358979323846;
     for (int i = 0; i < n; ++i)
     {
         // Standard initial guess for the i-th root, then Newton on P_n.
@@ -36,13 +43,10 @@ GaussLegendreRule makeRule()
                 break;
             }
         }
-        rule.node[i] = x;
-        rule.weight[i] = 2.0 / ((1.0 - x * x) * derivative * derivative);
+        node[i] = x;
+        weight[i] = 2.0 / ((1.0 - x * x) * derivative * derivative);
     }
-    return rule;
 }
-
-} // namespace
 
 const GaussLegendreRule& gaussLegendre()
 {

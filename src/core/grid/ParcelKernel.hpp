@@ -22,6 +22,13 @@ enum class KernelDimension
     ThreeD
 };
 
+// How DensityGrid::deposit evaluates the node weights of eq. 23.
+enum class DepositMethod
+{
+    Automatic, // wide kernels separably (SeparableWeight) where its error bound holds, else exact
+    Exact      // always the per-node path integral (PathWeight, PathWeightBatch)
+};
+
 struct KernelSettings
 {
     double beta = 0.025;  // eq. 17/18: inflection point between r_min (0) and r_max (1)
@@ -53,6 +60,14 @@ struct KernelSettings
     // values to ~1e-14 of the largest), not to the bit, so runs on a mix of CPUs, or
     // bitwise comparisons across machines, may want the portable per-node results.
     bool vectorised = true;
+    // Automatic: a parcel whose kernel (after the negligible-weight cut) reaches at least
+    // DensityGrid::separableFromSpacings node spacings gets its weights from per-axis
+    // tables of the Gaussian (SeparableWeight; docs/model.md P16) when the proven bound
+    // keeps them within 1e-7 of its largest weight of eqs. 23-24, else the exact code.
+    // Why: the exact code costs one erf-type evaluation per node, (reach / h)^D nodes per
+    // parcel; the tables cost a few multiplications per node. Exact: always the exact code
+    // (the reference; tests and benchmarks compare the two).
+    DepositMethod method = DepositMethod::Automatic;
 
     // Throws std::invalid_argument: beta outside (0, 1], rMaxCap not finite,
     // cloudInCellBelow negative or not finite, negligibleWeight not in [0, 1e-6].

@@ -14,6 +14,7 @@ StepStatistics& StepStatistics::operator+=(const StepStatistics& other)
     parcelsCapped += other.parcelsCapped;
     parcelsFallback += other.parcelsFallback;
     parcelsCloudInCell += other.parcelsCloudInCell;
+    parcelsSeparable += other.parcelsSeparable;
     nodesVisited += other.nodesVisited;
     nodesWeighted += other.nodesWeighted;
     massIn += other.massIn;

@@ -18,6 +18,7 @@ struct StepStatistics
     std::int64_t parcelsCapped = 0;        // influence radius limited by KernelSettings::rMaxCap
     std::int64_t parcelsFallback = 0;      // kernel reached no node: multilinear weights used
     std::int64_t parcelsCloudInCell = 0;   // kernel narrower than KernelSettings::cloudInCellBelow allows
+    std::int64_t parcelsSeparable = 0;     // weights from per-axis tables (SeparableWeight, wide kernels)
     std::int64_t nodesVisited = 0;         // nodes examined (bounding boxes of the swept capsules;
                                            // cloud-in-cell: corners of the path's points)
     std::int64_t nodesWeighted = 0;        // nodes that received mass (cloud-in-cell paths across

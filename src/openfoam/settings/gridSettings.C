@@ -27,7 +27,7 @@ const wordList gridKeys
 {
     "lower", "upper", "nodes", "spacing", "averagingSteps",
     "beta", "rMaxCap", "cloudInCellBelow", "negligibleWeight", "vectorised",
-    "dimension", "radiusAverage", "maxMemory"
+    "depositMethod", "dimension", "radiusAverage", "maxMemory"
 };
 
 
@@ -123,6 +123,11 @@ Vector<label> toLabels(const std::array<int, 3>& n)
 }
 
 
+word methodName(const ::dropletFiber::DepositMethod m)
+{
+    return m == ::dropletFiber::DepositMethod::Exact ? "exact" : "automatic";
+}
+
 word dimensionName(const ::dropletFiber::KernelDimension d)
 {
     return
@@ -197,6 +202,13 @@ Foam::dropletFiber::gridSettings Foam::dropletFiber::readGridSettings
     // Node weights with the batched AVX2 + FMA loop where the CPU has it; false:
     // node by node, the same results to the bit on every CPU (src/core/grid/KernelBuild.hpp)
     kernel.vectorised = getSwitch(gridDict, "vectorised", true);
+    // Wide kernels from per-axis tables where their error bound holds (docs/model.md
+    // sec. 4, P16); exact: the per-node path integral for every parcel
+    kernel.method =
+        getChoice(gridDict, "depositMethod", "automatic", {"automatic", "exact"})
+        == "exact"
+      ? ::dropletFiber::DepositMethod::Exact
+      : ::dropletFiber::DepositMethod::Automatic;
     const word dim =
         getChoice(gridDict, "dimension", "automatic", {"automatic", "2", "3"});
     kernel.dimension =
@@ -265,6 +277,11 @@ void Foam::dropletFiber::checkGridUnchanged
         gridDict, "vectorised",
         word(Switch(a.vectorised).c_str()), word(Switch(b.vectorised).c_str()),
         kernel
+    );
+    checkUnchanged
+    (
+        gridDict, "depositMethod",
+        methodName(a.method), methodName(b.method), kernel
     );
     checkUnchanged
     (

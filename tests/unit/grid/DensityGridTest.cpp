@@ -237,12 +237,14 @@ TEST(DensityGrid, NegligibleWeightsLeftOutAreBelowTheBound)
     // and 3D, for the default and for 1e-17.
     KernelSettings exactTails;
     exactTails.negligibleWeight = 0.0;
+    exactTails.method = DepositMethod::Exact;
     for (const double epsilon : {KernelSettings{}.negligibleWeight, 1e-17})
     {
         std::mt19937_64 rng(17);
         std::uniform_real_distribution<double> unit(0.0, 1.0);
         KernelSettings cutTails;
         cutTails.negligibleWeight = epsilon;
+        cutTails.method = DepositMethod::Exact; // the exact code's cut (SeparableWeightTest: the other)
         const double tailBound = 2.0 * std::sqrt(std::log(1.0 / epsilon) / M_PI) * epsilon;
         int cutNodes = 0;
         for (const bool threeD : {false, true})

@@ -134,6 +134,7 @@ TEST(DensityGridVectorised, PortablePathIsThePerNodeDeposit)
         KernelSettings settings;
         settings.negligibleWeight = 0.0;
         settings.vectorised = false;
+        settings.method = DepositMethod::Exact; // the per-node code (SeparableWeightTest: the other)
         DensityGrid grid(spec, settings);
         ASSERT_FALSE(grid.batchedKernel());
         for (double reach : {1.0, 3.0, 10.0})
@@ -255,6 +256,7 @@ TEST(DensityGridVectorised, BatchedAgreesWithPortable)
         {
             KernelSettings vectorisedSettings;
             vectorisedSettings.negligibleWeight = negligibleWeight;
+            vectorisedSettings.method = DepositMethod::Exact;
             KernelSettings portableSettings = vectorisedSettings;
             portableSettings.vectorised = false;
             DensityGrid batched(spec, vectorisedSettings, 2);

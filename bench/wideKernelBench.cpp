@@ -1,0 +1,220 @@
+// wideKernelBench: cost of DensityGrid::deposit for parcels of many droplets (wide kernels,
+// docs/model.md P16), the exact per-node path integral against the separable weights, in
+// one run (docs/performance.md, "Wide kernels").
+//
+// Rows: 3D grid box 5 x 5 x 5 cm, node spacing h = 0.5 mm (101^3 nodes) or 2 mm (26^3);
+// parcels of n = 10, 100, 1000, 5000 droplets of r_p = 5 or 50 um (rho_p 1000 kg/m^3) at
+// uniformly random end positions in the box (random order; kernels near the faces are
+// folded), stationary or moving h/2 per step in a random direction (dt = 1e-4 s). Default
+// KernelSettings (negligibleWeight 1e-17, cloudInCellBelow 0: always the kernel).
+// Columns, each the same parcels, one deposit() each (timed), then commitStep() (not timed):
+//   per node : method exact, vectorised false (PathWeight node by node)
+//   batched  : method exact, vectorised true (AVX2 + FMA where the CPU has it)
+//   separable: method automatic (SeparableWeight where chosen; the share of parcels that
+//              took it is printed)
+// Printed: ns per parcel (best of the repeats, and the spread (slowest - fastest) /
+// fastest), ns per node touched (box nodes: StepStatistics::nodesVisited), the kernel's
+// reach after the negligible-weight cut in spacings, and the speed-up of separable over per
+// node. The three columns run interleaved (A B C A B C ...). Figures, not a test.
+//
+// Usage: wideKernelBench [--repeats N] [--seconds S] [--spacing MM]
+//   --repeats  interleaved rounds (default 3)
+//   --seconds  target time of one timed run of the per-node column (default 0.15 s): the
+//              parcel count of a row is chosen from it (at least 1, at most 4000)
+//   --spacing  the rows of one node spacing only (0.5 or 2)
+#include "BenchCommon.hpp"
+
+#include "grid/DensityGrid.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <utility>
+#include <vector>
+
+using namespace dropletFiber;
+
+namespace
+{
+
+constexpr double dt = 1e-4;
+constexpr double boxSize = 0.05;
+
+struct Row
+{
+    double spacing;
+    double radius;
+    double n;
+    bool moving;
+};
+
+GridSpec gridSpec(double spacing)
+{
+    GridSpec s;
+    const int nodes = static_cast<int>(std::lround(boxSize / spacing)) + 1;
+    s.lower = Eigen::Vector3d(0.0, 0.0, 0.0);
+    s.upper = Eigen::Vector3d(boxSize, boxSize, boxSize);
+    s.nodes = {{nodes, nodes, nodes}};
+    return s;
+}
+
+std::vector<Parcel> makeParcels(const Row& row, int count)
+{
+    bench::Random random(11);
+    std::vector<Parcel> parcels(static_cast<std::size_t>(count));
+    for (Parcel& p : parcels)
+    {
+        p.position = Eigen::Vector3d(random.uniform(0.0, boxSize), random.uniform(0.0, boxSize),
+                                     random.uniform(0.0, boxSize));
+        Eigen::Vector3d direction(random.uniform(-1.0, 1.0), random.uniform(-1.0, 1.0),
+                                  random.uniform(-1.0, 1.0));
+        p.velocity = row.moving ? Eigen::Vector3d(direction.normalized() * (0.5 * row.spacing / dt))
+                                : Eigen::Vector3d(Eigen::Vector3d::Zero());
+        p.diameter = 2.0 * row.radius;
+        p.nParticle = row.n;
+        p.rhoDroplet = 1000.0;
+    }
+    return parcels;
+}
+
+KernelSettings settingsOf(int column)
+{
+    KernelSettings s;
+    s.method = column == 2 ? DepositMethod::Automatic : DepositMethod::Exact;
+    s.vectorised = column != 0;
+    return s;
+}
+
+struct Run
+{
+    double seconds;
+    StepStatistics statistics;
+};
+
+Run depositAll(DensityGrid& grid, const std::vector<Parcel>& parcels)
+{
+    // The deposit only: commitStep() costs per node of the touched box whatever the method
+    // (docs/performance.md, averaging window).
+    const double start = bench::Clock::now();
+    for (const Parcel& p : parcels)
+    {
+        grid.deposit(p, dt);
+    }
+    const double seconds = bench::secondsSince(start);
+    grid.commitStep();
+    return {seconds, grid.lastStepStatistics()};
+}
+
+// The kernel's reach after the negligible-weight cut (P10) in node spacings, and its width
+// (eq. 16) in spacings.
+std::pair<double, double> kernelInSpacings(const Row& row)
+{
+    const KernelSettings settings;
+    const ParcelKernel kernel(row.radius, row.n, settings, 3);
+    const double halfDiagonal = 0.5 * std::sqrt(3.0) * row.spacing;
+    const double best = kernel.phi(halfDiagonal + (row.moving ? 0.25 * row.spacing : 0.0));
+    double reach = kernel.reach();
+    if (kernel.edgeExponent() > -std::log(settings.negligibleWeight) && best > 0.0)
+    {
+        reach = std::min(reach,
+                         std::sqrt((-std::log(settings.negligibleWeight) - std::log(best)) / kernel.gamma()));
+    }
+    return {reach / row.spacing, kernel.width() / row.spacing};
+}
+
+void benchRow(const Row& row, int repeats, double targetSeconds)
+{
+    const GridSpec spec = gridSpec(row.spacing);
+    std::vector<DensityGrid> grids;
+    for (int column = 0; column < 3; ++column)
+    {
+        grids.emplace_back(spec, settingsOf(column));
+    }
+    // Parcel count from one parcel of the per-node column.
+    const Run probe = depositAll(grids[0], makeParcels(row, 1));
+    const int count
+        = static_cast<int>(std::clamp(targetSeconds / std::max(probe.seconds, 1e-9), 1.0, 4000.0));
+    const std::vector<Parcel> parcels = makeParcels(row, count);
+    std::vector<std::vector<double>> seconds(3);
+    std::vector<StepStatistics> statistics(3);
+    for (int r = 0; r < repeats; ++r)
+    {
+        for (int column = 0; column < 3; ++column)
+        {
+            const Run run = depositAll(grids[static_cast<std::size_t>(column)], parcels);
+            seconds[static_cast<std::size_t>(column)].push_back(run.seconds);
+            statistics[static_cast<std::size_t>(column)] = run.statistics;
+        }
+    }
+    const double nodes = static_cast<double>(statistics[0].nodesVisited);
+    const auto [reach, width] = kernelInSpacings(row);
+    std::printf("%4.1f %4.0f %5.0f %-4s %6d %7.1f %7.2f |", row.spacing * 1e3, row.radius * 1e6, row.n,
+                row.moving ? "mov" : "sta", count, reach, width);
+    double best[3];
+    for (int column = 0; column < 3; ++column)
+    {
+        const std::vector<double>& s = seconds[static_cast<std::size_t>(column)];
+        best[column] = *std::min_element(s.begin(), s.end());
+        const double spread = 100.0 * (*std::max_element(s.begin(), s.end()) - best[column]) / best[column];
+        std::printf(" %10.0f %6.2f %3.0f%% |", best[column] / count * 1e9, best[column] / nodes * 1e9,
+                    spread);
+    }
+    const double separableShare = static_cast<double>(statistics[2].parcelsSeparable) / count;
+    std::printf(" %5.1fx %5.1fx %4.0f%%\n", best[0] / best[2], best[1] / best[2], 100.0 * separableShare);
+    std::fflush(stdout);
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    int repeats = 3;
+    double targetSeconds = 0.15;
+    double onlySpacing = 0.0;
+    for (int a = 1; a < argc; ++a)
+    {
+        if (std::strcmp(argv[a], "--repeats") == 0 && a + 1 < argc)
+        {
+            repeats = std::max(1, std::atoi(argv[++a]));
+        }
+        else if (std::strcmp(argv[a], "--seconds") == 0 && a + 1 < argc)
+        {
+            targetSeconds = std::atof(argv[++a]);
+        }
+        else if (std::strcmp(argv[a], "--spacing") == 0 && a + 1 < argc)
+        {
+            onlySpacing = std::atof(argv[++a]) * 1e-3;
+        }
+        else
+        {
+            std::fprintf(stderr, "usage: wideKernelBench [--repeats N] [--seconds S] [--spacing MM]\n");
+            return 1;
+        }
+    }
+    std::printf("wideKernelBench: 3D box 5 cm, deposit() ns per parcel and per box node; best of %d "
+                "interleaved repeats, spread = (slowest - fastest) / fastest; batched kernel %s\n",
+                repeats, DensityGrid(gridSpec(2e-3)).batchedKernel() ? "AVX2 + FMA" : "not available");
+    std::printf("h/mm r/um     n path parcels reach/h width/h |  per node: ns/parcel ns/node spread |"
+                "   batched: ns/parcel ns/node spread | separable: ns/parcel ns/node spread |"
+                " vs per node, vs batched, separable share\n");
+    for (double spacing : {2e-3, 5e-4})
+    {
+        if (onlySpacing > 0.0 && std::abs(spacing - onlySpacing) > 1e-9)
+        {
+            continue;
+        }
+        for (double radius : {5e-6, 5e-5})
+        {
+            for (double n : {10.0, 100.0, 1000.0, 5000.0})
+            {
+                for (bool moving : {false, true})
+                {
+                    benchRow(Row{spacing, radius, n, moving}, repeats, targetSeconds);
+                }
+            }
+        }
+    }
+    return 0;
+}

@@ -1,0 +1,180 @@
+#include "grid/SeparableWeight.hpp"
+
+#include "grid/GaussLegendre.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace dropletFiber
+{
+
+namespace
+{
+
+// Cramer's bound: |H_m(x)| exp(-x^2 / 2) <= 1.086435 sqrt(2^m m!).
+constexpr double cramerConstant = 1.086435;
+
+// Gauss-Legendre points and weights on [0, 1] for 1..maximumPoints points, computed once.
+struct UnitRules
+{
+    std::array<std::array<double, SeparableWeight::maximumPoints>, SeparableWeight::maximumPoints + 1> tau{};
+    std::array<std::array<double, SeparableWeight::maximumPoints>, SeparableWeight::maximumPoints + 1>
+        weight{};
+};
+
+const UnitRules& unitRules()
+{
+    static const UnitRules rules = []
+    {
+        UnitRules r;
+        for (int n = 1; n <= SeparableWeight::maximumPoints; ++n)
+        {
+            std::array<double, SeparableWeight::maximumPoints> node{}, weight{};
+            gaussLegendreRule(n, node.data(), weight.data());
+            for (int q = 0; q < n; ++q)
+            {
+                r.tau[n][q] = 0.5 * (1.0 + node[q]);
+                r.weight[n][q] = 0.5 * weight[q];
+            }
+        }
+        return r;
+    }();
+    return rules;
+}
+
+} // namespace
+
+double SeparableWeight::quadratureBound(int points, double k)
+{
+    // In logarithms: (2Q)! reaches 1e25 at Q = 12.
+    const double q = points;
+    const double logFactorialQ = std::lgamma(q + 1.0);
+    const double logFactorial2Q = std::lgamma(2.0 * q + 1.0);
+    if (!(k > 0.0))
+    {
+        return 0.0;
+    }
+    const double logBound = 2.0 * q * std::log(k) + 0.5 * (q * std::log(4.0) + logFactorial2Q)
+        + 4.0 * logFactorialQ - std::log(2.0 * q + 1.0) - 3.0 * logFactorial2Q;
+    return cramerConstant * std::exp(logBound);
+}
+
+int SeparableWeight::chooseQuadrature(double k, double edgeValue, double threshold, double largestWeightBound,
+                                      std::size_t boxNodes)
+{
+    if (!(largestWeightBound > 0.0) || !std::isfinite(k))
+    {
+        return 0;
+    }
+    const double nodes = 2.0 * static_cast<double>(boxNodes) + 1.0;
+    const double budget = tolerance - 2.0 * relativeRounding;
+    for (int points = 1; points <= maximumPoints; ++points)
+    {
+        const double perNode = quadratureBound(points, k) + edgeValue * (1.0 + relativeRounding) + threshold;
+        if (nodes * perNode / largestWeightBound <= budget)
+        {
+            return points;
+        }
+    }
+    return 0;
+}
+
+void SeparableWeight::prepare(const PathWeight& path, const Eigen::Vector3d& start,
+                              const Eigen::Vector3d& displacement, int points,
+                              const std::array<const double*, 3>& coordinates, const std::array<int, 3>& lo,
+                              const std::array<int, 3>& hi)
+{
+    if (points < 1 || points > maximumPoints)
+    {
+        throw std::invalid_argument("SeparableWeight: points must lie in [1, maximumPoints]");
+    }
+    const UnitRules& rules = unitRules();
+    points_ = path.stationary() ? 1 : points; // a point: its midpoint, as PathWeight takes it
+    for (int q = 0; q < points_; ++q)
+    {
+        const auto u = static_cast<std::size_t>(q);
+        tau_[u] = path.stationary() ? 0.5 : rules.tau[static_cast<std::size_t>(points_)][u];
+        weight_[u] = path.stationary() ? 1.0 : rules.weight[static_cast<std::size_t>(points_)][u];
+    }
+    for (int d = 0; d < 3; ++d)
+    {
+        axisTable(d, coordinates[static_cast<std::size_t>(d)], lo[static_cast<std::size_t>(d)],
+                  hi[static_cast<std::size_t>(d)], path.kernel().gamma(), start, displacement);
+    }
+    rowOmega_.resize(length_[0]);
+}
+
+void SeparableWeight::axisTable(int d, const double* coordinate, int lo, int hi, double gamma,
+                                const Eigen::Vector3d& start, const Eigen::Vector3d& displacement)
+{
+    const auto n = static_cast<std::size_t>(hi - lo + 1);
+    std::vector<double>& factor = factor_[static_cast<std::size_t>(d)];
+    length_[static_cast<std::size_t>(d)] = n;
+    factor.resize(n * static_cast<std::size_t>(points_));
+    for (int q = 0; q < points_; ++q)
+    {
+        const double centre = start[d] + tau_[static_cast<std::size_t>(q)] * displacement[d];
+        double* f = factor.data() + static_cast<std::size_t>(q) * n;
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            const double s = coordinate[lo + static_cast<int>(i)] - centre;
+            f[i] = std::exp(-gamma * s * s);
+        }
+    }
+}
+
+void SeparableWeight::fold(const std::array<std::vector<int>, 3>& image, const std::array<int, 3>& foldedLo,
+                           const std::array<int, 3>& foldedHi)
+{
+    for (std::size_t d = 0; d < 3; ++d)
+    {
+        // Each lattice index's factor added to its node's (per point q), in lattice order.
+        const std::size_t n = length_[d];
+        const auto m = static_cast<std::size_t>(foldedHi[d] - foldedLo[d] + 1);
+        folded_[d].assign(m * static_cast<std::size_t>(points_), 0.0);
+        for (int q = 0; q < points_; ++q)
+        {
+            const double* from = factor_[d].data() + static_cast<std::size_t>(q) * n;
+            double* to = folded_[d].data() + static_cast<std::size_t>(q) * m;
+            for (std::size_t i = 0; i < n; ++i)
+            {
+                to[image[d][i] - foldedLo[d]] += from[i];
+            }
+        }
+        factor_[d].swap(folded_[d]);
+        length_[d] = m;
+    }
+    rowOmega_.resize(length_[0]);
+}
+
+const double* SeparableWeight::row(int j, int k)
+{
+    const std::size_t n = length_[0], ny = length_[1], nz = length_[2];
+    for (int q = 0; q < points_; ++q)
+    {
+        const auto u = static_cast<std::size_t>(q);
+        rowFactor_[u] = weight_[u] * factor_[1][u * ny + static_cast<std::size_t>(j)]
+            * factor_[2][u * nz + static_cast<std::size_t>(k)];
+    }
+    // sum_q W_q X_q(i) Y_q(j) Z_q(k): one multiply-add per node and point.
+    double* omega = rowOmega_.data();
+    const double r0 = rowFactor_[0];
+    const double* f0 = factor_[0].data();
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        omega[i] = r0 * f0[i];
+    }
+    for (int q = 1; q < points_; ++q)
+    {
+        const double r = rowFactor_[static_cast<std::size_t>(q)];
+        const double* f = factor_[0].data() + static_cast<std::size_t>(q) * n;
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            omega[i] += r * f[i];
+        }
+    }
+    return omega;
+}
+
+} // namespace dropletFiber
