@@ -256,6 +256,17 @@ void addWeightedRow(const double* omega, std::size_t length, double inverseSum,
     }
 }
 
+// Requests the cache lines of a row of `length` nodes' values (for writing), where they
+// exist; a hint only, without effect on the values.
+void prefetchRow(const double* values, std::size_t length)
+{
+    constexpr std::size_t valuesPerLine = 8; // 64-byte cache lines
+    for (std::size_t m = 0; m < length * nQuantities; m += valuesPerLine)
+    {
+        __builtin_prefetch(values + m, 1);
+    }
+}
+
 GridBlock checkedBlock(const GridSpec& spec, const GridBlock& block)
 {
     spec.validate();
@@ -634,14 +645,23 @@ void DensityGrid::sendSeparable(double inverseSum, const IndexBox& box, WeightSi
     const IndexBox stored = box.intersected(storage_);
     const std::array<double, nQuantities>& parcelTotals = *sink.totals;
     const auto first = static_cast<std::size_t>(stored.lo[0] - box.lo[0]);
+    // The values of the row rowsAhead further in j (the next layer's at a layer's end: a
+    // wasted request), requested while this one is added: rows of a few dozen nodes are too
+    // short for the hardware's prefetcher, on grids beyond the caches.
+    const std::size_t rowAhead
+        = rowsAhead * static_cast<std::size_t>(storage_.hi[0] - storage_.lo[0] + 1) * nQuantities;
     forEachRowIn(stored, storage_,
                  [&](const IndexRow& row)
                  {
                      const double* omega
                          = separable_.row(row.j + storage_.lo[1] - box.lo[1],
                                           row.k + storage_.lo[2] - box.lo[2], first, row.length);
-                     addWeightedRow(omega, row.length, inverseSum, parcelTotals,
-                                    step_.data() + row.first * nQuantities);
+                     double* values = step_.data() + row.first * nQuantities;
+                     if ((row.first + row.length) * nQuantities + rowAhead <= step_.size())
+                     {
+                         prefetchRow(values + rowAhead, row.length);
+                     }
+                     addWeightedRow(omega, row.length, inverseSum, parcelTotals, values);
                  });
     sink.statistics.nodesWeighted += static_cast<std::int64_t>(stored.empty() ? 0 : stored.nodeCount());
     touch(box); // the stored part of it

@@ -7,7 +7,11 @@
 //    the grid (storage and overflow): every quantity at every node within 1e-7 (single
 //    parcels: the proven bound) or 1e-6 (clouds: the requirement) of the largest
 //    node value; the separable path was taken; mass conserved to 1e-12;
-//  - narrow kernels, method Exact, and kernels whose bound cannot be met keep the exact code.
+//  - narrow kernels, method Exact, and kernels whose bound cannot be met keep the exact code;
+//  - the normalising sum from the per-axis sums (P17) against the node-by-node sum from the
+//    definition, before and after folding; blocks tiling the grid, each weighing only its
+//    stored rows, hold the whole grid's deposit to the bit; depositedShare (depletion) gives
+//    the weights deposit() put on the nodes.
 #include "grid/DensityGrid.hpp"
 #include "grid/GaussLegendre.hpp"
 #include "grid/SeparableWeight.hpp"
