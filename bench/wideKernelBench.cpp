@@ -6,7 +6,7 @@
 // parcels of n = 10, 100, 1000, 5000 droplets of r_p = 5 or 50 um (rho_p 1000 kg/m^3) at
 // uniformly random end positions in the box (random order; kernels near the faces are
 // folded), stationary or moving h/2 per step in a random direction (dt = 1e-4 s). Default
-// KernelSettings (negligibleWeight 1e-17, cloudInCellBelow 0: always the kernel).
+// KernelSettings (negligibleWeight 1e-8, cloudInCellBelow 0: always the kernel).
 // Columns, each the same parcels, one deposit() each (timed), then commitStep() (not timed):
 //   per node : method exact, vectorised false (PathWeight node by node)
 //   batched  : method exact, vectorised true (AVX2 + FMA where the CPU has it)

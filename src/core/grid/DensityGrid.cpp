@@ -218,6 +218,55 @@ void addCornerWeights(const GridSpec& spec, const std::array<double, 3>& spacing
     }
 }
 
+// Step 7 for a row of nodes with contiguous values: node i gets weight omega[i] inverseSum
+// times the parcel's quantities. Two nodes at a time as 14 consecutive values (whole
+// vector registers, 7 pairs, where one node's 7 values leave one over), each value the
+// same product and sum as node by node.
+void addWeightedRow(const double* omega, std::size_t length, double inverseSum,
+                    const std::array<double, nQuantities>& totals, double* values)
+{
+    constexpr std::size_t pair = 2 * nQuantities;
+    std::array<double, pair> pairTotals{};
+    for (std::size_t m = 0; m < pair; ++m)
+    {
+        pairTotals[m] = totals[m % nQuantities];
+    }
+    std::size_t i = 0;
+    for (; i + 1 < length; i += 2, values += pair)
+    {
+        const double first = omega[i] * inverseSum;
+        const double second = omega[i + 1] * inverseSum;
+        std::array<double, pair> weight{};
+        for (std::size_t m = 0; m < pair; ++m)
+        {
+            weight[m] = m < nQuantities ? first : second;
+        }
+        for (std::size_t m = 0; m < pair; ++m)
+        {
+            values[m] += weight[m] * pairTotals[m];
+        }
+    }
+    if (i < length)
+    {
+        const double weight = omega[i] * inverseSum;
+        for (std::size_t q = 0; q < nQuantities; ++q)
+        {
+            values[q] += weight * totals[q];
+        }
+    }
+}
+
+// Requests the cache lines of a row of `length` nodes' values (for writing), where they
+// exist; a hint only, without effect on the values.
+void prefetchRow(const double* values, std::size_t length)
+{
+    constexpr std::size_t valuesPerLine = 8; // 64-byte cache lines
+    for (std::size_t m = 0; m < length * nQuantities; m += valuesPerLine)
+    {
+        __builtin_prefetch(values + m, 1);
+    }
+}
+
 GridBlock checkedBlock(const GridSpec& spec, const GridBlock& block)
 {
     spec.validate();
@@ -388,7 +437,13 @@ void DensityGrid::weighPath(const Parcel& parcel, const ClippedPath& path, Weigh
         return; // depositedShare: neither these nodes nor the fallback's are asked for
     }
     IndexBox weightedBox = box;
-    const double omegaSum = weighLattice(pathWeight, path, box, weightedBox, stats);
+    const int points = separablePoints(pathWeight, box.nodeCount());
+    if (points > 0)
+    {
+        ++stats.parcelsSeparable;
+    }
+    const double omegaSum = points > 0 ? prepareSeparable(pathWeight, path, box, points, weightedBox)
+                                       : weighLattice(pathWeight, path, box, weightedBox);
     stats.nodesVisited += static_cast<std::int64_t>(box.nodeCount());
 
     // 5-6. Normalise (eq. 24), or fall back to cloud-in-cell weights.
@@ -396,6 +451,11 @@ void DensityGrid::weighPath(const Parcel& parcel, const ClippedPath& path, Weigh
     {
         ++stats.parcelsFallback;
         weighCloudInCell(path.start, path.displacement, sink);
+        return;
+    }
+    if (points > 0)
+    {
+        sendSeparable(1.0 / omegaSum, weightedBox, sink);
         return;
     }
     sendWeighted(1.0 / omegaSum, weightedBox, sink);
@@ -504,15 +564,8 @@ bool DensityGrid::withinGrid(const IndexBox& box) const
 }
 
 double DensityGrid::weighLattice(const PathWeight& pathWeight, const ClippedPath& path, const IndexBox& box,
-                                 IndexBox& weightedBox, StepStatistics& stats)
+                                 IndexBox& weightedBox)
 {
-    double threshold = 0.0;
-    const int points = separablePoints(pathWeight, box.nodeCount(), threshold);
-    if (points > 0)
-    {
-        ++stats.parcelsSeparable;
-        return weighSeparable(pathWeight, path, box, points, threshold, weightedBox);
-    }
     const double* omega = nullptr; // the whole box's omegas, where computed at once
     if (batched_ && !pathWeight.stationary() && box.nodeCount() >= PathWeightBatch::minimumBoxNodes)
     {
@@ -529,28 +582,27 @@ double DensityGrid::weighLattice(const PathWeight& pathWeight, const ClippedPath
     return omega ? listWeighted(omega, box) : weighNodesOneByOne(pathWeight, path.start, box);
 }
 
-int DensityGrid::separablePoints(const PathWeight& pathWeight, std::size_t boxNodes, double& threshold) const
+int DensityGrid::separablePoints(const PathWeight& pathWeight, std::size_t boxNodes) const
 {
     const double reach = std::sqrt(pathWeight.cutoffSquared()); // after the negligible-weight cut
     if (kernelSettings_.method != DepositMethod::Automatic || reach < separableFromSpacings * largestSpacing_)
     {
         return 0;
     }
-    // The parcel's largest omega is at least phi(c + L/2) (negligibleDistance). Within the
-    // cut's box, nodes below separableThreshold times that are left out: not the cut's
-    // negligibleWeight, because the bound counts the threshold once per node of the box
-    // ((2N + 1) t / P), which a 1e-8 cut would spend on a few nodes; so the separable weights
-    // stay within the bound of the untruncated integral, and within the bound plus the cut's
-    // own error (docs/model.md P10: 5e-8 of the largest node value at 1e-8) of the exact code.
+    // The parcel's largest omega is at least phi(c + L/2) (negligibleDistance). Every node of
+    // the cut's box is weighed (no threshold: t = 0), so the separable weights stay within
+    // the bound of the untruncated integral, and within the bound plus the cut's own error
+    // (docs/model.md P10: 5e-8 of the largest node value at 1e-8) of the exact code. (A
+    // threshold t would count once per node of the box, (2N + 1) t / P: the cut's
+    // negligibleWeight cannot be one.)
     const ParcelKernel& kernel = pathWeight.kernel();
     const double largestWeightBound = kernel.phi(halfCellDiagonal_ + 0.5 * pathWeight.length());
-    threshold = std::min(kernelSettings_.negligibleWeight, separableThreshold) * largestWeightBound;
     const double k = std::sqrt(kernel.gamma()) * pathWeight.length();
-    return SeparableWeight::chooseQuadrature(k, kernel.edgeValue(), threshold, largestWeightBound, boxNodes);
+    return SeparableWeight::chooseQuadrature(k, kernel.edgeValue(), 0.0, largestWeightBound, boxNodes);
 }
 
-double DensityGrid::weighSeparable(const PathWeight& pathWeight, const ClippedPath& path, const IndexBox& box,
-                                   int points, double threshold, IndexBox& weightedBox)
+double DensityGrid::prepareSeparable(const PathWeight& pathWeight, const ClippedPath& path,
+                                     const IndexBox& box, int points, IndexBox& weightedBox)
 {
     separable_.prepare(pathWeight, path.start, path.displacement, points,
                        {{latticeCoordinates(0), latticeCoordinates(1), latticeCoordinates(2)}}, box.lo,
@@ -562,25 +614,57 @@ double DensityGrid::weighSeparable(const PathWeight& pathWeight, const ClippedPa
         weightedBox = mirrorBox(box);
         separable_.fold(mirrorImage_, weightedBox.lo, weightedBox.hi);
     }
-    // The nodes above the threshold, in node order, listed without a branch.
-    scratch_.clear();
-    scratch_.resize(weightedBox.nodeCount());
-    std::size_t weighted = 0;
-    double omegaSum = 0.0;
-    forEachRow(weightedBox, spec_.nodes,
-               [&](const IndexRow& row)
-               {
-                   const double* omega = separable_.row(row.j - weightedBox.lo[1], row.k - weightedBox.lo[2]);
-                   for (std::size_t i = 0; i < row.length; ++i)
+    return separable_.sum();
+}
+
+void DensityGrid::sendSeparable(double inverseSum, const IndexBox& box, WeightSink& sink)
+{
+    if (!sink.accumulates())
+    {
+        // depositedShare: every node of the (folded) box, the deposit's weights to the bit.
+        std::int64_t weighted = 0;
+        forEachRow(box, spec_.nodes,
+                   [&](const IndexRow& row)
                    {
-                       const double w = omega[i] > threshold ? omega[i] : 0.0;
-                       scratch_[weighted] = {row.first + i, w};
-                       weighted += w > 0.0 ? 1 : 0;
-                       omegaSum += w;
-                   }
-               });
-    scratch_.resize(weighted);
-    return omegaSum;
+                       const double* omega = separable_.row(row.j - box.lo[1], row.k - box.lo[2]);
+                       for (std::size_t i = 0; i < row.length; ++i)
+                       {
+                           const double weight = omega[i] * inverseSum;
+                           if (weight > 0.0)
+                           {
+                               send(sink, row.first + i, weight);
+                               ++weighted;
+                           }
+                       }
+                   });
+        sink.statistics.nodesWeighted += weighted;
+        return;
+    }
+    // The stored part of the box only, row by row into contiguous accumulator values: no
+    // node list, no per-node index arithmetic (a block evaluates only its part of a copy).
+    const IndexBox stored = box.intersected(storage_);
+    const std::array<double, nQuantities>& parcelTotals = *sink.totals;
+    const auto first = static_cast<std::size_t>(stored.lo[0] - box.lo[0]);
+    // The values of the row rowsAhead further in j (the next layer's at a layer's end: a
+    // wasted request), requested while this one is added: rows of a few dozen nodes are too
+    // short for the hardware's prefetcher, on grids beyond the caches.
+    const std::size_t rowAhead
+        = rowsAhead * static_cast<std::size_t>(storage_.hi[0] - storage_.lo[0] + 1) * nQuantities;
+    forEachRowIn(stored, storage_,
+                 [&](const IndexRow& row)
+                 {
+                     const double* omega
+                         = separable_.row(row.j + storage_.lo[1] - box.lo[1],
+                                          row.k + storage_.lo[2] - box.lo[2], first, row.length);
+                     double* values = step_.data() + row.first * nQuantities;
+                     if ((row.first + row.length) * nQuantities + rowAhead <= step_.size())
+                     {
+                         prefetchRow(values + rowAhead, row.length);
+                     }
+                     addWeightedRow(omega, row.length, inverseSum, parcelTotals, values);
+                 });
+    sink.statistics.nodesWeighted += static_cast<std::int64_t>(stored.empty() ? 0 : stored.nodeCount());
+    touch(box); // the stored part of it
 }
 
 double DensityGrid::listWeighted(const double* boxOmega, const IndexBox& box)

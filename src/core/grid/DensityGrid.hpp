@@ -30,8 +30,9 @@
 //     Wide kernels (reach after the cut >= separableFromSpacings spacings;
 //     KernelSettings::method automatic) get separable weights instead (SeparableWeight:
 //     per-axis tables, Gauss-Legendre along the path, ghost nodes folded per axis) where
-//     its bound keeps them within 1e-7 of the parcel's largest weight; the same box, the
-//     nodes above negligibleWeight times the largest-weight bound (docs/model.md P16).
+//     its bound keeps them within 1e-7 of the parcel's largest weight; the same box, every
+//     node of it weighed, the normalising sum from the tables' per-axis sums, and the
+//     weights accumulated row by row over the stored part of the box (docs/model.md P16).
 //  5. Weights w_g = omega_g / sum omega (eq. 24, the sum over the lattice nodes), and each
 //     ghost node's weight added to its mirror image across the face (folded kernels,
 //     GridSpec::mirrorIndex): the mass given to the grid is f times the parcel's mass to
@@ -310,29 +311,31 @@ private:
     // (the midpoint rule's error along diagonal paths cancels between the cells around an
     // interior node, not at a face; docs/model.md sec. 4, edge nodes).
     static constexpr double faceRefinement = 8.0;
-    // Step 4: omega of every lattice node of the box: separably (wide kernels,
-    // separablePoints), batched (AVX2 + FMA, moving parcels) or node by node; the nodes with
-    // omega > 0 go to scratch_ in node order, ghost nodes folded onto their mirror images
-    // (weightedBox: the box of the listed nodes). Returns sum omega over the lattice nodes.
+    // Step 4, exact code: omega of every lattice node of the box, batched (AVX2 + FMA,
+    // moving parcels) or node by node; the nodes with omega > 0 go to scratch_ in node order,
+    // ghost nodes folded onto their mirror images (weightedBox: the box of the listed
+    // nodes). Returns sum omega over the lattice nodes.
     double weighLattice(const PathWeight& pathWeight, const ClippedPath& path, const IndexBox& box,
-                        IndexBox& weightedBox, StepStatistics& stats);
+                        IndexBox& weightedBox);
     // Gauss-Legendre points for the separable weights of this parcel (SeparableWeight), 0
     // for the exact code: KernelSettings::method, a kernel reaching (cut-off included) at
-    // least separableFromSpacings largest spacings, and SeparableWeight's bound; threshold:
-    // the omega below which nodes are left out (negligible weights).
-    int separablePoints(const PathWeight& pathWeight, std::size_t boxNodes, double& threshold) const;
+    // least separableFromSpacings largest spacings, and SeparableWeight's bound with every
+    // node of the box weighed (no threshold).
+    int separablePoints(const PathWeight& pathWeight, std::size_t boxNodes) const;
     // Step 4 for wide kernels: SeparableWeight's tables (folded where the box has ghost
-    // nodes); nodes with omega > threshold go to scratch_ in node order. Returns their sum.
-    double weighSeparable(const PathWeight& pathWeight, const ClippedPath& path, const IndexBox& box,
-                          int points, double threshold, IndexBox& weightedBox);
+    // nodes; weightedBox: the folded box). Returns sum omega over the lattice box, from the
+    // tables' per-axis sums (SeparableWeight::sum).
+    double prepareSeparable(const PathWeight& pathWeight, const ClippedPath& path, const IndexBox& box,
+                            int points, IndexBox& weightedBox);
     // Kernels reaching fewer spacings keep the exact code: at reach 1-2 spacings the
     // separable weights were 0.7-1.1x the exact code's speed (stationary; moving ones mostly
     // fail the bound: a path of h/2 is long against such a kernel), at 3.3 spacings 1.3-2.6x
     // (wideKernelBench).
     static constexpr double separableFromSpacings = 3.0;
-    // Separable weights below this times the parcel's largest-weight bound are left out
-    // (separablePoints: why not negligibleWeight).
-    static constexpr double separableThreshold = 1e-17;
+    // Steps 5 and 7 for wide kernels: the (folded) box's omegas row by row times inverseSum
+    // into the sink. Accumulating: only the rows of the box inside the storage box, straight
+    // into the accumulator's contiguous values (evaluation and accumulation fused).
+    void sendSeparable(double inverseSum, const IndexBox& box, WeightSink& sink);
     // The box's omegas (i fastest) -> scratch_ (omega > 0, node order; box inside the
     // grid). Returns their sum.
     double listWeighted(const double* boxOmega, const IndexBox& box);
@@ -363,6 +366,9 @@ private:
     void sendPathWeights(const IndexBox& box, WeightSink& sink);
     // One node's weight into the sink.
     void send(WeightSink& sink, std::size_t node, double weight);
+    // Rows ahead in sendSeparable whose accumulator values are prefetched (wideKernelBench,
+    // 0.5 mm grid: 1 row 1.1-1.6x, 2 rows 1.2-2.1x faster than none; 4 rows within 5 % of 2).
+    static constexpr std::size_t rowsAhead = 2;
     // Nodes ahead in sendWeighted's list whose accumulator values are prefetched.
     static constexpr std::size_t prefetchDistance = 32;
     // Step 7 for one node.

@@ -150,7 +150,16 @@ void SeparableWeight::fold(const std::array<std::vector<int>, 3>& image, const s
 
 const double* SeparableWeight::row(int j, int k)
 {
+    return row(j, k, 0, length_[0]);
+}
+
+const double* SeparableWeight::row(int j, int k, std::size_t first, std::size_t count)
+{
     const std::size_t n = length_[0], ny = length_[1], nz = length_[2];
+    if (first + count > n)
+    {
+        throw std::out_of_range("SeparableWeight::row: positions beyond the row");
+    }
     for (int q = 0; q < points_; ++q)
     {
         const auto u = static_cast<std::size_t>(q);
@@ -160,21 +169,46 @@ const double* SeparableWeight::row(int j, int k)
     // sum_q W_q X_q(i) Y_q(j) Z_q(k): one multiply-add per node and point.
     double* omega = rowOmega_.data();
     const double r0 = rowFactor_[0];
-    const double* f0 = factor_[0].data();
-    for (std::size_t i = 0; i < n; ++i)
+    const double* f0 = factor_[0].data() + first;
+    for (std::size_t i = 0; i < count; ++i)
     {
         omega[i] = r0 * f0[i];
     }
     for (int q = 1; q < points_; ++q)
     {
         const double r = rowFactor_[static_cast<std::size_t>(q)];
-        const double* f = factor_[0].data() + static_cast<std::size_t>(q) * n;
-        for (std::size_t i = 0; i < n; ++i)
+        const double* f = factor_[0].data() + static_cast<std::size_t>(q) * n + first;
+        for (std::size_t i = 0; i < count; ++i)
         {
             omega[i] += r * f[i];
         }
     }
     return omega;
+}
+
+double SeparableWeight::sum() const
+{
+    double total = 0.0;
+    for (int q = 0; q < points_; ++q)
+    {
+        const auto u = static_cast<std::size_t>(q);
+        double product = weight_[u];
+        for (std::size_t d = 0; d < 3; ++d)
+        {
+            // Neumaier's compensated sum of the axis's factors for point q (positive terms)
+            const double* f = factor_[d].data() + u * length_[d];
+            double axisSum = 0.0, compensation = 0.0;
+            for (std::size_t i = 0; i < length_[d]; ++i)
+            {
+                const double next = axisSum + f[i];
+                compensation += axisSum >= f[i] ? (axisSum - next) + f[i] : (f[i] - next) + axisSum;
+                axisSum = next;
+            }
+            product *= axisSum + compensation;
+        }
+        total += product;
+    }
+    return total;
 }
 
 } // namespace dropletFiber

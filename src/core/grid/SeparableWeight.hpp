@@ -9,7 +9,9 @@
 // rule in the path parameter tau (points c_q = start + tau_q displacement, weights W_q):
 //     omega_g ~ sum_q W_q X_q(i) Y_q(j) Z_q(k),   X_q(i) = exp(-gamma (x_i - c_q,x)^2), ...
 // Q tables per axis, per node Q multiply-adds (a stationary parcel: Q = 1 at the path's
-// midpoint, as PathWeight takes it). The constant exp(-gamma reach^2) of eq. 12 and the
+// midpoint, as PathWeight takes it); the normalising sum of eq. 24 from the per-axis sums
+// of the tables (sum()), so a caller can weigh any part of the box, row by row, without
+// visiting the rest. The constant exp(-gamma reach^2) of eq. 12 and the
 // truncation at the reach are left out (bounded below), so omega is a sum of products of
 // per-axis factors, and so is its folded form: ghost nodes beyond the faces fold onto their
 // mirror images axis by axis (GridSpec::mirrorIndex), i.e. the tables are folded, and the
@@ -82,6 +84,16 @@ public:
     // omega of the nodes of row (j, k) of the (folded) box, positions relative to its lower
     // corner, i fastest: the row's length values, valid until the next call.
     const double* row(int j, int k);
+    // The same for the `count` nodes from position `first` of the row on (a block's stored
+    // part of it): the same values, to the bit, as those positions of row(j, k).
+    const double* row(int j, int k, std::size_t first, std::size_t count);
+    // sum omega over the nodes of the (folded) box, eq. 24's normalising sum, itself
+    // separable: sum_q W_q (sum_i X_q(i)) (sum_j Y_q(j)) (sum_k Z_q(k)), O(Q (nx + ny + nz))
+    // instead of one addition per node. The per-axis sums are compensated (Neumaier), so the
+    // result is within (Q + 8) ulp, relative, of the exact sum of the table products; the
+    // rows' omegas are within (Q + 2) ulp of theirs (all terms positive): the weights
+    // omega / sum sum to 1 within (2 Q + 12) ulp (docs/model.md P16).
+    double sum() const;
 
 private:
     // The Gaussian factors of one axis, q-major: exp(-gamma (x_i - c_q,d)^2).

@@ -7,7 +7,11 @@
 //    the grid (storage and overflow): every quantity at every node within 1e-7 (single
 //    parcels: the proven bound) or 1e-6 (clouds: the requirement) of the largest
 //    node value; the separable path was taken; mass conserved to 1e-12;
-//  - narrow kernels, method Exact, and kernels whose bound cannot be met keep the exact code.
+//  - narrow kernels, method Exact, and kernels whose bound cannot be met keep the exact code;
+//  - the normalising sum from the per-axis sums (P17) against the node-by-node sum from the
+//    definition, before and after folding; blocks tiling the grid, each weighing only its
+//    stored rows, hold the whole grid's deposit to the bit; depositedShare (depletion) gives
+//    the weights deposit() put on the nodes.
 #include "grid/DensityGrid.hpp"
 #include "grid/GaussLegendre.hpp"
 #include "grid/SeparableWeight.hpp"
@@ -325,4 +329,201 @@ TEST(SeparableWeight, CappedTwoDimensionalSprayAgreesWithTheExactDeposit)
     std::printf("capped 2D spray: %lld of 400 separable, worst difference %.3g\n",
                 static_cast<long long>(fast.stepStatistics().parcelsSeparable),
                 worstRelativeDifference(fast, exact));
+}
+
+TEST(SeparableWeight, NormalisingSumFromTheAxisSumsIsTheSumOfTheNodeWeights)
+{
+    // A moving 3D parcel's tables on a lattice box (Q = 4), the box's omegas summed node by
+    // node here from their definition, sum_q W_q exp(-gamma |g - c_q|^2); SeparableWeight::sum
+    // (per-axis sums) must agree to round-off, before and after folding (folding moves
+    // weight between nodes, the sum stays), and a part of a row must be that part of the row.
+    const double h = 1e-3;
+    const int lowest = -30;
+    std::array<std::vector<double>, 3> coordinate;
+    for (auto& c : coordinate)
+    {
+        for (int i = lowest; i <= 60; ++i)
+        {
+            c.push_back(i * h);
+        }
+    }
+    const std::array<const double*, 3> lattice{
+        {coordinate[0].data() - lowest, coordinate[1].data() - lowest, coordinate[2].data() - lowest}};
+    const KernelSettings settings;
+    const ParcelKernel kernel(2e-5, 2000.0, settings, 3);
+    const Eigen::Vector3d start(3.3e-3, 1.2e-3, 0.4e-3), displacement(2e-3, -1e-3, 0.5e-3);
+    const PathWeight path(kernel, start, displacement);
+    const int points = 4;
+    const std::array<int, 3> lo{{-12, -14, -15}}, hi{{18, 16, 15}};
+    SeparableWeight separable;
+    separable.prepare(path, start, displacement, points, lattice, lo, hi);
+
+    std::array<double, points> node{}, weight{};
+    gaussLegendreRule(points, node.data(), weight.data());
+    double direct = 0.0;
+    double worstRow = 0.0;
+    for (int k = lo[2]; k <= hi[2]; ++k)
+    {
+        for (int j = lo[1]; j <= hi[1]; ++j)
+        {
+            const double* row = separable.row(j - lo[1], k - lo[2]);
+            for (int i = lo[0]; i <= hi[0]; ++i)
+            {
+                double omega = 0.0;
+                for (int q = 0; q < points; ++q)
+                {
+                    const double tau = 0.5 * (1.0 + node[static_cast<std::size_t>(q)]);
+                    const Eigen::Vector3d g(i * h, j * h, k * h);
+                    omega += 0.5 * weight[static_cast<std::size_t>(q)]
+                        * std::exp(-kernel.gamma() * (g - start - tau * displacement).squaredNorm());
+                }
+                direct += omega;
+                worstRow = std::max(worstRow, std::abs(row[i - lo[0]] - omega));
+            }
+        }
+    }
+    EXPECT_NEAR(separable.sum(), direct, 1e-14 * direct);
+    EXPECT_LE(worstRow, 1e-14);
+    // Part of a row: the same values to the bit.
+    const std::vector<double> whole(separable.row(20, 9), separable.row(20, 9) + (hi[0] - lo[0] + 1));
+    const double* part = separable.row(20, 9, 7, 11);
+    for (std::size_t i = 0; i < 11; ++i)
+    {
+        EXPECT_EQ(part[i], whole[7 + i]);
+    }
+    EXPECT_THROW(separable.row(20, 9, 25, 11), std::out_of_range);
+
+    // Folded onto a grid of nodes 0..9 per axis (mirror images at 0 and 9): the same sum,
+    // now that of the folded rows.
+    const GridSpec spec = []
+    {
+        GridSpec s;
+        s.upper = Eigen::Vector3d(9e-3, 9e-3, 9e-3);
+        s.nodes = {{10, 10, 10}};
+        return s;
+    }();
+    std::array<std::vector<int>, 3> image;
+    for (int d = 0; d < 3; ++d)
+    {
+        for (int i = lo[static_cast<std::size_t>(d)]; i <= hi[static_cast<std::size_t>(d)]; ++i)
+        {
+            image[static_cast<std::size_t>(d)].push_back(spec.mirrorIndex(d, i));
+        }
+    }
+    separable.fold(image, {{0, 0, 0}}, {{9, 9, 9}});
+    double folded = 0.0;
+    for (int k = 0; k < 10; ++k)
+    {
+        for (int j = 0; j < 10; ++j)
+        {
+            const double* row = separable.row(j, k);
+            for (int i = 0; i < 10; ++i)
+            {
+                folded += row[i];
+            }
+        }
+    }
+    EXPECT_NEAR(separable.sum(), direct, 1e-14 * direct);
+    EXPECT_NEAR(folded, direct, 1e-14 * direct);
+}
+
+TEST(SeparableWeight, BlocksTilingTheGridStoreTheWholeGridsDepositToTheBit)
+{
+    // Four blocks tiling the 3D grid, each depositing every parcel on its stored nodes (the
+    // first by deposit, the others as copies): each stored node holds the whole grid's
+    // value to the bit (the same weights, added in the same order), and the blocks' masses
+    // add up to the whole grid's.
+    const GridSpec spec = grid3D();
+    const int splitI = 8, splitK = 4;
+    std::vector<GridBlock> blocks;
+    for (const auto& [iLo, iHi] : {std::pair{0, splitI}, std::pair{splitI + 1, spec.nodes[0] - 1}})
+    {
+        for (const auto& [kLo, kHi] : {std::pair{0, splitK}, std::pair{splitK + 1, spec.nodes[2] - 1}})
+        {
+            GridBlock block;
+            block.owned.lo = {{iLo, 0, kLo}};
+            block.owned.hi = {{iHi, spec.nodes[1] - 1, kHi}};
+            block.storage = block.owned;
+            blocks.push_back(block);
+        }
+    }
+    DensityGrid whole(spec, settingsWith(DepositMethod::Automatic, KernelSettings{}.negligibleWeight));
+    std::vector<DensityGrid> parts;
+    for (const GridBlock& block : blocks)
+    {
+        parts.emplace_back(spec, settingsWith(DepositMethod::Automatic, KernelSettings{}.negligibleWeight), 1,
+                           block);
+    }
+    std::mt19937_64 random(23);
+    for (int p = 0; p < 30; ++p)
+    {
+        const Parcel parcel = randomWideParcel(random, spec, p % 3 == 0 ? 0.0 : 20.0);
+        whole.deposit(parcel, dt);
+        for (std::size_t b = 0; b < parts.size(); ++b)
+        {
+            b == 0 ? parts[b].deposit(parcel, dt) : parts[b].depositCopy(parcel, dt);
+        }
+    }
+    EXPECT_GE(whole.stepStatistics().parcelsSeparable, 20);
+    double partsMass = 0.0;
+    for (std::size_t b = 0; b < parts.size(); ++b)
+    {
+        const IndexBox& storage = blocks[b].storage;
+        EXPECT_EQ(parts[b].stepBox(), whole.stepBox().intersected(storage));
+        for (int k = storage.lo[2]; k <= storage.hi[2]; ++k)
+        {
+            for (int j = storage.lo[1]; j <= storage.hi[1]; ++j)
+            {
+                for (int i = storage.lo[0]; i <= storage.hi[0]; ++i)
+                {
+                    for (int q = 0; q < nQuantities; ++q)
+                    {
+                        ASSERT_EQ(parts[b].stepValues()[flatIndexInBox(storage, i, j, k) * nQuantities + q],
+                                  whole.stepValues()[spec.flatIndex(i, j, k) * nQuantities + q])
+                            << "block " << b << " node " << i << " " << j << " " << k << " q " << q;
+                    }
+                }
+            }
+        }
+        partsMass += depositedMass(parts[b]);
+    }
+    const double massOnGrid = whole.stepStatistics().massDeposited;
+    EXPECT_NEAR(partsMass, massOnGrid, 1e-12 * massOnGrid);
+}
+
+TEST(SeparableWeight, DepositedShareGivesTheDepositsWeights)
+{
+    // depositedShare (depletion) re-weighs a wide parcel without accumulating: per parcel it
+    // must give sum over the nodes of (the mass deposit() put there / the parcel's mass)
+    // times a random fraction per node, and 1 with the fraction 1 (parcels inside the box).
+    const GridSpec spec = grid3D();
+    DensityGrid grid(spec, settingsWith(DepositMethod::Automatic, KernelSettings{}.negligibleWeight));
+    std::mt19937_64 random(29);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    std::vector<double> fraction(spec.nodeCount());
+    for (double& f : fraction)
+    {
+        f = unit(random);
+    }
+    const DensityGrid::NodeFraction fractionAt = [&](std::size_t node) { return fraction[node]; };
+    const DensityGrid::NodeFraction one = [](std::size_t) { return 1.0; };
+    const DensityGrid::NodeBoxTest askAll = [](const IndexBox&) { return true; };
+    std::int64_t separable = 0;
+    for (int p = 0; p < 20; ++p)
+    {
+        const Parcel parcel = randomWideParcel(random, spec, p % 2 == 0 ? 0.0 : 20.0);
+        grid.deposit(parcel, dt);
+        grid.commitStep();
+        separable += grid.lastStepStatistics().parcelsSeparable;
+        double expected = 0.0;
+        for (std::size_t node = 0; node < spec.nodeCount(); ++node)
+        {
+            expected += grid.lastStepValue(node, quantityMass) * fraction[node];
+        }
+        const double mass = grid.lastStepStatistics().massDeposited;
+        EXPECT_NEAR(grid.depositedShare(parcel, dt, askAll, fractionAt), expected / parcelMass(parcel),
+                    1e-13);
+        EXPECT_NEAR(grid.depositedShare(parcel, dt, askAll, one), mass / parcelMass(parcel), 1e-13);
+    }
+    EXPECT_GE(separable, 15);
 }
