@@ -62,6 +62,51 @@ bool appendIfCloudOf
     return true;
 }
 
+
+//- Depletion of c when it is a Cloud<ParcelType>; false otherwise
+template<class ParcelType>
+bool depleteIfCloudOf
+(
+    Foam::cloud& c,
+    const Foam::scalar* capturedFraction,
+    const Foam::label count
+)
+{
+    auto* typed = dynamic_cast<Foam::Cloud<ParcelType>*>(&c);
+    if (!typed)
+    {
+        return false;
+    }
+    if (typed->size() != count)
+    {
+        FatalErrorInFunction
+            << "Cloud '" << c.name() << "' holds " << typed->size()
+            << " parcels, but " << count << " were gathered from it this"
+            << " step: the captured droplets cannot be matched to its"
+            << " parcels." << Foam::exit(Foam::FatalError);
+    }
+    Foam::DynamicList<ParcelType*> emptied;
+    Foam::label i = 0;
+    for (ParcelType& p : *typed)
+    {
+        const Foam::scalar f = capturedFraction[i++];
+        Foam::KinematicParcel<Foam::particle>& k = p;
+        if (f >= 1)
+        {
+            emptied.append(&p); // every droplet captured
+        }
+        else if (f > 0)
+        {
+            k.nParticle() *= 1 - f;
+        }
+    }
+    for (ParcelType* p : emptied)
+    {
+        typed->deleteParticle(*p);
+    }
+    return true;
+}
+
 } // End anonymous namespace
 
 
@@ -73,6 +118,20 @@ bool Foam::dropletFiber::cloudParcels::appendKinematic(const cloud& c)
         appendIfCloudOf<basicKinematicCollidingParcel>(c, *this)
      || appendIfCloudOf<basicKinematicParcel>(c, *this)
      || appendIfCloudOf<basicKinematicMPPICParcel>(c, *this);
+}
+
+
+bool Foam::dropletFiber::cloudParcels::depleteKinematic
+(
+    cloud& c,
+    const scalar* capturedFraction,
+    const label count
+)
+{
+    return
+        depleteIfCloudOf<basicKinematicCollidingParcel>(c, capturedFraction, count)
+     || depleteIfCloudOf<basicKinematicParcel>(c, capturedFraction, count)
+     || depleteIfCloudOf<basicKinematicMPPICParcel>(c, capturedFraction, count);
 }
 
 // ************************************************************************* //
