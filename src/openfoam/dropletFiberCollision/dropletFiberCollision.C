@@ -834,6 +834,8 @@ Foam::functionObjects::dropletFiberCollision::dropletFiberCollision
     lastTimeIndex_(-1),
     parcels_(),
     depletion_(true),
+    depletionSteps_(0),
+    limitedSteps_(0),
     loggedLimit_(false),
     warnedSamplesOutside_(false),
     nextFiberId_(0),
@@ -1013,7 +1015,15 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
     step.maxSegmentLengthError = report.maxSegmentLengthError;
     step.subSteps = report.subSteps;
     totals_.captured += step.capturedStep;
-    depletionStep_.captured = step.capturedStep;
+    if (depletion_)
+    {
+        depletionStep_.captured = step.capturedStep;
+        depletionRun_.demanded += depletionStep_.demanded;
+        depletionRun_.captured += depletionStep_.captured;
+        depletionRun_.removed += depletionStep_.removed;
+        ++depletionSteps_;
+        limitedSteps_ += depletionStep_.nodesLimited > 0 ? 1 : 0;
+    }
 
     // 6. Fibers that left; the others to the processor now holding their
     //    first point

@@ -202,7 +202,11 @@ void Foam::functionObjects::dropletFiberCollision::reportBinderBalance() const
         << "), eq. 9 before the limit " << d.demanded << " kg" << nl
         << "    airborne parcel mass after the removal " << d.airborne
         << " kg; captured in total " << totals_.captured << " kg" << nl
-        << endl;
+        << "    since this run started: eq. 9 asked " << depletionRun_.demanded
+        << " kg, the fibers captured " << depletionRun_.captured
+        << " kg and the parcels lost " << depletionRun_.removed
+        << " kg; the limit bound in " << limitedSteps_ << " of "
+        << depletionSteps_ << " steps" << nl << endl;
 }
 
 // ************************************************************************* //
