@@ -40,8 +40,10 @@ text = open(log).read()
 report = text[text.rfind("Cloud: kinematicCloud\n"):]
 sprayed = sum(float(m) for m in re.findall(r"mass introduced\s*=\s*(\S+)", report))
 airborne = float(re.search(r"Current mass in system\s*=\s*(\S+)", report).group(1))
-# escape and stick at every patch (and the system): parcels that left the domain
-left = sum(float(m) for m in re.findall(r"- (?:escape|stick)\s*=\s*\S+,\s*(\S+)", report))
+# escape and stick at every patch (the "system" lines are their sums): parcels that
+# left the domain
+left = sum(float(m) for block in re.findall(r"Parcel fate: patch[^\n]*\n((?:\s+- [^\n]*\n)+)", report)
+           for m in re.findall(r"- (?:escape|stick)\s*=\s*\S+,\s*(\S+)", block))
 depletion = "removedStep" in last
 balances = re.findall(r"\(balance (\S+) kg\)", text)[-2:]
 
