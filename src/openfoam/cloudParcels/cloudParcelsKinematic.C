@@ -50,8 +50,12 @@ bool appendIfCloudOf
     parcels.d.reserve(n);
     parcels.nParticle.reserve(n);
     parcels.rho.reserve(n);
+    parcels.origProc.reserve(n);
+    parcels.origId.reserve(n);
     for (const ParcelType& p : *typed)
     {
+        parcels.origProc.append(p.origProc());
+        parcels.origId.append(p.origId());
         const Foam::KinematicParcel<Foam::particle>& k = p;
         parcels.position.append(k.position());
         parcels.U.append(k.U());
@@ -107,6 +111,54 @@ bool depleteIfCloudOf
     return true;
 }
 
+
+//- applyRemoval for c when it is a Cloud<ParcelType>; -1 otherwise
+template<class ParcelType>
+Foam::label removeIfCloudOf
+(
+    Foam::cloud& c,
+    const std::unordered_map<std::int64_t, Foam::scalar>& removal
+)
+{
+    auto* typed = dynamic_cast<Foam::Cloud<ParcelType>*>(&c);
+    if (!typed)
+    {
+        return -1;
+    }
+    Foam::DynamicList<ParcelType*> emptied;
+    Foam::label found = 0;
+    for (ParcelType& p : *typed)
+    {
+        const auto entry =
+            removal.find
+            (
+                Foam::dropletFiber::cloudParcels::removalKey
+                (
+                    p.origProc(), p.origId()
+                )
+            );
+        if (entry == removal.end())
+        {
+            continue;
+        }
+        ++found;
+        Foam::KinematicParcel<Foam::particle>& k = p;
+        if (entry->second >= 1)
+        {
+            emptied.append(&p);
+        }
+        else
+        {
+            k.nParticle() *= 1 - entry->second;
+        }
+    }
+    for (ParcelType* p : emptied)
+    {
+        typed->deleteParticle(*p);
+    }
+    return found;
+}
+
 } // End anonymous namespace
 
 
@@ -132,6 +184,24 @@ bool Foam::dropletFiber::cloudParcels::depleteKinematic
         depleteIfCloudOf<basicKinematicCollidingParcel>(c, capturedFraction, count)
      || depleteIfCloudOf<basicKinematicParcel>(c, capturedFraction, count)
      || depleteIfCloudOf<basicKinematicMPPICParcel>(c, capturedFraction, count);
+}
+
+Foam::label Foam::dropletFiber::cloudParcels::applyRemoval
+(
+    cloud& c,
+    const std::unordered_map<std::int64_t, scalar>& removal
+)
+{
+    label found = removeIfCloudOf<basicKinematicCollidingParcel>(c, removal);
+    if (found < 0)
+    {
+        found = removeIfCloudOf<basicKinematicParcel>(c, removal);
+    }
+    if (found < 0)
+    {
+        found = removeIfCloudOf<basicKinematicMPPICParcel>(c, removal);
+    }
+    return max(found, label(0));
 }
 
 // ************************************************************************* //

@@ -836,6 +836,7 @@ Foam::functionObjects::dropletFiberCollision::dropletFiberCollision
     depletion_(true),
     depletionSteps_(0),
     limitedSteps_(0),
+    removalRestored_(false),
     loggedLimit_(false),
     warnedSamplesOutside_(false),
     nextFiberId_(0),
@@ -968,8 +969,17 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
     stepSummary step;
     parallelStatistics_.startStep();
 
-    // 1. The parcels of this step, on this processor
+    // 1. The parcels of this step, on this processor (after a restart, with
+    //    the removal of the step restarted from)
     clockValue depositionStart(true);
+    if (removalRestored_)
+    {
+        coreCall
+        (
+            "removing the droplets captured before the restart",
+            [this]() { applyRestoredRemoval(); }
+        );
+    }
     gatherParcels();
     step.parcels = returnReduce(parcels_.size(), sumOp<label>());
     step.droplets = returnReduce(parcels_.nDroplets(), sumOp<scalar>());

@@ -27,6 +27,7 @@ Description
 #include "Time.H"
 #include "fvMesh.H"
 #include "PstreamReduceOps.H"
+#include "dictionaryChecks.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -96,6 +97,7 @@ void Foam::functionObjects::dropletFiberCollision::depleteParcels
             *grid_, captureLimit_, stepParcels_, dt, parallelStatistics_
         );
     writeBackToClouds(fraction);
+    keepRemoval(fraction);
     // What left the parcels written back, and what flies on
     List<scalar> sums(5, Zero);
     for (std::size_t p = 0; p < stepParcels_.size(); ++p)
@@ -207,6 +209,108 @@ void Foam::functionObjects::dropletFiberCollision::reportBinderBalance() const
         << " kg and the parcels lost " << depletionRun_.removed
         << " kg; the limit bound in " << limitedSteps_ << " of "
         << depletionSteps_ << " steps" << nl << endl;
+}
+
+void Foam::functionObjects::dropletFiberCollision::keepRemoval
+(
+    const std::vector<double>& fraction
+)
+{
+    removalProc_.clear();
+    removalId_.clear();
+    removalFraction_.clear();
+    for (std::size_t p = 0; p < fraction.size(); ++p)
+    {
+        if (fraction[p] > 0 && parcels_.origId[p] >= 0)
+        {
+            removalProc_.append(parcels_.origProc[p]);
+            removalId_.append(parcels_.origId[p]);
+            removalFraction_.append(fraction[p]);
+        }
+    }
+}
+
+
+void Foam::functionObjects::dropletFiberCollision::restoreRemoval
+(
+    const dictionary& removal
+)
+{
+    removalProc_ = removal.get<labelList>("origProc");
+    removalId_ = removal.get<labelList>("origId");
+    removalFraction_ = removal.get<scalarList>("fraction");
+    if
+    (
+        removalId_.size() != removalProc_.size()
+     || removalFraction_.size() != removalProc_.size()
+    )
+    {
+        FatalIOErrorInFunction(removal)
+            << "Entries 'origProc', 'origId' and 'fraction' of the restart"
+            << " state's depletionRemoval have " << removalProc_.size()
+            << ", " << removalId_.size() << " and "
+            << removalFraction_.size() << " values: they must have as many."
+            << exit(FatalIOError);
+    }
+    forAll(removalFraction_, i)
+    {
+        const scalar f = removalFraction_[i];
+        if (!(f > 0 && f <= 1))
+        {
+            FatalIOErrorInFunction(removal)
+                << "Entry 'fraction' of the restart state's depletionRemoval"
+                << " is " << f << " at " << i << ": allowed are values in"
+                << " (0, 1]." << exit(FatalIOError);
+        }
+    }
+    removalRestored_ = true;
+}
+
+
+void Foam::functionObjects::dropletFiberCollision::applyRestoredRemoval()
+{
+    removalRestored_ = false;
+    // Every processor's list: a parcel may have passed to another processor
+    // in the cloud's step since the state was written
+    List<labelList> procs(Pstream::nProcs());
+    List<labelList> ids(Pstream::nProcs());
+    List<scalarList> fractions(Pstream::nProcs());
+    procs[Pstream::myProcNo()] = removalProc_;
+    ids[Pstream::myProcNo()] = removalId_;
+    fractions[Pstream::myProcNo()] = removalFraction_;
+    Pstream::gatherList(procs);
+    Pstream::scatterList(procs);
+    Pstream::gatherList(ids);
+    Pstream::scatterList(ids);
+    Pstream::gatherList(fractions);
+    Pstream::scatterList(fractions);
+    std::unordered_map<std::int64_t, scalar> removal;
+    forAll(procs, proci)
+    {
+        forAll(procs[proci], i)
+        {
+            removal[dropletFiber::cloudParcels::removalKey
+            (
+                procs[proci][i], ids[proci][i]
+            )] = fractions[proci][i];
+        }
+    }
+    label found = 0;
+    if (depletion_ && !removal.empty())
+    {
+        for (const word& cloudName : selectClouds())
+        {
+            found += dropletFiber::cloudParcels::applyRemoval
+            (
+                const_cast<cloud&>(mesh_.lookupObject<cloud>(cloudName)),
+                removal
+            );
+        }
+    }
+    Info<< type() << " " << name() << ": the droplets captured in the step"
+        << " restarted from removed from "
+        << returnReduce(found, sumOp<label>()) << " of "
+        << label(removal.size()) << " parcels" << nl;
 }
 
 // ************************************************************************* //
