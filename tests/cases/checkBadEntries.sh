@@ -57,6 +57,7 @@ expectError collision "{ radiusAverage median; }" "Entry 'radiusAverage' is 'med
 expectError fibers/maxSubSteps 0 "Entry 'maxSubSteps' is 0"
 expectError fibers/drag stokes "Entry 'drag' is 'stokes': allowed are"
 expectError collision "{ sampling everywhere; }" "Entry 'sampling' is 'everywhere'"
+expectError collision "{ depletion maybe; }" "Entry 'depletion' is 'maybe': allowed are true or false"
 expectError air "{ rho -1.2; }" "Entry 'rho' is -1.2"
 expectError air "{ mu noSuchField; }" "Entry 'mu' names field 'noSuchField'"
 expectError fibers/fixed/across/points "((0.05 0.01 0.005))" "Entry 'points' has 1 points"
@@ -154,6 +155,30 @@ else
     failed=$((failed+1))
     echo "FAILED: collision = { samplng integrated; } edited during the run (exit $status): not stopped at the edit; log:"
     grep -A4 "FOAM FATAL" log.runTimeTypo || tail -5 log.runTimeTypo
+fi
+
+# collision.depletion is read at the start only (the table's columns follow it):
+# the same edit at time 0.01, to 'depletion false', stops the run naming it
+cp system/controlDict.start system/controlDict
+foamDictionary system/controlDict -entry "$fo/collision" -set "{ depletion false; }" > /dev/null
+cp system/controlDict system/controlDict.typo
+cp system/controlDict.start system/controlDict
+touch -d "1 hour ago" system/controlDict
+freshStart
+pimpleFoam > log.runTimeDepletion 2>&1
+status=$?
+if [ $status -ne 0 ] \
+    && grep -q "^Time = 0.01$" log.runTimeDepletion \
+    && ! grep -q "^Time = 0.02$" log.runTimeDepletion \
+    && grep -q "FOAM FATAL IO ERROR" log.runTimeDepletion \
+    && grep -q "Entry 'collision.depletion' was edited during the run (true -> false)" log.runTimeDepletion
+then
+    passed=$((passed+1))
+    echo "ok: collision = { depletion false; } edited during the run -> stopped"
+else
+    failed=$((failed+1))
+    echo "FAILED: collision = { depletion false; } edited during the run (exit $status): not stopped at the edit; log:"
+    grep -A4 "FOAM FATAL" log.runTimeDepletion || tail -5 log.runTimeDepletion
 fi
 
 cp system/controlDict.good system/controlDict

@@ -41,6 +41,40 @@ SampleCapture attributeSample(const DensityGrid& grid, const CornerWeights& corn
     return capture;
 }
 
+SampleCapture attributeOwnedCorners(const DensityGrid& grid, const CornerWeights& corners, double massShare,
+                                    const Eigen::Vector3d& velocity)
+{
+    SampleCapture capture;
+    capture.velocity = velocity;
+    if (!(massShare > 0.0))
+    {
+        return capture;
+    }
+    // The corners owned elsewhere read as empty: their parts are their owners' business.
+    std::array<double, 8 * nQuantities> totals{};
+    for (int c = 0; c < corners.count; ++c)
+    {
+        const std::size_t node = corners.node[static_cast<std::size_t>(c)];
+        if (grid.owns(node))
+        {
+            grid.windowTotal(node, totals.data() + c * nQuantities);
+        }
+    }
+    std::array<double, 8> parts{};
+    grid.densityParts(corners, totals.data(), parts.data());
+    for (int c = 0; c < corners.count; ++c)
+    {
+        const auto u = static_cast<std::size_t>(c);
+        if (parts[u] > 0.0)
+        {
+            const auto n = static_cast<std::size_t>(capture.count++);
+            capture.node[n] = corners.node[u];
+            capture.mass[n] = massShare * parts[u];
+        }
+    }
+    return capture;
+}
+
 SegmentCapture segmentCapture(const DensityGrid& grid, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                               double fiberRadius, const Eigen::Vector3d& segmentVelocity, double dt,
                               const CollisionOptions& options)

@@ -88,6 +88,15 @@ struct CaptureLimitReport
 SampleCapture attributeSample(const DensityGrid& grid, const CornerWeights& corners,
                               const double* cornerTotals, double sampleMass, const Eigen::Vector3d& velocity);
 
+// P12 over the corners this grid owns (a block's part of attributeSample): massShare is
+// the sample's mass over the whole grid's interpolated mass sum, m_s / Sigma (Sigma: the
+// sums of DensityGrid::addOwnedCornerSums over the blocks owning the corners, entry
+// quantityMass), so corner c gets massShare x its part of Sigma (densityParts). Summed over
+// the blocks owning a sample's corners, these are attributeSample's demands (to round-off:
+// (m_s / Sigma) part instead of m_s (part / Sigma)); the whole grid gives all of them.
+SampleCapture attributeOwnedCorners(const DensityGrid& grid, const CornerWeights& corners, double massShare,
+                                    const Eigen::Vector3d& velocity);
+
 // Eq. 9 for the segment from a to b with every sample attributed (P12), on a grid that
 // owns every corner the samples read (serial runs; a block reads remote corners itself
 // and calls attributeSample). collision is collisionMass(grid, ...)'s result to the bit.

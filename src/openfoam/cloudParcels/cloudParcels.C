@@ -52,6 +52,8 @@ void Foam::dropletFiber::cloudParcels::clear()
     d.clear();
     nParticle.clear();
     rho.clear();
+    origProc.clear();
+    origId.clear();
 }
 
 
@@ -113,6 +115,9 @@ void Foam::dropletFiber::cloudParcels::append
     d.append(cloudD);
     nParticle.append(cloudN);
     rho.append(cloudRho);
+    // Not written back (depleteKinematic): no identity needed
+    origProc.append(labelList(cloudRho.size(), -1));
+    origId.append(labelList(cloudRho.size(), -1));
 }
 
 

@@ -50,8 +50,12 @@ bool appendIfCloudOf
     parcels.d.reserve(n);
     parcels.nParticle.reserve(n);
     parcels.rho.reserve(n);
+    parcels.origProc.reserve(n);
+    parcels.origId.reserve(n);
     for (const ParcelType& p : *typed)
     {
+        parcels.origProc.append(p.origProc());
+        parcels.origId.append(p.origId());
         const Foam::KinematicParcel<Foam::particle>& k = p;
         parcels.position.append(k.position());
         parcels.U.append(k.U());
@@ -60,6 +64,99 @@ bool appendIfCloudOf
         parcels.rho.append(k.rho());
     }
     return true;
+}
+
+
+//- Depletion of c when it is a Cloud<ParcelType>; false otherwise
+template<class ParcelType>
+bool depleteIfCloudOf
+(
+    Foam::cloud& c,
+    const Foam::scalar* capturedFraction,
+    const Foam::label count
+)
+{
+    auto* typed = dynamic_cast<Foam::Cloud<ParcelType>*>(&c);
+    if (!typed)
+    {
+        return false;
+    }
+    if (typed->size() != count)
+    {
+        FatalErrorInFunction
+            << "Cloud '" << c.name() << "' holds " << typed->size()
+            << " parcels, but " << count << " were gathered from it this"
+            << " step: the captured droplets cannot be matched to its"
+            << " parcels." << Foam::exit(Foam::FatalError);
+    }
+    Foam::DynamicList<ParcelType*> emptied;
+    Foam::label i = 0;
+    for (ParcelType& p : *typed)
+    {
+        const Foam::scalar f = capturedFraction[i++];
+        Foam::KinematicParcel<Foam::particle>& k = p;
+        if (f >= 1)
+        {
+            emptied.append(&p); // every droplet captured
+        }
+        else if (f > 0)
+        {
+            k.nParticle() *= 1 - f;
+        }
+    }
+    for (ParcelType* p : emptied)
+    {
+        typed->deleteParticle(*p);
+    }
+    return true;
+}
+
+
+//- applyRemoval for c when it is a Cloud<ParcelType>; -1 otherwise
+template<class ParcelType>
+Foam::label removeIfCloudOf
+(
+    Foam::cloud& c,
+    const std::unordered_map<std::int64_t, Foam::scalar>& removal
+)
+{
+    auto* typed = dynamic_cast<Foam::Cloud<ParcelType>*>(&c);
+    if (!typed)
+    {
+        return -1;
+    }
+    Foam::DynamicList<ParcelType*> emptied;
+    Foam::label found = 0;
+    for (ParcelType& p : *typed)
+    {
+        const auto entry =
+            removal.find
+            (
+                Foam::dropletFiber::cloudParcels::removalKey
+                (
+                    p.origProc(), p.origId()
+                )
+            );
+        if (entry == removal.end())
+        {
+            continue;
+        }
+        ++found;
+        Foam::KinematicParcel<Foam::particle>& k = p;
+        if (entry->second >= 1)
+        {
+            emptied.append(&p);
+        }
+        else
+        {
+            k.nParticle() *= 1 - entry->second;
+        }
+    }
+    for (ParcelType* p : emptied)
+    {
+        typed->deleteParticle(*p);
+    }
+    return found;
 }
 
 } // End anonymous namespace
@@ -73,6 +170,38 @@ bool Foam::dropletFiber::cloudParcels::appendKinematic(const cloud& c)
         appendIfCloudOf<basicKinematicCollidingParcel>(c, *this)
      || appendIfCloudOf<basicKinematicParcel>(c, *this)
      || appendIfCloudOf<basicKinematicMPPICParcel>(c, *this);
+}
+
+
+bool Foam::dropletFiber::cloudParcels::depleteKinematic
+(
+    cloud& c,
+    const scalar* capturedFraction,
+    const label count
+)
+{
+    return
+        depleteIfCloudOf<basicKinematicCollidingParcel>(c, capturedFraction, count)
+     || depleteIfCloudOf<basicKinematicParcel>(c, capturedFraction, count)
+     || depleteIfCloudOf<basicKinematicMPPICParcel>(c, capturedFraction, count);
+}
+
+Foam::label Foam::dropletFiber::cloudParcels::applyRemoval
+(
+    cloud& c,
+    const std::unordered_map<std::int64_t, scalar>& removal
+)
+{
+    label found = removeIfCloudOf<basicKinematicCollidingParcel>(c, removal);
+    if (found < 0)
+    {
+        found = removeIfCloudOf<basicKinematicParcel>(c, removal);
+    }
+    if (found < 0)
+    {
+        found = removeIfCloudOf<basicKinematicMPPICParcel>(c, removal);
+    }
+    return max(found, label(0));
 }
 
 // ************************************************************************* //

@@ -243,7 +243,13 @@ void Foam::functionObjects::dropletFiberCollision::reportSettings() const
            ) << nl
         << "    collision: samples per segment " << collision_.samples
         << " (1: midpoint, 0: one per grid spacing), radiusAverage "
-        << dropletFiber::radiusAverageName(collision_.radiusAverage) << nl;
+        << dropletFiber::radiusAverageName(collision_.radiusAverage)
+        << ", depletion " << Switch(depletion_).c_str()
+        << (
+               depletion_
+             ? " (the captured droplets leave their parcels)"
+             : " (the spray keeps every droplet: the paper's behaviour)"
+           ) << nl;
     // Each rank asks its own CPU: on a cluster of mixed CPUs the ranks would
     // weight nodes with the two kernels, which agree to ~1e-14, not to the bit
     const bool batchedHere = grid_->batchedKernel();
@@ -434,8 +440,12 @@ Foam::functionObjects::dropletFiberCollision::selectClouds() const
 void Foam::functionObjects::dropletFiberCollision::gatherParcels()
 {
     parcels_.clear();
+    stepClouds_.clear();
+    cloudStarts_.clear();
     for (const word& cloudName : selectClouds())
     {
+        stepClouds_.append(cloudName);
+        cloudStarts_.append(parcels_.size());
         parcels_.append
         (
             mesh_.lookupObject<cloud>(cloudName), dict_, gatherWriteObjects_
@@ -622,8 +632,15 @@ Foam::functionObjects::dropletFiberCollision::collide(const scalar dt)
     std::vector<int> samplesPerSegment;
     const std::vector<Eigen::Vector3d> points =
         collisionSamplePoints(samplesPerSegment);
+    // Depletion: each sample's interpolated mass sum and mass too
+    std::vector<double> massSums;
+    std::vector<double> sampleMasses(depletion_ ? points.size() : 0);
     const std::vector<::dropletFiber::DropletFieldValue> fields =
-        blocks_->sample(*grid_, points, parallelStatistics_);
+        blocks_->sample
+        (
+            *grid_, points, parallelStatistics_,
+            depletion_ ? &massSums : nullptr
+        );
 
     const std::vector<::dropletFiber::Fiber>& fibers = held_.fibers;
     ::dropletFiber::CaptureSources capture(fibers.size());
@@ -650,7 +667,8 @@ Foam::functionObjects::dropletFiberCollision::collide(const scalar dt)
                     fiber.material().radius,
                     segmentVelocity,
                     dt,
-                    collision_
+                    collision_,
+                    depletion_ ? sampleMasses.data() + next : nullptr
                 );
             next += std::size_t(samples);
             capture[f][j].mass = c.mass;
@@ -659,6 +677,13 @@ Foam::functionObjects::dropletFiberCollision::collide(const scalar dt)
         }
     }
     warnSamplesOutside(samplesOutside);
+    if (depletion_)
+    {
+        limitCapture
+        (
+            fields, points, massSums, sampleMasses, samplesPerSegment, capture
+        );
+    }
     return capture;
 }
 
@@ -808,6 +833,11 @@ Foam::functionObjects::dropletFiberCollision::dropletFiberCollision
     gatherWriteObjects_(false),
     lastTimeIndex_(-1),
     parcels_(),
+    depletion_(true),
+    depletionSteps_(0),
+    limitedSteps_(0),
+    removalRestored_(false),
+    loggedLimit_(false),
     warnedSamplesOutside_(false),
     nextFiberId_(0),
     stateProcessors_(0),
@@ -889,6 +919,17 @@ bool Foam::functionObjects::dropletFiberCollision::read(const dictionary& dict)
     const dropletFiber::gridSettings grid =
         dropletFiber::readGridSettings(dict.subOrEmptyDict("grid"), mesh_);
     collision_ = dropletFiber::readCollisionSettings(dict);
+    const bool depletion = dropletFiber::readDepletion(dict);
+    if (running && depletion != depletion_)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'collision.depletion' was edited during the run ("
+            << Switch(depletion_).c_str() << " -> "
+            << Switch(depletion).c_str() << "): it is read at the start"
+            << " only (the per-step table's columns follow it). Restart"
+            << " the run to change it." << exit(FatalIOError);
+    }
+    depletion_ = depletion;
     air_.reset
     (
         new dropletFiber::airSampler(mesh_, dict.subOrEmptyDict("air"))
@@ -928,8 +969,17 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
     stepSummary step;
     parallelStatistics_.startStep();
 
-    // 1. The parcels of this step, on this processor
+    // 1. The parcels of this step, on this processor (after a restart, with
+    //    the removal of the step restarted from)
     clockValue depositionStart(true);
+    if (removalRestored_)
+    {
+        coreCall
+        (
+            "removing the droplets captured before the restart",
+            [this]() { applyRestoredRemoval(); }
+        );
+    }
     gatherParcels();
     step.parcels = returnReduce(parcels_.size(), sumOp<label>());
     step.droplets = returnReduce(parcels_.nDroplets(), sumOp<scalar>());
@@ -955,6 +1005,16 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
     ::dropletFiber::CaptureSources capture =
         coreCall("colliding fibers and droplets", [&]() { return collide(dt); });
 
+    // 4b. Depletion: the captured droplets leave their parcels
+    if (depletion_)
+    {
+        coreCall
+        (
+            "removing the captured droplets from the parcels",
+            [&]() { depleteParcels(dt); }
+        );
+    }
+
     // 5. Advance the fibers: capture, air drag, bending, inextensibility
     const ::dropletFiber::StepReport report =
         coreCall
@@ -965,6 +1025,15 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
     step.maxSegmentLengthError = report.maxSegmentLengthError;
     step.subSteps = report.subSteps;
     totals_.captured += step.capturedStep;
+    if (depletion_)
+    {
+        depletionStep_.captured = step.capturedStep;
+        depletionRun_.demanded += depletionStep_.demanded;
+        depletionRun_.captured += depletionStep_.captured;
+        depletionRun_.removed += depletionStep_.removed;
+        ++depletionSteps_;
+        limitedSteps_ += depletionStep_.nodesLimited > 0 ? 1 : 0;
+    }
 
     // 6. Fibers that left; the others to the processor now holding their
     //    first point
@@ -983,6 +1052,7 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
     {
         coreCall("writing the restart state", [this]() { writeState(); });
         reportConservation();
+        reportBinderBalance();
         depositReport_->reportAtWrite(time_.timeName());
     }
     return true;

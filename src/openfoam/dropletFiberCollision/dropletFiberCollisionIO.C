@@ -60,12 +60,23 @@ void Foam::functionObjects::dropletFiberCollision::writeFileHeader
         {
             "fibers", "parcels", "droplets", "parcelMass", "massOnGrid", "massOutsideGrid",
             "capturedStep", "capturedTotal", "fiberMass",
-            "maxSegmentLengthError", "wallTimeDeposition", "wallTimeFibers"
+            "maxSegmentLengthError"
         }
     )
     {
         writeTabbed(os, column);
     }
+    // Depletion's binder balance: eq. 9 before the limit, the mass taken
+    // from the parcels (= capturedStep), the parcel mass flying on
+    if (depletion_)
+    {
+        for (const char* column : {"demandedStep", "removedStep", "airborneMass"})
+        {
+            writeTabbed(os, column);
+        }
+    }
+    writeTabbed(os, "wallTimeDeposition");
+    writeTabbed(os, "wallTimeFibers");
     os  << endl;
 }
 
@@ -82,8 +93,13 @@ void Foam::functionObjects::dropletFiberCollision::reportStep
         << ", fibers " << fibers
         << ", captured " << step.capturedStep << " kg (total "
         << totals_.captured << " kg), segment-length error "
-        << step.maxSegmentLengthError << ", sub-steps " << step.subSteps
-        << endl;
+        << step.maxSegmentLengthError << ", sub-steps " << step.subSteps;
+    if (depletion_)
+    {
+        Log << ", removed from the parcels " << depletionStep_.removed
+            << " kg, airborne " << depletionStep_.airborne << " kg";
+    }
+    Log << endl;
 
     if (writeToFile())
     {
@@ -98,8 +114,14 @@ void Foam::functionObjects::dropletFiberCollision::reportStep
             << tab << step.capturedStep
             << tab << totals_.captured
             << tab << mass
-            << tab << step.maxSegmentLengthError
-            << tab << step.depositionTime
+            << tab << step.maxSegmentLengthError;
+        if (depletion_)
+        {
+            os  << tab << depletionStep_.demanded
+                << tab << depletionStep_.removed
+                << tab << depletionStep_.airborne;
+        }
+        os  << tab << step.depositionTime
             << tab << step.fiberTime
             << endl;
     }

@@ -219,6 +219,17 @@ Foam::dictionary Foam::functionObjects::dropletFiberCollision::stateDict
     totals.add("parcelsCapped", totals_.parcelsCapped);
     state.add("totals", totals);
 
+    // Depletion: the last step's removal, which the clouds' files of this
+    // time do not hold yet
+    if (depletion_)
+    {
+        dictionary removal;
+        removal.add("origProc", removalProc_);
+        removal.add("origId", removalId_);
+        removal.add("fraction", removalFraction_);
+        state.add("depletionRemoval", removal);
+    }
+
     state.add
     (
         "gridWindowCounters",
@@ -342,6 +353,10 @@ bool Foam::functionObjects::dropletFiberCollision::readState()
     restoreFibers(state.subDict("fibers"));
     restoreInjectorCounts(state.subDict("injectors"));
     restoreTotals(state.subDict("totals"));
+    if (state.found("depletionRemoval"))
+    {
+        restoreRemoval(state.subDict("depletionRemoval"));
+    }
     restoreWindow(state, path);
 
     Info<< type() << " " << name() << ": restarted from " << path

@@ -241,12 +241,15 @@ void Foam::dropletFiber::gridBlocks::depositCopies
     {
         return;
     }
+    sentCopies_.resize(outgoing_.size());
     forAll(outgoing_, proci)
     {
         outgoing_[proci].clear();
+        sentCopies_[proci].clear();
     }
-    for (const auto& parcel : parcels)
+    for (std::size_t p = 0; p < parcels.size(); ++p)
     {
+        const ::dropletFiber::Parcel& parcel = parcels[p];
         const ::dropletFiber::IndexBox reached = grid.depositBox(parcel, dt);
         if (reached.intersected(owned_) == reached)
         {
@@ -256,17 +259,23 @@ void Foam::dropletFiber::gridBlocks::depositCopies
         for (const int proci : holders_)
         {
             appendParcel(outgoing_[proci], parcel);
+            sentCopies_[proci].push_back(p);
         }
     }
     const List<List<scalar>> received =
         exchangeLists(statistics, parallelStatistics::traffic::parcels);
-    // In processor order: the same sums on every run
+    // In processor order: the same sums on every run. Kept for depletion,
+    // whose removal needs these copies' weights here
+    copies_.clear();
+    copiesFrom_.assign(received.size(), 0);
     forAll(received, proci)
     {
         const List<scalar>& in = received[proci];
         for (label i = 0; i + parcelValues <= in.size(); i += parcelValues)
         {
-            grid.depositCopy(readParcel(in.cdata() + i), dt);
+            copies_.push_back(readParcel(in.cdata() + i));
+            grid.depositCopy(copies_.back(), dt);
+            ++copiesFrom_[proci];
         }
     }
 }
@@ -354,7 +363,8 @@ void Foam::dropletFiber::gridBlocks::askCornerOwners
     const ::dropletFiber::CornerWeights& corners,
     const Eigen::Vector3d& point,
     const std::size_t sample,
-    std::vector<std::vector<std::size_t>>& askedFor
+    std::vector<std::vector<std::size_t>>& askedFor,
+    const scalar* share
 )
 {
     label asked[8];
@@ -370,6 +380,10 @@ void Foam::dropletFiber::gridBlocks::askCornerOwners
         for (int d = 0; d < 3; ++d)
         {
             outgoing_[owner].append(point[d]);
+        }
+        if (share)
+        {
+            outgoing_[owner].append(*share);
         }
         askedFor[owner].push_back(sample);
     }
@@ -409,7 +423,8 @@ Foam::dropletFiber::gridBlocks::sample
 (
     const ::dropletFiber::DensityGrid& grid,
     const std::vector<Eigen::Vector3d>& points,
-    parallelStatistics& statistics
+    parallelStatistics& statistics,
+    std::vector<double>* massSums
 )
 {
     const label nQ = ::dropletFiber::nQuantities;
@@ -467,7 +482,192 @@ Foam::dropletFiber::gridBlocks::sample
             values[p] = grid.fieldFromCornerSums(sums[p]);
         }
     }
+    if (massSums)
+    {
+        massSums->assign(points.size(), 0.0);
+        for (std::size_t p = 0; p < points.size(); ++p)
+        {
+            (*massSums)[p] = sums[p][::dropletFiber::quantityMass];
+        }
+    }
     return values;
+}
+
+
+void Foam::dropletFiber::gridBlocks::attributeDemand
+(
+    const ::dropletFiber::DensityGrid& grid,
+    const std::vector<Eigen::Vector3d>& points,
+    const std::vector<double>& massShares,
+    ::dropletFiber::CaptureLimit& limit,
+    std::vector<::dropletFiber::SampleCapture>& local,
+    std::vector<std::vector<std::size_t>>& askedFor
+)
+{
+    local.assign(points.size(), ::dropletFiber::SampleCapture());
+    for (std::size_t p = 0; p < points.size(); ++p)
+    {
+        if (!(massShares[p] > 0))
+        {
+            continue; // no capture: nothing asked of any node
+        }
+        const ::dropletFiber::CornerWeights corners =
+            ::dropletFiber::multilinearWeights(spec_, points[p]);
+        local[p] =
+            ::dropletFiber::attributeOwnedCorners
+            (
+                grid, corners, massShares[p], Eigen::Vector3d::Zero()
+            );
+        limit.addDemand(local[p]);
+        if (Pstream::parRun())
+        {
+            const scalar share = massShares[p];
+            askCornerOwners(corners, points[p], p, askedFor, &share);
+        }
+    }
+}
+
+
+std::vector<double> Foam::dropletFiber::gridBlocks::grantCapture
+(
+    const ::dropletFiber::DensityGrid& grid,
+    const std::vector<Eigen::Vector3d>& points,
+    const std::vector<double>& massShares,
+    ::dropletFiber::CaptureLimit& limit,
+    ::dropletFiber::CaptureLimitReport& report,
+    parallelStatistics& statistics
+)
+{
+    const auto what = parallelStatistics::traffic::gridQueries;
+    limit.clear();
+    std::vector<std::vector<std::size_t>> askedFor(outgoing_.size());
+    forAll(outgoing_, proci)
+    {
+        outgoing_[proci].clear();
+    }
+    // P12: the demand at this block's corners, the rest asked of the owners
+    std::vector<::dropletFiber::SampleCapture> local;
+    attributeDemand(grid, points, massShares, limit, local, askedFor);
+    List<List<scalar>> requests(outgoing_.size());
+    std::vector<std::vector<::dropletFiber::SampleCapture>> remote
+    (
+        outgoing_.size()
+    );
+    if (Pstream::parRun())
+    {
+        requests = exchangeLists(statistics, what);
+        forAll(requests, proci)
+        {
+            const List<scalar>& in = requests[proci];
+            for (label i = 0; i + 4 <= in.size(); i += 4)
+            {
+                const Eigen::Vector3d point(in[i], in[i + 1], in[i + 2]);
+                remote[proci].push_back
+                (
+                    ::dropletFiber::attributeOwnedCorners
+                    (
+                        grid, ::dropletFiber::multilinearWeights(spec_, point),
+                        in[i + 3], Eigen::Vector3d::Zero()
+                    )
+                );
+                limit.addDemand(remote[proci].back());
+            }
+        }
+    }
+    // P13 on the nodes owned here, then each request's granted part back
+    report = limit.limit(grid);
+    std::vector<double> granted(points.size(), 0.0);
+    for (std::size_t p = 0; p < points.size(); ++p)
+    {
+        granted[p] = limit.grantedMass(local[p]);
+    }
+    if (!Pstream::parRun())
+    {
+        return granted;
+    }
+    for (std::size_t proci = 0; proci < remote.size(); ++proci)
+    {
+        outgoing_[proci].clear();
+        for (const auto& capture : remote[proci])
+        {
+            outgoing_[proci].append(limit.grantedMass(capture));
+        }
+    }
+    // Added in processor order: the same sums on every run
+    const List<List<scalar>> answers = exchangeLists(statistics, what);
+    forAll(answers, proci)
+    {
+        for (std::size_t i = 0; i < askedFor[proci].size(); ++i)
+        {
+            granted[askedFor[proci][i]] += answers[proci][label(i)];
+        }
+    }
+    return granted;
+}
+
+
+std::vector<double> Foam::dropletFiber::gridBlocks::capturedFractions
+(
+    ::dropletFiber::DensityGrid& grid,
+    const ::dropletFiber::CaptureLimit& limit,
+    const std::vector<::dropletFiber::Parcel>& parcels,
+    const double dt,
+    parallelStatistics& statistics
+)
+{
+    // c_p over this block's nodes for its own parcels
+    std::vector<double> fraction(parcels.size(), 0.0);
+    for (std::size_t p = 0; p < parcels.size(); ++p)
+    {
+        fraction[p] = limit.capturedFraction(grid, parcels[p], dt);
+    }
+    if (Pstream::parRun())
+    {
+        addCopiesFractions(grid, limit, dt, fraction, statistics);
+    }
+    // Clamped; a parcel left with a round-off's share of its droplets (the
+    // weights of a parcel whose nodes all gave everything sum to 1 within
+    // ~1e-16) has lost them all
+    for (double& f : fraction)
+    {
+        f = f > 1 - allCapturedWithin ? 1.0 : f;
+    }
+    return fraction;
+}
+
+
+void Foam::dropletFiber::gridBlocks::addCopiesFractions
+(
+    ::dropletFiber::DensityGrid& grid,
+    const ::dropletFiber::CaptureLimit& limit,
+    const double dt,
+    std::vector<double>& fraction,
+    parallelStatistics& statistics
+)
+{
+    // The copies received, their parts sent back in the order
+    // received
+    std::size_t next = 0;
+    forAll(outgoing_, proci)
+    {
+        outgoing_[proci].clear();
+        for (std::size_t i = 0; i < copiesFrom_[proci]; ++i)
+        {
+            outgoing_[proci].append
+            (
+                limit.capturedFraction(grid, copies_[next++], dt)
+            );
+        }
+    }
+    const List<List<scalar>> parts =
+        exchangeLists(statistics, parallelStatistics::traffic::parcels);
+    forAll(parts, proci)
+    {
+        for (std::size_t i = 0; i < sentCopies_[proci].size(); ++i)
+        {
+            fraction[sentCopies_[proci][i]] += parts[proci][label(i)];
+        }
+    }
 }
 
 

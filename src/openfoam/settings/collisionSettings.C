@@ -14,7 +14,10 @@ namespace
 using namespace Foam;
 
 //- The entries of collision: read by readSamples and readCollisionSettings
-const wordList collisionKeys{"sampling", "samplesPerSegment", "radiusAverage"};
+const wordList collisionKeys
+{
+    "sampling", "samplesPerSegment", "radiusAverage", "depletion"
+};
 
 
 //- Sample points per segment: midpoint 1 (the paper); integrated:
@@ -93,6 +96,16 @@ const dictionary& radiusAverageDict
       ? ::dropletFiber::RadiusAverage::Number
       : ::dropletFiber::RadiusAverage::Mass;
     return options;
+}
+
+
+bool Foam::dropletFiber::readDepletion(const dictionary& dict)
+{
+    // true: the captured mass leaves the parcels (docs/model.md sec. 7);
+    // false: the paper's behaviour, the spray unchanged by the fibers
+    const dictionary collisionDict = dict.subOrEmptyDict("collision");
+    checkKeys(collisionDict, collisionKeys);
+    return getSwitch(collisionDict, "depletion", true);
 }
 
 

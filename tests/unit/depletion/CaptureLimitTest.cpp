@@ -332,3 +332,87 @@ TEST(CaptureLimit, BlocksGivePartsThatAddUpToTheWholeGrids)
                     wholeLimit.capturedFraction(whole, parcel, dt), 1e-14);
     }
 }
+
+TEST(CaptureAttribution, OwnedCornersOfTheBlocksAddUpToTheWholeSample)
+{
+    // The parallel route of P12: each block attributes m_s / Sigma times its corners' parts
+    // (Sigma from the blocks' addOwnedCornerSums); per node that must be attributeSample's
+    // share on the whole grid, and the whole grid's own corners all of it.
+    const GridSpec spec = test::grid2D();
+    const double dt = 1e-3;
+    const std::vector<Parcel> parcels = randomParcels(spec, 200, 11);
+    DensityGrid whole(spec, KernelSettings{}, 1);
+    const GridPartition partition = GridPartition::bisection(spec, 4);
+    std::vector<std::unique_ptr<DensityGrid>> blocks;
+    for (int b = 0; b < partition.processors(); ++b)
+    {
+        blocks.push_back(std::make_unique<DensityGrid>(spec, KernelSettings{}, 1,
+                                                       GridBlock{partition.owned(b), spec.fullBox()}));
+    }
+    for (const Parcel& parcel : parcels)
+    {
+        whole.deposit(parcel, dt);
+        for (auto& block : blocks)
+        {
+            block->deposit(parcel, dt);
+        }
+    }
+    whole.commitStep();
+    for (auto& block : blocks)
+    {
+        block->commitStep();
+    }
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    int compared = 0;
+    for (int s = 0; s < 200; ++s)
+    {
+        const Eigen::Vector3d point(spec.lower.x() + unit(rng) * (spec.upper.x() - spec.lower.x()),
+                                    spec.lower.y() + unit(rng) * (spec.upper.y() - spec.lower.y()),
+                                    0.5 * (spec.lower.z() + spec.upper.z()));
+        const CornerWeights corners = multilinearWeights(spec, point);
+        std::array<double, 8 * nQuantities> totals{};
+        for (int c = 0; c < corners.count; ++c)
+        {
+            whole.windowTotal(corners.node[c], totals.data() + c * nQuantities);
+        }
+        const double sampleMass = 1e-9 * (0.5 + unit(rng));
+        const SampleCapture expected
+            = attributeSample(whole, corners, totals.data(), sampleMass, Eigen::Vector3d::Zero());
+        if (expected.count == 0)
+        {
+            continue;
+        }
+        std::array<double, nQuantities> sums{};
+        for (const auto& block : blocks)
+        {
+            block->addOwnedCornerSums(corners, sums);
+        }
+        const double share = sampleMass / sums[quantityMass];
+        std::unordered_map<std::size_t, double> fromBlocks;
+        for (const auto& block : blocks)
+        {
+            const SampleCapture part = attributeOwnedCorners(*block, corners, share, Eigen::Vector3d::Zero());
+            for (int c = 0; c < part.count; ++c)
+            {
+                EXPECT_TRUE(block->owns(part.node[c]));
+                fromBlocks[part.node[c]] += part.mass[c];
+            }
+        }
+        const SampleCapture wholeOwned
+            = attributeOwnedCorners(whole, corners, share, Eigen::Vector3d::Zero());
+        ASSERT_EQ(wholeOwned.count, expected.count);
+        ASSERT_EQ(fromBlocks.size(), static_cast<std::size_t>(expected.count));
+        double sum = 0.0;
+        for (int c = 0; c < expected.count; ++c)
+        {
+            EXPECT_EQ(wholeOwned.node[c], expected.node[c]);
+            EXPECT_NEAR(wholeOwned.mass[c], expected.mass[c], 1e-14 * sampleMass);
+            EXPECT_NEAR(fromBlocks[expected.node[c]], expected.mass[c], 1e-14 * sampleMass);
+            sum += wholeOwned.mass[c];
+        }
+        EXPECT_NEAR(sum, sampleMass, 1e-14 * sampleMass);
+        ++compared;
+    }
+    EXPECT_GT(compared, 50);
+}
