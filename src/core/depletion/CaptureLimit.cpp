@@ -188,16 +188,25 @@ CaptureLimitReport CaptureLimit::limit(const DensityGrid& grid)
             throw std::logic_error("CaptureLimit::limit: demand at node " + std::to_string(node)
                                    + ", which this grid does not own (takeForeignDemand first)");
         }
-        const double supply = grid.lastStepValue(node, quantityMass);
-        const double granted = demand > supply ? supply : demand; // min(d_n, s_n)
-        granted_[node] = demand > 0.0 ? std::min(1.0, supply / demand) : 1.0;
+        // s_n: the mass per step eq. 9 read at the node (the window's mean); h_n: what
+        // this step's parcels hold there. f_n = min(1, d_n / s_n) of h_n is taken, so the
+        // fibers get d_n h_n / s_n: eq. 9 in the mean over steps (h_n fluctuates about s_n
+        // in a sparse spray), never more than the parcels hold (P13).
+        double sums[nQuantities];
+        grid.windowTotal(node, sums);
+        const int steps = grid.stepsInWindow();
+        const double supply = steps > 0 ? sums[quantityMass] / steps : 0.0;
+        const double held = grid.lastStepValue(node, quantityMass);
+        const double taken = supply > 0.0 ? std::min(1.0, demand / supply) : 0.0;
+        const double granted = taken * held;
+        granted_[node] = demand > 0.0 ? granted / demand : 1.0;
         report.massDemanded += demand;
         report.massGranted += granted;
         report.nodesDemanded += demand > 0.0 ? 1 : 0;
         report.nodesLimited += demand > supply ? 1 : 0;
         if (granted > 0.0)
         {
-            taken_[node] = std::min(1.0, demand / supply);
+            taken_[node] = taken;
             markTaken(node, nodes);
         }
     }

@@ -6,17 +6,19 @@
 //     corner densities; its captured mass m_s (eq. 9) is split over the corners in
 //     proportion to (corner weight x corner density), d_sc = m_s w_c rho_c / sum w rho
 //     (attributeSample), and added per node: d_n = sum of the d_sc at node n (addDemand).
-//  2. Limit (P13). A node gives at most the mass the step's parcels deposited on it, s_n
-//     (DensityGrid::lastStepValue, the newest committed step). limit() sets per node
-//         f_n = min(1, d_n / s_n)   taken fraction (0 where s_n = 0)
-//         g_n = min(1, s_n / d_n)   granted ratio
+//  2. Limit (P13). Eq. 9 read the window's mass per step at the node, s_n (its mean over
+//     the window's steps); this step's parcels hold h_n there (DensityGrid::lastStepValue,
+//     the newest committed step). limit() sets per node
+//         f_n = min(1, d_n / s_n)   taken fraction of h_n (0 where s_n = 0)
+//         g_n = f_n h_n / d_n       granted ratio (> 1 where this step holds more than
+//                                   the mean: eq. 9 is met in the mean over steps)
 //     and a sample's mass becomes sum_c d_sc g_{n_c} (grantedMass), its momentum that
-//     times the sample's droplet velocity. Captured = sum_n d_n g_n = sum_n min(d_n, s_n).
+//     times the sample's droplet velocity. Captured = sum_n f_n h_n <= sum_n h_n.
 //  3. Removal (P14). Parcel p, which deposited w_pn F_p of its mass on node n (the
 //     deposit's weight times the part of the step inside the box), loses the fraction
 //         c_p = sum_n w_pn F_p f_n
 //     of its droplets (capturedFraction; nParticle *= 1 - c_p, droplet size and velocity
-//     unchanged). Removed = sum_p c_p m_p = sum_n f_n s_n = sum_n min(d_n, s_n): the mass
+//     unchanged). Removed = sum_p c_p m_p = sum_n f_n h_n: the mass
 //     the fibers capture equals the mass leaving the spray, to round-off.
 //
 // The averaging window is not changed: it holds what was deposited (the window's later
@@ -76,9 +78,9 @@ struct NodeMass
 struct CaptureLimitReport
 {
     std::int64_t nodesDemanded = 0; // nodes with demand > 0
-    std::int64_t nodesLimited = 0;  // of which demand > supply (g_n < 1)
+    std::int64_t nodesLimited = 0;  // of which demand > the window's mass per step (f_n = 1)
     double massDemanded = 0.0;      // sum d_n (eq. 9 without the limit), kg
-    double massGranted = 0.0;       // sum min(d_n, s_n): captured, and removed from the spray, kg
+    double massGranted = 0.0;       // sum f_n h_n: captured, and removed from the spray, kg
 
     CaptureLimitReport& operator+=(const CaptureLimitReport& other);
 };
