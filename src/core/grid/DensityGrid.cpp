@@ -1,4 +1,5 @@
 #include "grid/DensityGrid.hpp"
+#include "grid/KernelExtent.hpp"
 
 #include "grid/MultilinearWeights.hpp"
 #include "grid/PathWeight.hpp"
@@ -840,26 +841,8 @@ void DensityGrid::sendWeighted(double inverseSum, const IndexBox& box, WeightSin
 
 double DensityGrid::negligibleDistance(const ParcelKernel& kernel, double pathLength) const
 {
-    // A node farther than d from the path has omega < exp(-gamma d^2) (phi is below that at
-    // every point of the path). Some node lies within c = half the cell diagonal of the
-    // path's midpoint (the clipped path is inside the box), so within c + L/2 of every point
-    // of the path: its omega, the mean of phi along the path, is at least phi(c + L/2), and
-    // so is the parcel's largest. Nodes with exp(-gamma d^2) <= negligibleWeight phi(c + L/2)
-    // therefore hold less than negligibleWeight times the largest weight.
-    const double epsilon = kernelSettings_.negligibleWeight;
-    const double reach = kernel.reach();
-    // The cut binds only if exp(-gamma reach^2) < epsilon (phi <= 1).
-    if (!(epsilon > 0.0) || !(kernel.edgeExponent() > -std::log(epsilon)))
-    {
-        return reach;
-    }
-    const double best = kernel.phi(halfCellDiagonal_ + 0.5 * pathLength);
-    if (!(best > 0.0))
-    {
-        return reach;
-    }
-    const double cutoffSquared = (-std::log(epsilon) - std::log(best)) / kernel.gamma();
-    return cutoffSquared < reach * reach ? std::sqrt(cutoffSquared) : reach;
+    // P10 (KernelExtent.hpp: the deposit report uses the same bound)
+    return negligibleReach(kernel, pathLength, halfCellDiagonal_, kernelSettings_.negligibleWeight);
 }
 
 std::array<int, 3> DensityGrid::nodeIndices(std::size_t node) const

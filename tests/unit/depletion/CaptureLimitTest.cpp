@@ -16,34 +16,10 @@
 #include <random>
 
 using namespace dropletFiber;
+using test::randomParcels;
 
 namespace
 {
-
-// Parcels in and a little beyond the box: wide kernels (folded near the faces), narrow
-// ones (cloud-in-cell or the zero-weight fallback), moving and still.
-std::vector<Parcel> randomParcels(const GridSpec& spec, int count, unsigned seed)
-{
-    std::mt19937_64 rng(seed);
-    std::uniform_real_distribution<double> unit(0.0, 1.0);
-    std::vector<Parcel> parcels;
-    for (int n = 0; n < count; ++n)
-    {
-        Parcel p;
-        for (int d = 0; d < 3; ++d)
-        {
-            const double size = spec.upper[d] - spec.lower[d];
-            p.position[d] = spec.flat(d) ? 0.5 * (spec.lower[d] + spec.upper[d])
-                                         : spec.lower[d] - 0.05 * size + 1.1 * size * unit(rng);
-            p.velocity[d] = spec.flat(d) ? 0.0 : (n % 5 == 0 ? 0.0 : 4.0 * (unit(rng) - 0.5));
-        }
-        p.diameter = 2e-5 * (0.5 + unit(rng));
-        p.nParticle = n % 3 == 0 ? 2.0 : 20.0 + 200.0 * unit(rng);
-        p.rhoDroplet = 1000.0;
-        parcels.push_back(p);
-    }
-    return parcels;
-}
 
 std::array<int, 3> indices(const GridSpec& spec, std::size_t node)
 {

@@ -1,9 +1,13 @@
-// Test helper (not a test file): the small grids several grid tests deposit on, one
-// definition each. grid2D: 3 x 2 cm, 1 mm spacing, one node layer 1 mm thick (31 x 21 nodes
+// Test helper (not a test file): the small grids several grid tests deposit on, and the
+// random parcels they deposit, one definition each. grid2D: 3 x 2 cm, 1 mm spacing, one node layer 1 mm thick (31 x 21 nodes
 // unless told otherwise); grid3D: 2 x 1.5 x 1 cm, 1 mm spacing (21 x 16 x 11 nodes).
 #pragma once
 
 #include "grid/GridSpec.hpp"
+#include "grid/Parcel.hpp"
+
+#include <random>
+#include <vector>
 
 namespace dropletFiber
 {
@@ -26,6 +30,31 @@ inline GridSpec grid3D()
     s.upper = Eigen::Vector3d(0.02, 0.015, 0.01);
     s.nodes = {{21, 16, 11}};
     return s;
+}
+
+// Parcels anywhere in and a little beyond the box, wide and narrow kernels (the narrow
+// ones go to the cell corners or the zero-weight fallback), moving and still.
+inline std::vector<Parcel> randomParcels(const GridSpec& spec, int count, unsigned seed)
+{
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    std::vector<Parcel> parcels;
+    for (int n = 0; n < count; ++n)
+    {
+        Parcel p;
+        for (int d = 0; d < 3; ++d)
+        {
+            const double size = spec.upper[d] - spec.lower[d];
+            p.position[d] = spec.flat(d) ? 0.5 * (spec.lower[d] + spec.upper[d])
+                                         : spec.lower[d] - 0.05 * size + 1.1 * size * unit(rng);
+            p.velocity[d] = spec.flat(d) ? 0.0 : (n % 5 == 0 ? 0.0 : 4.0 * (unit(rng) - 0.5));
+        }
+        p.diameter = 2e-5 * (0.5 + unit(rng));
+        p.nParticle = n % 3 == 0 ? 2.0 : 20.0 + 200.0 * unit(rng);
+        p.rhoDroplet = 1000.0;
+        parcels.push_back(p);
+    }
+    return parcels;
 }
 
 } // namespace test
