@@ -335,7 +335,7 @@ double CaptureLimit::capturedFraction(DensityGrid& grid, const Parcel& parcel, d
     }
     const DensityGrid::NodeFraction fraction = [this](std::size_t node) { return takenFraction(node); };
     const DensityGrid::NodeBoxTest asks = [this](const IndexBox& box) { return mayTake(box); };
-    return std::min(1.0, grid.depositedShare(parcel, dt, asks, fraction));
+    return std::min(1.0, grid.depositedShare(parcel, dt, asks, fraction, takenBox_));
 }
 
 } // namespace dropletFiber

@@ -347,12 +347,12 @@ void DensityGrid::deposit(const Parcel& parcel, double dt)
     }
     // 3-7. The weights of the nodes, onto the step accumulator.
     const std::array<double, nQuantities> totals = parcelTotals(parcel, mass, path.fraction);
-    WeightSink sink{stats, &totals, nullptr, nullptr, 0.0};
+    WeightSink sink{stats, &totals, nullptr, nullptr, 0.0, IndexBox{}};
     weighPath(parcel, path, sink);
 }
 
 double DensityGrid::depositedShare(const Parcel& parcel, double dt, const NodeBoxTest& asks,
-                                   const NodeFraction& fraction)
+                                   const NodeFraction& fraction, const IndexBox& region)
 {
     checkParcel(parcel, dt);
     if (parcel.nParticle == 0.0 || parcel.diameter == 0.0)
@@ -366,7 +366,7 @@ double DensityGrid::depositedShare(const Parcel& parcel, double dt, const NodeBo
     {
         return 0.0;
     }
-    WeightSink sink{unused, nullptr, &asks, &fraction, 0.0};
+    WeightSink sink{unused, nullptr, &asks, &fraction, 0.0, region};
     weighPath(parcel, path, sink);
     return path.fraction * sink.sum;
 }
@@ -622,12 +622,16 @@ void DensityGrid::sendSeparable(double inverseSum, const IndexBox& box, WeightSi
 {
     if (!sink.accumulates())
     {
-        // depositedShare: every node of the (folded) box, the deposit's weights to the bit.
+        // depositedShare: the nodes of the (folded) box that may have a fraction, the
+        // deposit's weights to the bit (a part of a row is that part of the whole row).
         std::int64_t weighted = 0;
-        forEachRow(box, spec_.nodes,
+        const IndexBox asked = box.intersected(sink.region);
+        const auto first = static_cast<std::size_t>(asked.lo[0] - box.lo[0]);
+        forEachRow(asked, spec_.nodes,
                    [&](const IndexRow& row)
                    {
-                       const double* omega = separable_.row(row.j - box.lo[1], row.k - box.lo[2]);
+                       const double* omega
+                           = separable_.row(row.j - box.lo[1], row.k - box.lo[2], first, row.length);
                        for (std::size_t i = 0; i < row.length; ++i)
                        {
                            const double weight = omega[i] * inverseSum;

@@ -180,9 +180,11 @@ public:
     // bit. A parcel whose nodes (and those of its cloud-in-cell fallback) `asks` turns down
     // gives 0 before any weight is evaluated (cheap where few nodes have a fraction).
     // The weights cover the whole grid whatever the block (fraction() decides which nodes
-    // count): blocks that each ask for their owned nodes give parts that add up.
+    // count): blocks that each ask for their owned nodes give parts that add up. `region`
+    // holds every node whose fraction may be non-zero: separable weights are evaluated
+    // there only (the same weights; the sum only skips terms that are 0).
     double depositedShare(const Parcel& parcel, double dt, const NodeBoxTest& asks,
-                          const NodeFraction& fraction);
+                          const NodeFraction& fraction, const IndexBox& region);
     // A box (grid indices) holding every node deposit(parcel, dt) can give mass to: the
     // kernel's nodes (folded) and those of its cloud-in-cell fallback; empty when the
     // parcel gives the grid nothing. A parallel caller sends a parcel to the blocks whose
@@ -287,6 +289,7 @@ private:
         const NodeBoxTest* asks;                       // depositedShare: boxes that may matter
         const NodeFraction* fraction;                  // depositedShare: per node
         double sum;                                    // depositedShare: sum weight * fraction
+        IndexBox region;                               // depositedShare: nodes with a fraction
         bool accumulates() const { return totals != nullptr; }
         bool wants(const IndexBox& box) const { return asks == nullptr || (!box.empty() && (*asks)(box)); }
     };

@@ -64,9 +64,9 @@ void checkSharesAgainstDeposit(const GridSpec& spec, const KernelSettings& setti
         const double parcelTotal = parcelMass(parcel);
         expected /= parcelTotal;
         withMass += expected > 0.0 ? 1 : 0;
-        EXPECT_NEAR(grid.depositedShare(parcel, dt, askAll, fractionAt), expected, 1e-13);
+        EXPECT_NEAR(grid.depositedShare(parcel, dt, askAll, fractionAt, spec.fullBox()), expected, 1e-13);
         // A test that turns down every box gives 0 (nothing weighed).
-        EXPECT_EQ(grid.depositedShare(parcel, dt, askNone, fractionAt), 0.0);
+        EXPECT_EQ(grid.depositedShare(parcel, dt, askNone, fractionAt, spec.fullBox()), 0.0);
     }
     EXPECT_GT(withMass, 200);
     EXPECT_GT(grid.lastStepStatistics().parcels, 0);
@@ -128,7 +128,7 @@ TEST(DepositedShare, LeavesTheStepAndItsStatisticsAlone)
     const DensityGrid::NodeBoxTest askAll = [](const IndexBox&) { return true; };
     for (const Parcel& parcel : parcels)
     {
-        grid.depositedShare(parcel, 1e-3, askAll, one);
+        grid.depositedShare(parcel, 1e-3, askAll, one, spec.fullBox());
     }
     EXPECT_EQ(grid.stepValues(), before);
     EXPECT_EQ(grid.stepStatistics().parcels, parcelsBefore);

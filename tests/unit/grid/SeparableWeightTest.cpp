@@ -509,6 +509,10 @@ TEST(SeparableWeight, DepositedShareGivesTheDepositsWeights)
     const DensityGrid::NodeFraction one = [](std::size_t) { return 1.0; };
     const DensityGrid::NodeBoxTest askAll = [](const IndexBox&) { return true; };
     std::int64_t separable = 0;
+    IndexBox region; // a corner of the grid
+    region.lo = {{3, 2, 1}};
+    region.hi = {{9, 8, 5}};
+    double regionShare = 0.0;
     for (int p = 0; p < 20; ++p)
     {
         const Parcel parcel = randomWideParcel(random, spec, p % 2 == 0 ? 0.0 : 20.0);
@@ -521,9 +525,23 @@ TEST(SeparableWeight, DepositedShareGivesTheDepositsWeights)
             expected += grid.lastStepValue(node, quantityMass) * fraction[node];
         }
         const double mass = grid.lastStepStatistics().massDeposited;
-        EXPECT_NEAR(grid.depositedShare(parcel, dt, askAll, fractionAt), expected / parcelMass(parcel),
+        EXPECT_NEAR(grid.depositedShare(parcel, dt, askAll, fractionAt, spec.fullBox()),
+                    expected / parcelMass(parcel), 1e-13);
+        EXPECT_NEAR(grid.depositedShare(parcel, dt, askAll, one, spec.fullBox()), mass / parcelMass(parcel),
                     1e-13);
-        EXPECT_NEAR(grid.depositedShare(parcel, dt, askAll, one), mass / parcelMass(parcel), 1e-13);
+        // A region holding every node with a fraction: the same sum, to the bit
+        const DensityGrid::NodeFraction inRegion = [&](std::size_t node)
+        {
+            const auto nx = static_cast<std::size_t>(spec.nodes[0]);
+            const auto ny = static_cast<std::size_t>(spec.nodes[1]);
+            const bool inside = region.holds(static_cast<int>(node % nx), static_cast<int>((node / nx) % ny),
+                                             static_cast<int>(node / (nx * ny)));
+            return inside ? fraction[node] : 0.0;
+        };
+        EXPECT_EQ(grid.depositedShare(parcel, dt, askAll, inRegion, region),
+                  grid.depositedShare(parcel, dt, askAll, inRegion, spec.fullBox()));
+        regionShare += grid.depositedShare(parcel, dt, askAll, inRegion, region);
     }
+    EXPECT_GT(regionShare, 0.0);
     EXPECT_GE(separable, 15);
 }
