@@ -1,6 +1,7 @@
 #include "depletion/CaptureLimit.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -122,7 +123,7 @@ void CaptureLimit::clear()
     granted_.clear();
     taken_.clear();
     takenBox_ = IndexBox{};
-    takenBricks_.clear();
+    forgetTakenBricks();
 }
 
 void CaptureLimit::addDemand(const SampleCapture& sample)
@@ -174,7 +175,7 @@ CaptureLimitReport CaptureLimit::limit(const DensityGrid& grid)
     CaptureLimitReport report;
     taken_.clear();
     takenBox_ = IndexBox{};
-    takenBricks_.clear();
+    forgetTakenBricks();
     const std::array<int, 3> nodes = grid.spec().nodes;
     for (int d = 0; d < 3; ++d)
     {
@@ -221,7 +222,23 @@ void CaptureLimit::markTaken(std::size_t node, const std::array<int, 3>& nodes)
     one.lo = one.hi = {{static_cast<int>(node % nx), static_cast<int>((node / nx) % ny),
                         static_cast<int>(node / (nx * ny))}};
     takenBox_ = takenBox_.united(one);
-    takenBricks_.insert(brickIndex(one.lo[0] / brickSize, one.lo[1] / brickSize, one.lo[2] / brickSize));
+    const std::size_t brick = brickIndex(one.lo[0] / brickSize, one.lo[1] / brickSize, one.lo[2] / brickSize);
+    takenBrick_.resize(bricks_[0] * bricks_[1] * bricks_[2], 0);
+    if (takenBrick_[brick] == 0)
+    {
+        takenBrick_[brick] = 1;
+        takenBrickList_.push_back(brick);
+    }
+}
+
+void CaptureLimit::forgetTakenBricks()
+{
+    // Only the bricks set (a dense map over the grid's bricks: mayTake() is asked per parcel)
+    for (const std::size_t brick : takenBrickList_)
+    {
+        takenBrick_[brick] = 0;
+    }
+    takenBrickList_.clear();
 }
 
 bool CaptureLimit::mayTake(const IndexBox& box) const
@@ -237,7 +254,7 @@ bool CaptureLimit::mayTake(const IndexBox& box) const
         {
             for (int i = candidates.lo[0] / brickSize; i <= candidates.hi[0] / brickSize; ++i)
             {
-                if (takenBricks_.count(brickIndex(i, j, k)) != 0)
+                if (takenBrick_[brickIndex(i, j, k)] != 0)
                 {
                     return true;
                 }
@@ -327,9 +344,41 @@ void CaptureLimit::setTakenFraction(std::size_t node, double fraction, const std
     markTaken(node, gridNodes);
 }
 
+bool CaptureLimit::mayReach(const GridSpec& spec, const KernelSettings& kernel, const Parcel& parcel,
+                            double dt) const
+{
+    // Before the parcel's kernel is built: its nodes lie within r_max (or the cap) of its
+    // whole path, its cloud-in-cell corners within a spacing; mirrored ghost nodes are
+    // nearer still. So a parcel whose path, grown by that, misses takenBox() takes nothing.
+    double margin = influenceRadiusMax(0.5 * parcel.diameter, parcel.nParticle);
+    margin = kernel.rMaxCap > 0.0 ? std::min(margin, kernel.rMaxCap) : margin;
+    const Eigen::Vector3d end = parcel.position;
+    const Eigen::Vector3d start = parcel.position - parcel.velocity * dt;
+    IndexBox reached;
+    for (int d = 0; d < 3; ++d)
+    {
+        if (spec.flat(d))
+        {
+            reached.lo[d] = reached.hi[d] = 0;
+            continue;
+        }
+        const double h = spec.spacing(d);
+        const double grown = std::max(margin, h);
+        const double a = (std::min(start[d], end[d]) - grown - spec.lower[d]) / h;
+        const double b = (std::max(start[d], end[d]) + grown - spec.lower[d]) / h;
+        reached.lo[d] = static_cast<int>(std::max(std::floor(a), -1.0));
+        reached.hi[d] = static_cast<int>(std::min(std::ceil(b), static_cast<double>(spec.nodes[d])));
+    }
+    return !reached.intersected(takenBox_).empty() && mayTake(reached.intersected(spec.fullBox()));
+}
+
 double CaptureLimit::capturedFraction(DensityGrid& grid, const Parcel& parcel, double dt) const
 {
     if (taken_.empty())
+    {
+        return 0.0;
+    }
+    if (!mayReach(grid.spec(), grid.kernelSettings(), parcel, dt))
     {
         return 0.0;
     }

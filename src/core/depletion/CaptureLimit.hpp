@@ -44,7 +44,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <unordered_map>
-#include <unordered_set>
 #include <vector>
 
 namespace dropletFiber
@@ -154,6 +153,11 @@ public:
     static constexpr int brickSize = 4;
 
 private:
+    // False when the parcel's deposit cannot reach a node with f_n > 0 (a cheap bound from
+    // r_max, checked before its weights are evaluated).
+    bool mayReach(const GridSpec& spec, const KernelSettings& kernel, const Parcel& parcel, double dt) const;
+    // Clears takenBrick_ (the bricks set only).
+    void forgetTakenBricks();
     // f_n > 0 at the node: takenBox_ and its brick.
     void markTaken(std::size_t node, const std::array<int, 3>& nodes);
     std::size_t brickIndex(int i, int j, int k) const
@@ -166,8 +170,9 @@ private:
     std::unordered_map<std::size_t, double> granted_; // g_n
     std::unordered_map<std::size_t, double> taken_;   // f_n > 0, owned nodes
     IndexBox takenBox_;
-    std::array<std::size_t, 3> bricks_{}; // per direction, over the grid
-    std::unordered_set<std::size_t> takenBricks_;
+    std::array<std::size_t, 3> bricks_{};     // per direction, over the grid
+    std::vector<unsigned char> takenBrick_;   // per brick of the grid: 1 when it holds f_n > 0
+    std::vector<std::size_t> takenBrickList_; // the bricks set, to clear them
 };
 
 } // namespace dropletFiber
