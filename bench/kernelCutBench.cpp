@@ -15,7 +15,7 @@
 #include "BenchCommon.hpp"
 
 #include "grid/DensityGrid.hpp"
-#include "grid/KernelExtent.hpp"
+#include "grid/ParcelKernel.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -126,9 +126,9 @@ void negligibleWeightTable(const ParcelClass& c, int rounds, int count)
     }
     const std::vector<Parcel> one(parcels.begin(), parcels.begin() + 1);
     const std::vector<double> reference = density(withCut(0.0), one);
-    const KernelExtentMeter meter(cube(), withCut(1e-17), 3);
+    const ParcelKernel kernel(0.5 * one[0].diameter, one[0].nParticle, withCut(1e-17), 3);
     std::printf("\n%s: width %.2f spacings, r_max %.0f spacings (%d parcels, %d rounds)\n", c.name,
-                meter.measure(one[0], dt).width, c.radius * c.n / spacing, count, rounds);
+                kernel.width() / spacing, c.radius * c.n / spacing, count, rounds);
     std::printf("  negligibleWeight  nodes/parcel  us/parcel median [min-max]  ns/node  error/largest\n");
     for (std::size_t i = 0; i < cuts.size(); ++i)
     {
@@ -159,7 +159,7 @@ void capTable(const ParcelClass& c)
     Parcel p = makeParcels(c, 1)[0];
     p.position = Eigen::Vector3d(0.0302, 0.0304, 0.0301);
     p.velocity = Eigen::Vector3d::Zero();
-    const double width = KernelExtentMeter(cube(), withCut(0.0), 3).measure(p, dt).width * spacing;
+    const double width = ParcelKernel(0.5 * p.diameter, p.nParticle, withCut(0.0), 3).width();
     std::vector<double> caps{0.0, 2.0, 3.0, 4.0, 6.0};
     std::vector<std::unique_ptr<DensityGrid>> grids;
     for (const double cap : caps)

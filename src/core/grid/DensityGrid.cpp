@@ -428,6 +428,9 @@ void DensityGrid::weighPath(const Parcel& parcel, const ClippedPath& path, Weigh
     PathWeight pathWeight(kernel, path.start, path.displacement);
     const double reach = negligibleDistance(kernel, path.displacement.norm());
     pathWeight.limitTo(reach);
+    // The widest kernel weighed this step, in largest spacings (the deposit report)
+    stats.widestKernelWidth = std::max(stats.widestKernelWidth, kernel.width() / largestSpacing_);
+    stats.widestKernelReach = std::max(stats.widestKernelReach, reach / largestSpacing_);
 
     // 4. Weights of the lattice nodes in the bounding box of the swept capsule; ghost
     // nodes beyond the faces are folded onto their mirror images.
@@ -845,7 +848,7 @@ void DensityGrid::sendWeighted(double inverseSum, const IndexBox& box, WeightSin
 
 double DensityGrid::negligibleDistance(const ParcelKernel& kernel, double pathLength) const
 {
-    // P10 (KernelExtent.hpp: the deposit report uses the same bound)
+    // P10 (KernelExtent.hpp)
     return negligibleReach(kernel, pathLength, halfCellDiagonal_, kernelSettings_.negligibleWeight);
 }
 

@@ -26,46 +26,4 @@ double negligibleReach(const ParcelKernel& kernel, double pathLength, double hal
     return cutoffSquared < reach * reach ? std::sqrt(cutoffSquared) : reach;
 }
 
-KernelExtentMeter::KernelExtentMeter(const GridSpec& spec, const KernelSettings& settings, int dimension)
-    : settings_(settings), dimension_(dimension)
-{
-    double diagonalSquared = 0.0;
-    for (int d = 0; d < 3; ++d)
-    {
-        if (!spec.flat(d))
-        {
-            spacing_ = std::max(spacing_, spec.spacing(d));
-            diagonalSquared += 0.25 * spec.spacing(d) * spec.spacing(d);
-        }
-    }
-    halfCellDiagonal_ = std::sqrt(diagonalSquared);
-}
-
-KernelExtent KernelExtentMeter::measure(const Parcel& parcel, double dt) const
-{
-    KernelExtent extent;
-    if (parcel.nParticle == 0.0 || parcel.diameter == 0.0 || !(spacing_ > 0.0))
-    {
-        return extent;
-    }
-    const ParcelKernel kernel(0.5 * parcel.diameter, parcel.nParticle, settings_, dimension_);
-    const double pathLength = parcel.velocity.norm() * dt;
-    extent.width = kernel.width() / spacing_;
-    extent.reach
-        = negligibleReach(kernel, pathLength, halfCellDiagonal_, settings_.negligibleWeight) / spacing_;
-    extent.cloudInCell = extent.width < settings_.cloudInCellBelow;
-    return extent;
-}
-
-void KernelExtentMeter::record(const Parcel& parcel, double dt, StepStatistics& stats) const
-{
-    const KernelExtent extent = measure(parcel, dt);
-    if (extent.cloudInCell || extent.width == 0.0)
-    {
-        return;
-    }
-    stats.widestKernelWidth = std::max(stats.widestKernelWidth, extent.width);
-    stats.widestKernelReach = std::max(stats.widestKernelReach, extent.reach);
-}
-
 } // namespace dropletFiber

@@ -28,7 +28,7 @@ struct StepStatistics
     double massOutside = 0.0;              // massIn - massDeposited (part of the step outside the box)
     // The widest kernel of the step, in node spacings (the largest spacing): its width
     // r_max / sqrt(2 alpha) (eq. 16) and its evaluated reach (support P9 or negligibleWeight
-    // cut P10); cloud-in-cell parcels not counted. Filled by KernelExtentMeter::record.
+    // cut P10); cloud-in-cell parcels not counted. Filled by DensityGrid::deposit.
     double widestKernelWidth = 0.0;
     double widestKernelReach = 0.0;
 

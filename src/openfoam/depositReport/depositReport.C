@@ -13,21 +13,39 @@
 #include <algorithm>
 #include <cmath>
 
+// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- The largest node spacing of the active directions: the unit of the
+//  deposit's widest-kernel figures (DensityGrid's largestSpacing)
+Foam::scalar largestSpacing(const ::dropletFiber::GridSpec& spec)
+{
+    Foam::scalar largest = 0;
+    for (int d = 0; d < 3; ++d)
+    {
+        largest = spec.flat(d) ? largest : Foam::max(largest, spec.spacing(d));
+    }
+    return largest;
+}
+
+} // End anonymous namespace
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::dropletFiber::depositReport::depositReport
 (
     const word& owner,
     const ::dropletFiber::GridSpec& spec,
-    const ::dropletFiber::KernelSettings& kernel,
-    const label kernelDimension
+    const ::dropletFiber::KernelSettings& kernel
 )
 :
     owner_(owner),
-    meter_(spec, kernel, int(kernelDimension)),
     kernel_(kernel),
     activeDimensions_(spec.activeDimensions()),
-    spacing_(meter_.spacing()),
+    spacing_(largestSpacing(spec)),
     since_(),
     lastStep_(),
     timing_(false),
@@ -39,8 +57,6 @@ Foam::dropletFiber::depositReport::depositReport
 
 void Foam::dropletFiber::depositReport::record
 (
-    const cloudParcels& parcels,
-    const scalar dt,
     const ::dropletFiber::StepStatistics& deposit,
     const scalar depositTime,
     const word& timeName
@@ -58,9 +74,8 @@ void Foam::dropletFiber::depositReport::record
     lastStep_ = now;
     timing_ = true;
 
-    const ::dropletFiber::StepStatistics kernels = widestKernels(parcels, dt);
-    since_.widestWidth = max(since_.widestWidth, kernels.widestKernelWidth);
-    since_.widestReach = max(since_.widestReach, kernels.widestKernelReach);
+    since_.widestWidth = max(since_.widestWidth, deposit.widestKernelWidth);
+    since_.widestReach = max(since_.widestReach, deposit.widestKernelReach);
     since_.nodesVisited += scalar(deposit.nodesVisited);
     since_.parcelsOnGrid +=
         scalar(deposit.parcels - deposit.parcelsEmpty - deposit.parcelsOutside);
@@ -78,30 +93,6 @@ void Foam::dropletFiber::depositReport::record
     warn(timeName);
     warned_ = true;
     since_ = interval();
-}
-
-
-::dropletFiber::StepStatistics
-Foam::dropletFiber::depositReport::widestKernels
-(
-    const cloudParcels& parcels,
-    const scalar dt
-) const
-{
-    ::dropletFiber::StepStatistics kernels;
-    for (label i = 0; i < parcels.size(); ++i)
-    {
-        ::dropletFiber::Parcel p;
-        const point& x = parcels.position[i];
-        const vector& U = parcels.U[i];
-        p.position = Eigen::Vector3d(x.x(), x.y(), x.z());
-        p.velocity = Eigen::Vector3d(U.x(), U.y(), U.z());
-        p.diameter = parcels.d[i];
-        p.nParticle = parcels.nParticle[i];
-        p.rhoDroplet = parcels.rho[i];
-        meter_.record(p, dt, kernels);
-    }
-    return kernels;
 }
 
 

@@ -161,8 +161,7 @@ void Foam::functionObjects::dropletFiberCollision::buildStatefulParts
     (
         new dropletFiber::depositReport
         (
-            type() + " " + name(), gridSettings_.spec, gridSettings_.kernel,
-            grid_->kernelDimension()
+            type() + " " + name(), gridSettings_.spec, gridSettings_.kernel
         )
     );
 }
@@ -991,10 +990,7 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
     totals_.deposited += step.deposit.massDeposited;
     totals_.outside += step.deposit.massOutside;
     step.depositionTime = depositionStart.elapsed();
-    depositReport_->record
-    (
-        parcels_, dt, step.deposit, step.depositionTime, time_.timeName()
-    );
+    depositReport_->record(step.deposit, step.depositionTime, time_.timeName());
 
     // 3. New fibers
     clockValue fiberStart(true);

@@ -1,7 +1,8 @@
-// KernelExtent: the widest-kernel figures of the step statistics (docs/model.md sec. 4, cost
-// of wide kernels). The width is checked against the paper's figure-4 kernel; the reach
-// against its defining property (P10: the weight bound at the cut is negligibleWeight times
-// the parcel's least largest weight) and against the nodes DensityGrid::deposit visits.
+// KernelExtent: the widest-kernel figures DensityGrid::deposit records in its step
+// statistics (docs/model.md sec. 4, cost of wide kernels). The width is checked against the
+// paper's figure-4 kernel; the reach against its defining property (P10: the weight bound at
+// the cut is negligibleWeight times the parcel's least largest weight) and against the nodes
+// the deposit visits.
 #include "grid/DensityGrid.hpp"
 #include "grid/KernelExtent.hpp"
 #include "TestGrids.hpp"
@@ -49,17 +50,18 @@ TEST(KernelExtent, WidthOfFigure4KernelInSpacings)
 {
     // n = 1000, r_p = 1e-5 m, 2D: r_max = 1e-2 m, alpha = 151.9 (the paper's figure 4), so
     // the width r_max / sqrt(2 alpha) is 5.737e-4 m: 0.5737 spacings of 1 mm.
-    const KernelExtentMeter meter(test::grid2D(), settings2D(0.0), 2);
+    DensityGrid grid(test::grid2D(), settings2D(0.0));
     Parcel p;
     p.position = Eigen::Vector3d(0.015, 0.01, 0.0005);
     p.diameter = 2e-5;
     p.nParticle = 1000.0;
     p.rhoDroplet = 1000.0;
-    const KernelExtent extent = meter.measure(p, 1e-3);
-    EXPECT_NEAR(extent.width, 1e-2 / std::sqrt(2.0 * 151.9) / 1e-3, 2e-4);
+    grid.deposit(p, 1e-3);
+    const StepStatistics& stats = grid.stepStatistics();
+    EXPECT_NEAR(stats.widestKernelWidth, 1e-2 / std::sqrt(2.0 * 151.9) / 1e-3, 2e-4);
     // negligibleWeight 0: every node within r_max = 10 spacings
-    EXPECT_NEAR(extent.reach, 10.0, 1e-12);
-    EXPECT_FALSE(extent.cloudInCell);
+    EXPECT_NEAR(stats.widestKernelReach, 10.0, 1e-12);
+    EXPECT_EQ(stats.parcelsCloudInCell, 0);
 }
 
 TEST(KernelExtent, ReachIsWhereTheBoundFallsToNegligibleWeight)
@@ -89,11 +91,10 @@ TEST(KernelExtent, ReachGivesTheNodesTheDepositVisits)
         {
             const KernelSettings settings = settings2D(epsilon);
             DensityGrid grid(test::grid2D(), settings);
-            const KernelExtentMeter meter(grid.spec(), settings, grid.kernelDimension());
             const Parcel p = wideParcel(Eigen::Vector3d(speed, 0.0, 0.0));
             const double dt = 1e-3;
             grid.deposit(p, dt);
-            const double reach = meter.measure(p, dt).reach * 1e-3;
+            const double reach = grid.stepStatistics().widestKernelReach * 1e-3;
             const double startX = p.position.x() - speed * dt;
             const long expected = nodesAlong(startX, p.position.x(), reach)
                 * nodesAlong(p.position.y(), p.position.y(), reach);
@@ -105,17 +106,21 @@ TEST(KernelExtent, ReachGivesTheNodesTheDepositVisits)
 
 TEST(KernelExtent, RecordKeepsTheWidestAndSumsTakeTheLarger)
 {
-    const KernelExtentMeter meter(test::grid2D(), settings2D(1e-17), 2);
     Parcel narrow = wideParcel(Eigen::Vector3d::Zero());
     narrow.nParticle = 50.0;
     const Parcel wide = wideParcel(Eigen::Vector3d::Zero());
-    StepStatistics a;
-    meter.record(wide, 1e-3, a);
-    meter.record(narrow, 1e-3, a);
-    EXPECT_DOUBLE_EQ(a.widestKernelWidth, meter.measure(wide, 1e-3).width);
-    EXPECT_DOUBLE_EQ(a.widestKernelReach, meter.measure(wide, 1e-3).reach);
-    StepStatistics b;
-    meter.record(narrow, 1e-3, b);
+    DensityGrid wideAlone(test::grid2D(), settings2D(1e-17));
+    wideAlone.deposit(wide, 1e-3);
+    DensityGrid both(test::grid2D(), settings2D(1e-17));
+    both.deposit(wide, 1e-3);
+    both.deposit(narrow, 1e-3);
+    const StepStatistics& a = both.stepStatistics();
+    EXPECT_DOUBLE_EQ(a.widestKernelWidth, wideAlone.stepStatistics().widestKernelWidth);
+    EXPECT_DOUBLE_EQ(a.widestKernelReach, wideAlone.stepStatistics().widestKernelReach);
+    DensityGrid narrowAlone(test::grid2D(), settings2D(1e-17));
+    narrowAlone.deposit(narrow, 1e-3);
+    StepStatistics b = narrowAlone.stepStatistics();
+    EXPECT_LT(b.widestKernelWidth, a.widestKernelWidth);
     b += a;
     EXPECT_DOUBLE_EQ(b.widestKernelWidth, a.widestKernelWidth);
     EXPECT_DOUBLE_EQ(b.widestKernelReach, a.widestKernelReach);
