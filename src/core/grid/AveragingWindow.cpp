@@ -132,7 +132,7 @@ void AveragingWindow::push(const std::vector<double>& step, const IndexBox& box)
     push(step.data(), region_, box);
 }
 
-void AveragingWindow::push(const double* step, const IndexBox& stepRegion, const IndexBox& box)
+void AveragingWindow::checkStepBox(const IndexBox& box, const IndexBox& stepRegion) const
 {
     if (!box.empty() && (box.intersected(region_) != box || box.intersected(stepRegion) != box))
     {
@@ -140,27 +140,42 @@ void AveragingWindow::push(const double* step, const IndexBox& stepRegion, const
                                     + " outside the window's region " + boxText(region_)
                                     + " or the step array's " + boxText(stepRegion));
     }
-    const IndexBox local = toRegion(box);
-    IndexBox evicted;
-    std::size_t slot;
-    if (filled_ == length_)
+}
+
+std::size_t AveragingWindow::takeSlot(IndexBox& evicted)
+{
+    if (filled_ < length_)
     {
-        slot = static_cast<std::size_t>(head_);
-        evicted = slotBoxes_[slot];
-        std::vector<double>& old = slots_[slot];
-        forEachBoxRow(evicted,
-                      [&](std::size_t offset, std::size_t count)
-                      {
-                          std::fill(old.begin() + static_cast<std::ptrdiff_t>(offset),
-                                    old.begin() + static_cast<std::ptrdiff_t>(offset + count), 0.0);
-                      });
-        head_ = (head_ + 1) % length_;
-    }
-    else
-    {
-        slot = slotIndex(filled_);
+        // Not used since the construction or the restore: empty (allocated on first use).
+        const std::size_t slot = slotIndex(filled_);
         ++filled_;
+        return slot;
     }
+    const std::size_t slot = static_cast<std::size_t>(head_);
+    evicted = slotBoxes_[slot];
+    std::vector<double>& old = slots_[slot];
+    forEachBoxRow(evicted,
+                  [&](std::size_t offset, std::size_t count)
+                  {
+                      std::fill(old.begin() + static_cast<std::ptrdiff_t>(offset),
+                                old.begin() + static_cast<std::ptrdiff_t>(offset + count), 0.0);
+                  });
+    head_ = (head_ + 1) % length_;
+    return slot;
+}
+
+void AveragingWindow::filledSlot(std::size_t slot, const IndexBox& local, const IndexBox& evicted)
+{
+    slotBoxes_[slot] = local;
+    ++committed_;
+    staleBox_ = staleBox_.united(evicted.united(local));
+}
+
+void AveragingWindow::push(const double* step, const IndexBox& stepRegion, const IndexBox& box)
+{
+    checkStepBox(box, stepRegion);
+    IndexBox evicted;
+    const std::size_t slot = takeSlot(evicted);
     std::vector<double>& target = slots_[slot];
     if (target.empty())
     {
@@ -175,9 +190,26 @@ void AveragingWindow::push(const double* step, const IndexBox& stepRegion, const
                      std::copy(step + row.first * q, step + (row.first + row.length) * q,
                                target.begin() + static_cast<std::ptrdiff_t>(to * q));
                  });
-    slotBoxes_[slot] = local;
-    ++committed_;
-    staleBox_ = staleBox_.united(evicted.united(local));
+    filledSlot(slot, toRegion(box), evicted);
+}
+
+void AveragingWindow::pushSwapping(std::vector<double>& step, const IndexBox& box)
+{
+    if (step.size() != total_.size())
+    {
+        throw std::invalid_argument("averaging window: step array has the wrong size");
+    }
+    checkStepBox(box, region_);
+    IndexBox evicted;
+    const std::size_t slot = takeSlot(evicted);
+    // The slot is zero everywhere now (cleared over the evicted step's box, zero outside
+    // it) or not allocated yet: it becomes the caller's next, zeroed, step array.
+    slots_[slot].swap(step);
+    if (step.empty())
+    {
+        step.assign(total_.size(), 0.0);
+    }
+    filledSlot(slot, toRegion(box), evicted);
 }
 
 double AveragingWindow::newestStepValue(std::size_t node, int q) const

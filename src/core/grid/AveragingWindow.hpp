@@ -4,7 +4,15 @@
 // Storage: a ring of W slots, each a full per-node array (GridQuantities layout), filled
 // as steps are committed (a slot is allocated when first used), plus the window total.
 // Memory: (filled slots + 1) * nodes * nQuantities * 8 bytes, e.g. 56 bytes per node
-// and slot for the 7 quantities.
+// and slot for the 7 quantities. Every slot is zero outside its step's box.
+//
+// Committing a step: push() copies the step's box into the slot (after clearing the
+// evicted step's box there). pushSwapping() takes the caller's step array itself as the
+// slot (std::vector::swap) and hands back the evicted slot, cleared over its box, as the
+// caller's next step array: no copy, and the caller need not clear its array either. A
+// step of wide kernels touches about the whole grid (bench/spray3D: 85,000 nodes, 4.8 MB
+// per step), so this saves a copy and a clearing of that size per step; DensityGrid uses
+// it whenever its step array has the window's layout (storage box = owned box).
 //
 // Exact, drift-free total: instead of a running sum with add-new/subtract-oldest (whose
 // round-off residue leaves small negative masses in empty regions and would make a
@@ -64,6 +72,11 @@ public:
     // The same from an array laid out over stepRegion (which holds box; box within
     // region()): the block's part of a larger step array.
     void push(const double* step, const IndexBox& stepRegion, const IndexBox& box);
+    // The same as push(step, box) without copying: `step` (laid out over region(), zero
+    // outside box) becomes the newest slot, and the caller gets back in `step` an array
+    // of the same size that is zero everywhere (the evicted slot, cleared over its box
+    // only; a new one while the window fills), to accumulate the next step in.
+    void pushSwapping(std::vector<double>& step, const IndexBox& box);
     // The block of the grid this window holds (grid indices).
     const IndexBox& region() const { return region_; }
 
@@ -89,6 +102,15 @@ public:
 private:
     std::size_t slotIndex(int age) const { return static_cast<std::size_t>((head_ + age) % length_); }
     void recomputeTotal(const IndexBox& box) const;
+    // push(): throws unless box (grid indices) lies in region() and in stepRegion.
+    void checkStepBox(const IndexBox& box, const IndexBox& stepRegion) const;
+    // The slot the next step goes to: the next unused one while the window fills, else
+    // the oldest, whose box (region indices) is returned in `evicted` and cleared: every
+    // slot is zero outside its box, so the returned slot is zero or not allocated.
+    std::size_t takeSlot(IndexBox& evicted);
+    // The step in `slot` covers `local` (region indices): counts it and marks the boxes
+    // whose total changed stale.
+    void filledSlot(std::size_t slot, const IndexBox& local, const IndexBox& evicted);
     // The slot boxes of a saved state, checked against this grid and the state's value
     // count; throws std::invalid_argument naming what does not fit.
     std::vector<IndexBox> savedSlotBoxes(const WindowState& state) const;

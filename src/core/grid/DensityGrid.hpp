@@ -199,7 +199,9 @@ public:
     const IndexBox& ownedBox() const { return owned_; }
     const IndexBox& storageBox() const { return storage_; }
     // storage.nodeCount() * nQuantities doubles, GridQuantities layout over the storage box
-    // (flatIndexInBox; the whole grid: flat node index), zero outside stepBox().
+    // (flatIndexInBox; the whole grid: flat node index), zero outside stepBox(). The
+    // vector's storage may change at commitStep() (it can become a window slot): take
+    // data() anew after each commit.
     std::vector<double>& stepValues() { return step_; }
     const std::vector<double>& stepValues() const { return step_; }
     // The stored nodes the step touched (grid indices).

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <deque>
+#include <memory>
 #include <random>
 
 using namespace dropletFiber;
@@ -159,5 +160,95 @@ TEST(AveragingWindow, RestoreForgetsTheNodeTotalsOfTheWindowsOwnSteps)
         behind.nodeTotal(n, b);
         for (int q = 0; q < nq; ++q)
             ASSERT_EQ(a[q], b[q]) << "node " << n << " quantity " << q;
+    }
+}
+
+// pushSwapping: the caller's step array becomes the newest slot and the caller gets back
+// the evicted slot, which must be zero everywhere (it was cleared over its own box only)
+// to accumulate the next step in. The reference is independent of the window: a plain
+// list of the last W step arrays, summed oldest to newest. The steps are added (+=) into
+// the array the window handed back, as DensityGrid's deposit does, so a returned array
+// not cleared (in or outside the new step's box) shows in the totals. Boxes of different
+// sizes and positions, more than W steps, a window of a block of the grid and one of the
+// whole grid, and a restore from a saved state midway whose window goes on swapping.
+TEST(AveragingWindow, SwappedStepArraysGiveTheChronologicalSumBitForBit)
+{
+    IndexBox whole;
+    whole.lo = {0, 0, 0};
+    whole.hi = {nodes[0] - 1, nodes[1] - 1, nodes[2] - 1};
+    IndexBox block;
+    block.lo = {1, 1, 0};
+    block.hi = {6, 3, 2};
+    for (const IndexBox& region : {whole, block})
+    {
+        const int length = 3;
+        const std::size_t regionValues = region.nodeCount() * nq;
+        AveragingWindow window(nodes, region, nq, length);
+        std::unique_ptr<AveragingWindow> restored;
+        std::vector<double> accumulator(regionValues, 0.0);
+        std::vector<double> restoredAccumulator(regionValues, 0.0);
+        std::deque<std::vector<double>> history; // the last `length` steps, oldest first
+        std::mt19937 rng(31);
+        for (int step = 0; step < 13; ++step)
+        {
+            const IndexBox box = randomBox(rng).intersected(region);
+            // This step's values over the region's nodes (zero outside box).
+            const std::vector<double> values = randomStep(box, rng);
+            std::vector<double> local(regionValues, 0.0);
+            forEachRowIn(region, whole,
+                         [&](const IndexRow& row)
+                         {
+                             std::copy(values.begin() + static_cast<std::ptrdiff_t>(row.first * nq),
+                                       values.begin()
+                                           + static_cast<std::ptrdiff_t>((row.first + row.length) * nq),
+                                       local.begin() + static_cast<std::ptrdiff_t>(row.offsetInBox * nq));
+                         });
+            history.push_back(local);
+            if (static_cast<int>(history.size()) > length)
+                history.pop_front();
+            for (std::size_t v = 0; v < regionValues; ++v)
+                accumulator[v] += local[v];
+            window.pushSwapping(accumulator, box);
+            ASSERT_EQ(accumulator.size(), regionValues);
+            if (restored)
+            {
+                for (std::size_t v = 0; v < regionValues; ++v)
+                    restoredAccumulator[v] += local[v];
+                restored->pushSwapping(restoredAccumulator, box);
+            }
+            else if (step == 5)
+            {
+                // A restarted run: a new window from the state saved after this step.
+                restored = std::make_unique<AveragingWindow>(nodes, region, nq, length);
+                restored->restore(window.save());
+            }
+
+            for (const AveragingWindow* w : {&window, restored.get()})
+            {
+                if (w == nullptr)
+                    continue;
+                for (std::size_t n = 0; n < region.nodeCount(); ++n)
+                {
+                    double sums[nq];
+                    w->nodeTotal(n, sums);
+                    for (std::size_t q = 0; q < nq; ++q)
+                    {
+                        double expected = 0.0;
+                        for (const auto& s : history)
+                            expected += s[n * nq + q];
+                        ASSERT_EQ(sums[q], expected) << "step " << step << " node " << n << " quantity " << q;
+                        ASSERT_EQ(w->newestStepValue(n, static_cast<int>(q)), history.back()[n * nq + q]);
+                    }
+                }
+                const std::vector<double>& total = w->total();
+                for (std::size_t v = 0; v < regionValues; ++v)
+                {
+                    double expected = 0.0;
+                    for (const auto& s : history)
+                        expected += s[v];
+                    ASSERT_EQ(total[v], expected) << "step " << step << " value " << v;
+                }
+            }
+        }
     }
 }

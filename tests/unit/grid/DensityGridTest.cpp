@@ -10,12 +10,16 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <deque>
+#include <memory>
 #include <random>
 
 using namespace dropletFiber;
 using test::grid2D;
 using test::grid3D;
+using test::randomParcels;
 
 namespace
 {
@@ -559,4 +563,121 @@ TEST(DensityGrid, RejectsInvalidInput)
     bad.nodes = {{1, 1, 1}};
     EXPECT_THROW(DensityGrid{bad}, std::invalid_argument);
     EXPECT_THROW(DensityGrid(grid2D(), KernelSettings{}, 0), std::invalid_argument);
+}
+
+TEST(DensityGrid, CommittedStepsAreTheLastWStepArraysBitForBit)
+{
+    // commitStep hands the step array to the window (it becomes the newest slot, and the
+    // evicted slot, cleared, the next step array). Reference: a copy of stepValues()
+    // taken before each commit, the last W of them summed oldest to newest. Steps of
+    // parcels in different parts of the grid (touched boxes of different sizes and
+    // places), more than W of them; a restart midway goes on committing the same way.
+    const GridSpec spec = grid3D();
+    const int length = 3;
+    auto parcelsOfStep = [&](int step)
+    {
+        // Parcels in a box that moves and changes size from step to step (empty at step 4).
+        std::mt19937_64 rng(static_cast<std::uint64_t>(300 + step));
+        std::uniform_real_distribution<double> unit(0.0, 1.0);
+        const double x0 = 0.002 * (step % 5), width = 0.004 + 0.003 * (step % 3);
+        std::vector<Parcel> parcels;
+        for (int n = 0; n < (step == 4 ? 0 : 30); ++n)
+        {
+            parcels.push_back(makeParcel(
+                Eigen::Vector3d(x0 + width * unit(rng), 0.015 * unit(rng), 0.002 + 0.004 * unit(rng)),
+                Eigen::Vector3d(2.0 * unit(rng), -2.0 * unit(rng), 0.5), 1e-5 + 5e-5 * unit(rng),
+                1.0 + 500.0 * unit(rng)));
+        }
+        return parcels;
+    };
+    DensityGrid grid(spec, KernelSettings{}, length);
+    std::unique_ptr<DensityGrid> restored;
+    std::deque<std::vector<double>> history; // the last W step arrays, oldest first
+    for (int step = 0; step < 10; ++step)
+    {
+        for (DensityGrid* g : {&grid, restored.get()})
+        {
+            if (g == nullptr)
+                continue;
+            for (const Parcel& p : parcelsOfStep(step))
+                g->deposit(p, 1e-3);
+        }
+        history.push_back(grid.stepValues());
+        if (static_cast<int>(history.size()) > length)
+            history.pop_front();
+        grid.commitStep();
+        if (restored)
+            restored->commitStep();
+        if (step == 5)
+        {
+            restored = std::make_unique<DensityGrid>(spec, KernelSettings{}, length);
+            restored->restoreWindow(grid.saveWindow());
+        }
+        std::vector<double> expected(history.back().size(), 0.0);
+        for (const auto& s : history)
+            for (std::size_t v = 0; v < expected.size(); ++v)
+                expected[v] += s[v];
+        for (const DensityGrid* g : std::array<const DensityGrid*, 2>{&grid, restored.get()})
+        {
+            if (g == nullptr)
+                continue;
+            // Node by node (what sampling reads every step), then the whole array
+            for (std::size_t node = 0; node < spec.nodeCount(); ++node)
+            {
+                double sums[nQuantities];
+                g->windowTotal(node, sums);
+                for (std::size_t q = 0; q < nQuantities; ++q)
+                {
+                    ASSERT_EQ(sums[q], expected[node * nQuantities + q])
+                        << "step " << step << " node " << node;
+                    ASSERT_EQ(g->lastStepValue(node, static_cast<int>(q)),
+                              history.back()[node * nQuantities + q]);
+                }
+            }
+            ASSERT_TRUE(g->windowTotals() == expected) << "step " << step;
+            // The next step's array is zero everywhere
+            ASSERT_TRUE(std::all_of(g->stepValues().begin(), g->stepValues().end(),
+                                    [](double v) { return v == 0.0; }))
+                << "step " << step;
+        }
+    }
+}
+
+TEST(DensityGrid, BlockStoringMoreThanItOwnsCommitsItsOwnedNodes)
+{
+    // A block whose storage box is larger than its owned box (the step array is not laid
+    // out as the window: commitStep copies its owned part): its window totals at the owned
+    // nodes are the whole grid's, bit for bit (each stored node gets the whole grid's
+    // deposit, in the same parcel order), over more steps than the window holds.
+    const GridSpec spec = grid3D();
+    GridBlock block;
+    block.owned.lo = {{4, 3, 2}};
+    block.owned.hi = {{13, 10, 7}};
+    block.storage.lo = {{2, 1, 0}};
+    block.storage.hi = {{16, 14, 9}};
+    DensityGrid whole(spec, KernelSettings{}, 2);
+    DensityGrid part(spec, KernelSettings{}, 2, block);
+    for (int step = 0; step < 5; ++step)
+    {
+        for (const Parcel& p : randomParcels(spec, 40, 70u + static_cast<unsigned>(step)))
+        {
+            whole.deposit(p, 1e-3);
+            part.deposit(p, 1e-3);
+        }
+        whole.commitStep();
+        part.commitStep();
+        ASSERT_TRUE(std::all_of(part.stepValues().begin(), part.stepValues().end(),
+                                [](double v) { return v == 0.0; }));
+        for (int k = block.owned.lo[2]; k <= block.owned.hi[2]; ++k)
+            for (int j = block.owned.lo[1]; j <= block.owned.hi[1]; ++j)
+                for (int i = block.owned.lo[0]; i <= block.owned.hi[0]; ++i)
+                {
+                    const std::size_t node = spec.flatIndex(i, j, k);
+                    double sums[nQuantities];
+                    part.windowTotal(node, sums);
+                    for (std::size_t q = 0; q < nQuantities; ++q)
+                        ASSERT_EQ(sums[q], whole.windowTotals()[node * nQuantities + q])
+                            << "step " << step << " node " << node;
+                }
+    }
 }
