@@ -1,14 +1,12 @@
 // SeparableLanes: the separable weights' AVX2 + FMA loops (see SeparableLanes.hpp). The loops
 // are compiled for AVX2 + FMA (namespace avx2 between DROPLETFIBER_AVX2_BEGIN and END,
-// KernelBuild.hpp), the entry points below them for the build's target: they check the CPU
-// and pass pointers and doubles only.
+// KernelBuild.hpp), the entry points below them for the build's target: they pass pointers
+// and doubles only.
 #include "grid/SeparableLanes.hpp"
 
 #include "grid/KernelBuild.hpp"
 #include "grid/PathWeightBatch.hpp"
 
-#include <stdexcept>
-#include <string>
 
 #if DROPLETFIBER_BATCHED_KERNEL
 
@@ -53,7 +51,8 @@ inline void rowBlocks(const double* rowFactor, int points, const double* factor,
 }
 
 // The last `remaining` (1-3) nodes from position i on: the same operations in a register
-// whose other lanes are masked (neither read nor written; they hold 0).
+// whose other lanes are masked when loading (not read; they hold 0), stored lane by lane
+// (a masked store is slow on some CPUs: AMD Zen).
 inline void rowTail(const double* rowFactor, int points, const double* factor, std::size_t stride,
                     std::size_t i, std::size_t remaining, double* omega)
 {
@@ -65,7 +64,12 @@ inline void rowTail(const double* rowFactor, int points, const double* factor, s
         const double* f = factor + static_cast<std::size_t>(q) * stride + i;
         sum = _mm256_fmadd_pd(_mm256_broadcast_sd(rowFactor + q), _mm256_maskload_pd(f, mask), sum);
     }
-    _mm256_maskstore_pd(omega + i, mask, sum);
+    double lanes[4];
+    _mm256_storeu_pd(lanes, sum);
+    for (std::size_t lane = 0; lane < remaining; ++lane)
+    {
+        omega[i + lane] = lanes[lane];
+    }
 }
 
 void rowInLanes(const double* rowFactor, int points, const double* factor, std::size_t stride,
@@ -182,21 +186,6 @@ DROPLETFIBER_AVX2_END
 namespace dropletFiber
 {
 
-namespace
-{
-
-// Reaching the AVX2 code on a CPU without it would be SIGILL: callers ask available() first.
-void requireLanes(const char* caller)
-{
-    if (!SeparableLanes::available())
-    {
-        throw std::logic_error(std::string("SeparableLanes::") + caller
-                               + ": this build or CPU has no AVX2 + FMA code (SeparableLanes::available)");
-    }
-}
-
-} // namespace
-
 bool SeparableLanes::available()
 {
     return PathWeightBatch::cpuSupported();
@@ -205,7 +194,6 @@ bool SeparableLanes::available()
 void SeparableLanes::row(const double* rowFactor, int points, const double* factor, std::size_t stride,
                          std::size_t count, double* omega)
 {
-    requireLanes("row");
 #if DROPLETFIBER_BATCHED_KERNEL
     avx2::rowInLanes(rowFactor, points, factor, stride, count, omega);
 #else
@@ -216,7 +204,6 @@ void SeparableLanes::row(const double* rowFactor, int points, const double* fact
 void SeparableLanes::gaussianTable(const double* coordinate, std::size_t count, double centre, double gamma,
                                    double* table)
 {
-    requireLanes("gaussianTable");
 #if DROPLETFIBER_BATCHED_KERNEL
     avx2::gaussianTableInLanes(coordinate, count, centre, gamma, table);
 #else
@@ -227,7 +214,6 @@ void SeparableLanes::gaussianTable(const double* coordinate, std::size_t count, 
 void SeparableLanes::addWeightedRow(const double* omega, std::size_t length, double inverseSum,
                                     const double* totals, double* values)
 {
-    requireLanes("addWeightedRow");
 #if DROPLETFIBER_BATCHED_KERNEL
     avx2::addWeightedRowInLanes(omega, length, inverseSum, totals, values);
 #else

@@ -14,14 +14,16 @@
 // Each value's arithmetic is the same whatever its position in the row, so a part of a row
 // gives the same values, to the bit, as those positions of the whole row (grid blocks hold
 // the whole grid's values to the bit): row() starts every node from rowFactor[0] X_0 (one
-// multiplication) and adds q = 1, 2, ... with one FMA each, the last 1-3 nodes in a masked
-// register; addWeightedRow() rounds omega inverseSum, then one FMA per value, the last 1-3
+// multiplication) and adds q = 1, 2, ... with one FMA each, the last 1-3 nodes in a register
+// loaded with a mask; addWeightedRow() rounds omega inverseSum, then one FMA per value, the last 1-3
 // nodes with scalar FMAs. Against the portable loops (multiplication, then addition) the
 // values differ by the FMA's missing rounding, ~1e-16 relative (SeparableLanesTest).
 //
-// Only pointers and doubles cross into the AVX2 code (KernelBuild.hpp, rule 5); these
-// functions are default-target entry points and throw std::logic_error where the build or
-// CPU has no AVX2 + FMA.
+// Only pointers and doubles cross into the AVX2 code (KernelBuild.hpp, rule 5). The
+// functions below are default-target entry points that call it: only where available()
+// (SeparableWeight's vectorised(), DensityGrid::batchedKernel()), which they do not check
+// again (they run once per row); elsewhere they would stop the program with an illegal
+// instruction.
 #pragma once
 
 #include <cstddef>

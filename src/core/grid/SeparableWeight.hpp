@@ -30,7 +30,9 @@
 //    negligible-weight cut: t = negligibleWeight times a lower bound of the largest weight,
 //    the weight at the cut distance of P10), and the exact code drops nodes farther than
 //    the cut from the path, whose weights are below that too: at most t;
-//  - rounding: relative, below relativeRounding of (omega + E).
+//  - rounding: relative, below relativeRounding of (omega + E); besides, the exponents'
+//    arguments gamma (x - c)^2, rounded to ~3 ulp, add up to 3 u X exp(-X) <= 1.2e-16 of the
+//    peak per node (X = gamma (x - c)^2; docs/model.md P16: not counted in the bound).
 // chooseQuadrature turns these into a bound on the normalised weights (eq. 24) and picks Q.
 //
 // On CPUs with AVX2 + FMA (vectorised, the default) the tables' exponentials and the rows'
