@@ -1,6 +1,7 @@
 #include "grid/SeparableWeight.hpp"
 
 #include "grid/GaussLegendre.hpp"
+#include "grid/SeparableLanes.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -44,6 +45,8 @@ const UnitRules& unitRules()
 }
 
 } // namespace
+
+SeparableWeight::SeparableWeight(bool vectorised) : lanes_(vectorised && SeparableLanes::available()) {}
 
 double SeparableWeight::quadratureBound(int points, double k)
 {
@@ -116,6 +119,11 @@ void SeparableWeight::axisTable(int d, const double* coordinate, int lo, int hi,
     {
         const double centre = start[d] + tau_[static_cast<std::size_t>(q)] * displacement[d];
         double* f = factor.data() + static_cast<std::size_t>(q) * n;
+        if (lanes_)
+        {
+            SeparableLanes::gaussianTable(coordinate + lo, n, centre, gamma, f);
+            continue;
+        }
         for (std::size_t i = 0; i < n; ++i)
         {
             const double s = coordinate[lo + static_cast<int>(i)] - centre;
@@ -168,6 +176,11 @@ const double* SeparableWeight::row(int j, int k, std::size_t first, std::size_t 
     }
     // sum_q W_q X_q(i) Y_q(j) Z_q(k): one multiply-add per node and point.
     double* omega = rowOmega_.data();
+    if (lanes_)
+    {
+        SeparableLanes::row(rowFactor_.data(), points_, factor_[0].data() + first, n, count, omega);
+        return omega;
+    }
     const double r0 = rowFactor_[0];
     const double* f0 = factor_[0].data() + first;
     for (std::size_t i = 0; i < count; ++i)

@@ -30,8 +30,15 @@
 //    negligible-weight cut: t = negligibleWeight times a lower bound of the largest weight,
 //    the weight at the cut distance of P10), and the exact code drops nodes farther than
 //    the cut from the path, whose weights are below that too: at most t;
-//  - rounding: relative, below relativeRounding of (omega + E).
+//  - rounding: relative, below relativeRounding of (omega + E); besides, the exponents'
+//    arguments gamma (x - c)^2, rounded to ~3 ulp, add up to 3 u X exp(-X) <= 1.2e-16 of the
+//    peak per node (X = gamma (x - c)^2; docs/model.md P16: not counted in the bound).
 // chooseQuadrature turns these into a bound on the normalised weights (eq. 24) and picks Q.
+//
+// On CPUs with AVX2 + FMA (vectorised, the default) the tables' exponentials and the rows'
+// multiply-adds run four nodes per instruction (SeparableLanes): the same formulas with FMA
+// and the inline exp of BranchFreeExp.hpp (within 1.01 ulp), values within ~1e-16 relative
+// of the portable loops', inside the rounding allowance relativeRounding (docs/model.md P16).
 #pragma once
 
 #include "grid/PathWeight.hpp"
@@ -56,6 +63,13 @@ public:
     // Rounding of the per-node products and sums, relative to omega + E (a few ulp of up to
     // Q + 3 operations, with margin).
     static constexpr double relativeRounding = 1e-14;
+
+    // vectorised: the per-node loops in AVX2 + FMA (SeparableLanes) where the build and CPU
+    // have them (KernelSettings::vectorised, as DensityGrid::batchedKernel); false: the
+    // portable loops, the same results on every CPU.
+    explicit SeparableWeight(bool vectorised = true);
+    // True when the AVX2 + FMA loops are in use.
+    bool vectorised() const { return lanes_; }
 
     // B(Q, k): the quadrature's error per node (above) for Q points and k = sqrt(gamma) L.
     static double quadratureBound(int points, double k);
@@ -100,6 +114,7 @@ private:
     void axisTable(int d, const double* coordinate, int lo, int hi, double gamma,
                    const Eigen::Vector3d& start, const Eigen::Vector3d& displacement);
 
+    bool lanes_; // vectorised()
     int points_ = 0;
     std::array<std::size_t, 3> length_{};        // table length per axis
     std::array<std::vector<double>, 3> factor_;  // per axis, q-major

@@ -1,0 +1,224 @@
+// SeparableLanes: the separable weights' AVX2 + FMA loops (see SeparableLanes.hpp). The loops
+// are compiled for AVX2 + FMA (namespace avx2 between DROPLETFIBER_AVX2_BEGIN and END,
+// KernelBuild.hpp), the entry points below them for the build's target: they pass pointers
+// and doubles only.
+#include "grid/SeparableLanes.hpp"
+
+#include "grid/KernelBuild.hpp"
+#include "grid/PathWeightBatch.hpp"
+
+
+#if DROPLETFIBER_BATCHED_KERNEL
+
+#include "grid/BranchFreeExp.hpp"
+#include "grid/Lanes.hpp"
+
+#include <immintrin.h>
+
+DROPLETFIBER_AVX2_BEGIN
+
+namespace dropletFiber::avx2
+{
+
+namespace
+{
+
+// SeparableLanes::row for the 4 `blocks` nodes from position i on: the Q terms of each node
+// summed in a register (rowFactor[0] X_0 rounded, then one FMA per further point).
+template <int blocks>
+inline void rowBlocks(const double* rowFactor, int points, const double* factor, std::size_t stride,
+                      std::size_t i, double* omega)
+{
+    __m256d sum[blocks];
+    const __m256d first = _mm256_broadcast_sd(rowFactor);
+    for (int b = 0; b < blocks; ++b)
+    {
+        sum[b] = _mm256_mul_pd(first, _mm256_loadu_pd(factor + i + 4 * b));
+    }
+    for (int q = 1; q < points; ++q)
+    {
+        const __m256d r = _mm256_broadcast_sd(rowFactor + q);
+        const double* f = factor + static_cast<std::size_t>(q) * stride + i;
+        for (int b = 0; b < blocks; ++b)
+        {
+            sum[b] = _mm256_fmadd_pd(r, _mm256_loadu_pd(f + 4 * b), sum[b]);
+        }
+    }
+    for (int b = 0; b < blocks; ++b)
+    {
+        _mm256_storeu_pd(omega + i + 4 * b, sum[b]);
+    }
+}
+
+// The last `remaining` (1-3) nodes from position i on: the same operations in a register
+// whose other lanes are masked when loading (not read; they hold 0), stored lane by lane
+// (a masked store is slow on some CPUs: AMD Zen).
+inline void rowTail(const double* rowFactor, int points, const double* factor, std::size_t stride,
+                    std::size_t i, std::size_t remaining, double* omega)
+{
+    const __m256i mask = _mm256_cmpgt_epi64(_mm256_set1_epi64x(static_cast<long long>(remaining)),
+                                            _mm256_setr_epi64x(0, 1, 2, 3));
+    __m256d sum = _mm256_mul_pd(_mm256_broadcast_sd(rowFactor), _mm256_maskload_pd(factor + i, mask));
+    for (int q = 1; q < points; ++q)
+    {
+        const double* f = factor + static_cast<std::size_t>(q) * stride + i;
+        sum = _mm256_fmadd_pd(_mm256_broadcast_sd(rowFactor + q), _mm256_maskload_pd(f, mask), sum);
+    }
+    double lanes[4];
+    _mm256_storeu_pd(lanes, sum);
+    for (std::size_t lane = 0; lane < remaining; ++lane)
+    {
+        omega[i + lane] = lanes[lane];
+    }
+}
+
+void rowInLanes(const double* rowFactor, int points, const double* factor, std::size_t stride,
+                std::size_t count, double* omega)
+{
+    // 16 nodes per pass: four independent FMA chains hide the FMA's latency, and each
+    // point's factor is broadcast once per 16 nodes.
+    std::size_t i = 0;
+    for (; i + 16 <= count; i += 16)
+    {
+        rowBlocks<4>(rowFactor, points, factor, stride, i, omega);
+    }
+    for (; i + 4 <= count; i += 4)
+    {
+        rowBlocks<1>(rowFactor, points, factor, stride, i, omega);
+    }
+    if (i < count)
+    {
+        rowTail(rowFactor, points, factor, stride, i, count - i, omega);
+    }
+}
+
+void gaussianTableInLanes(const double* coordinate, std::size_t count, double centre, double gamma,
+                          double* table)
+{
+    const Lanes c = splat<Lanes>(centre);
+    const Lanes minusGamma = splat<Lanes>(-gamma);
+    std::size_t i = 0;
+    for (; i + laneCount <= count; i += laneCount)
+    {
+        const Lanes s = loadLanes(coordinate + i) - c;
+        storeLanes(table + i, branchFreeExp(minusGamma * s * s));
+    }
+    if (i < count)
+    {
+        // The last 1-3 entries through the same lane code (padded with the last one).
+        double x[laneCount], e[laneCount];
+        for (std::size_t lane = 0; lane < laneCount; ++lane)
+        {
+            x[lane] = coordinate[i + lane < count ? i + lane : count - 1];
+        }
+        const Lanes s = loadLanes(x) - c;
+        storeLanes(e, branchFreeExp(minusGamma * s * s));
+        for (std::size_t lane = 0; i + lane < count; ++lane)
+        {
+            table[i + lane] = e[lane];
+        }
+    }
+}
+
+// Four nodes' 28 values as 7 registers: lane l of register r is value m = 4 r + l, of node
+// m / 7 and quantity m % 7. The node's weight per lane, as vpermpd's selector.
+template <int r>
+constexpr int weightSelector()
+{
+    int selector = 0;
+    for (int lane = 0; lane < 4; ++lane)
+    {
+        selector |= ((4 * r + lane) / 7) << (2 * lane);
+    }
+    return selector;
+}
+
+template <int r>
+inline void addLanes(__m256d weights, const __m256d* totals, double* values)
+{
+    const __m256d w = _mm256_permute4x64_pd(weights, weightSelector<r>());
+    _mm256_storeu_pd(values + 4 * r, _mm256_fmadd_pd(w, totals[r], _mm256_loadu_pd(values + 4 * r)));
+}
+
+void addWeightedRowInLanes(const double* omega, std::size_t length, double inverseSum, const double* totals,
+                           double* values)
+{
+    constexpr std::size_t q7 = SeparableLanes::quantities;
+    static_assert(q7 == 7, "the lane pattern below is for 7 quantities");
+    __m256d pattern[q7]; // lane l of register r: totals[(4 r + l) % 7]
+    for (std::size_t r = 0; r < q7; ++r)
+    {
+        pattern[r] = _mm256_setr_pd(totals[(4 * r) % q7], totals[(4 * r + 1) % q7], totals[(4 * r + 2) % q7],
+                                    totals[(4 * r + 3) % q7]);
+    }
+    const __m256d scale = _mm256_set1_pd(inverseSum);
+    std::size_t i = 0;
+    for (; i + 4 <= length; i += 4, values += 4 * q7)
+    {
+        const __m256d weights = _mm256_mul_pd(_mm256_loadu_pd(omega + i), scale);
+        addLanes<0>(weights, pattern, values);
+        addLanes<1>(weights, pattern, values);
+        addLanes<2>(weights, pattern, values);
+        addLanes<3>(weights, pattern, values);
+        addLanes<4>(weights, pattern, values);
+        addLanes<5>(weights, pattern, values);
+        addLanes<6>(weights, pattern, values);
+    }
+    for (; i < length; ++i, values += q7)
+    {
+        // The same rounding per value: omega inverseSum, then one FMA.
+        const __m128d weight = _mm_mul_sd(_mm_set_sd(omega[i]), _mm_set_sd(inverseSum));
+        for (std::size_t q = 0; q < q7; ++q)
+        {
+            values[q] = _mm_cvtsd_f64(_mm_fmadd_sd(weight, _mm_set_sd(totals[q]), _mm_set_sd(values[q])));
+        }
+    }
+}
+
+} // namespace
+
+} // namespace dropletFiber::avx2
+
+DROPLETFIBER_AVX2_END
+
+#endif // DROPLETFIBER_BATCHED_KERNEL
+
+namespace dropletFiber
+{
+
+bool SeparableLanes::available()
+{
+    return PathWeightBatch::cpuSupported();
+}
+
+void SeparableLanes::row(const double* rowFactor, int points, const double* factor, std::size_t stride,
+                         std::size_t count, double* omega)
+{
+#if DROPLETFIBER_BATCHED_KERNEL
+    avx2::rowInLanes(rowFactor, points, factor, stride, count, omega);
+#else
+    (void)rowFactor, (void)points, (void)factor, (void)stride, (void)count, (void)omega;
+#endif
+}
+
+void SeparableLanes::gaussianTable(const double* coordinate, std::size_t count, double centre, double gamma,
+                                   double* table)
+{
+#if DROPLETFIBER_BATCHED_KERNEL
+    avx2::gaussianTableInLanes(coordinate, count, centre, gamma, table);
+#else
+    (void)coordinate, (void)count, (void)centre, (void)gamma, (void)table;
+#endif
+}
+
+void SeparableLanes::addWeightedRow(const double* omega, std::size_t length, double inverseSum,
+                                    const double* totals, double* values)
+{
+#if DROPLETFIBER_BATCHED_KERNEL
+    avx2::addWeightedRowInLanes(omega, length, inverseSum, totals, values);
+#else
+    (void)omega, (void)length, (void)inverseSum, (void)totals, (void)values;
+#endif
+}
+
+} // namespace dropletFiber
