@@ -354,19 +354,33 @@ void DensityGrid::deposit(const Parcel& parcel, double dt)
 double DensityGrid::depositedShare(const Parcel& parcel, double dt, const NodeBoxTest& asks,
                                    const NodeFraction& fraction, const IndexBox& region)
 {
+    StepStatistics unused;
+    WeightSink sink{unused, nullptr, &asks, &fraction, 0.0, region};
+    return shareOf(parcel, dt, sink);
+}
+
+double DensityGrid::depositedShare(const Parcel& parcel, double dt, const NodeBoxTest& asks,
+                                   const SparseNodeValues& fractions)
+{
+    StepStatistics unused;
+    const NodeFraction fraction = [&fractions](std::size_t node) { return fractions.at(node); };
+    WeightSink sink{unused, nullptr, &asks, &fraction, 0.0, fractions.box(), &fractions};
+    return shareOf(parcel, dt, sink);
+}
+
+double DensityGrid::shareOf(const Parcel& parcel, double dt, WeightSink& sink)
+{
     checkParcel(parcel, dt);
     if (parcel.nParticle == 0.0 || parcel.diameter == 0.0)
     {
         return 0.0;
     }
     // deposit()'s steps on their own statistics, the weights into the sum.
-    StepStatistics unused;
     ClippedPath path;
-    if (!clipPath(parcel, dt, parcelMass(parcel), unused, path))
+    if (!clipPath(parcel, dt, parcelMass(parcel), sink.statistics, path))
     {
         return 0.0;
     }
-    WeightSink sink{unused, nullptr, &asks, &fraction, 0.0, region};
     weighPath(parcel, path, sink);
     return path.fraction * sink.sum;
 }
@@ -623,6 +637,11 @@ double DensityGrid::prepareSeparable(const PathWeight& pathWeight, const Clipped
 
 void DensityGrid::sendSeparable(double inverseSum, const IndexBox& box, WeightSink& sink)
 {
+    if (sink.sparse != nullptr)
+    {
+        shareSeparable(inverseSum, box, sink);
+        return;
+    }
     if (!sink.accumulates())
     {
         // depositedShare: the nodes of the (folded) box that may have a fraction, the
@@ -673,6 +692,48 @@ void DensityGrid::sendSeparable(double inverseSum, const IndexBox& box, WeightSi
                  });
     sink.statistics.nodesWeighted += static_cast<std::int64_t>(stored.empty() ? 0 : stored.nodeCount());
     touch(box); // the stored part of it
+}
+
+void DensityGrid::shareSeparable(double inverseSum, const IndexBox& box, WeightSink& sink)
+{
+    // The sink's nodes inside the (folded) box, in node order: the terms the row-by-row
+    // sum over the box adds where the fraction is not 0, each weight the row's to the bit.
+    sink.sparse->forEachIn(box, spec_.nodes,
+                           [&](const NodeValue& node)
+                           {
+                               const double weight
+                                   = separable_.omega(node.index[0] - box.lo[0], node.index[1] - box.lo[1],
+                                                      node.index[2] - box.lo[2])
+                                   * inverseSum;
+                               if (weight > 0.0)
+                               {
+                                   sink.sum += weight * node.value;
+                                   ++sink.statistics.nodesWeighted;
+                               }
+                           });
+}
+
+void DensityGrid::shareWeighted(double inverseSum, WeightSink& sink)
+{
+    // scratch_ and the sink's nodes are both in node order: one pass over each.
+    const std::vector<NodeValue>& nodes = sink.sparse->nodes();
+    auto next = nodes.begin();
+    for (const auto& [node, omega] : scratch_)
+    {
+        while (next != nodes.end() && next->node < node)
+        {
+            ++next;
+        }
+        if (next == nodes.end())
+        {
+            break;
+        }
+        if (next->node == node)
+        {
+            sink.sum += omega * inverseSum * next->value;
+        }
+    }
+    sink.statistics.nodesWeighted += static_cast<std::int64_t>(scratch_.size());
 }
 
 double DensityGrid::listWeighted(const double* boxOmega, const IndexBox& box)
@@ -830,6 +891,11 @@ void DensityGrid::sendWeighted(double inverseSum, const IndexBox& box, WeightSin
                 values[q] += weight * parcelTotals[static_cast<std::size_t>(q)];
             }
         }
+    }
+    else if (sink.sparse != nullptr)
+    {
+        shareWeighted(inverseSum, sink);
+        return;
     }
     else
     {
