@@ -282,6 +282,13 @@ GridBlock checkedBlock(const GridSpec& spec, const GridBlock& block)
     return block;
 }
 
+// True when [lo, hi] holds an index congruent to offset modulo period (> 0).
+bool holdsMultiple(int lo, int hi, int period, int offset)
+{
+    const int ahead = ((offset - lo) % period + period) % period; // from lo to the next one
+    return lo + ahead <= hi;
+}
+
 } // namespace
 
 DensityGrid::DensityGrid(const GridSpec& spec, const KernelSettings& kernel, int windowLength)
@@ -409,16 +416,25 @@ IndexBox DensityGrid::depositBox(const Parcel& parcel, double dt) const
 
 IndexBox DensityGrid::foldedBox(const IndexBox& box) const
 {
+    // The mirror image is a tent of period 2 last: rising from 0 at the even multiples of
+    // last to last at the odd ones. Over [lo, hi] its least value is 0 where the range holds
+    // an even multiple, else at an end; its largest is last where it holds an odd one.
     IndexBox folded;
     for (int d = 0; d < 3; ++d)
     {
-        folded.lo[d] = spec_.nodes[d];
-        folded.hi[d] = -1;
-        for (int i = box.lo[d]; i <= box.hi[d]; ++i)
+        if (box.lo[d] > box.hi[d])
         {
-            folded.lo[d] = std::min(folded.lo[d], spec_.mirrorIndex(d, i));
-            folded.hi[d] = std::max(folded.hi[d], spec_.mirrorIndex(d, i));
+            folded.lo[d] = spec_.nodes[d];
+            folded.hi[d] = -1;
+            continue;
         }
+        const int a = spec_.mirrorIndex(d, box.lo[d]);
+        const int b = spec_.mirrorIndex(d, box.hi[d]);
+        const int last = spec_.nodes[d] - 1;
+        const bool holdsEven = last > 0 && holdsMultiple(box.lo[d], box.hi[d], 2 * last, 0);
+        const bool holdsOdd = last > 0 && holdsMultiple(box.lo[d], box.hi[d], 2 * last, last);
+        folded.lo[d] = holdsEven ? 0 : std::min(a, b);
+        folded.hi[d] = holdsOdd ? last : std::max(a, b);
     }
     return folded;
 }
