@@ -122,6 +122,7 @@ void CaptureLimit::clear()
     demand_.clear();
     granted_.clear();
     taken_.clear();
+    takenNodesStale_ = true;
     takenBox_ = IndexBox{};
     forgetTakenBricks();
 }
@@ -174,9 +175,11 @@ CaptureLimitReport CaptureLimit::limit(const DensityGrid& grid)
 {
     CaptureLimitReport report;
     taken_.clear();
+    takenNodesStale_ = true;
     takenBox_ = IndexBox{};
     forgetTakenBricks();
     const std::array<int, 3> nodes = grid.spec().nodes;
+    gridNodes_ = nodes;
     for (int d = 0; d < 3; ++d)
     {
         bricks_[static_cast<std::size_t>(d)]
@@ -216,6 +219,7 @@ CaptureLimitReport CaptureLimit::limit(const DensityGrid& grid)
 
 void CaptureLimit::markTaken(std::size_t node, const std::array<int, 3>& nodes)
 {
+    takenNodesStale_ = true;
     const auto nx = static_cast<std::size_t>(nodes[0]);
     const auto ny = static_cast<std::size_t>(nodes[1]);
     IndexBox one;
@@ -341,6 +345,7 @@ void CaptureLimit::setTakenFraction(std::size_t node, double fraction, const std
             = static_cast<std::size_t>((gridNodes[d] + brickSize - 1) / brickSize);
     }
     taken_[node] = fraction;
+    gridNodes_ = gridNodes;
     markTaken(node, gridNodes);
 }
 
@@ -382,9 +387,24 @@ double CaptureLimit::capturedFraction(DensityGrid& grid, const Parcel& parcel, d
     {
         return 0.0;
     }
-    const DensityGrid::NodeFraction fraction = [this](std::size_t node) { return takenFraction(node); };
     const DensityGrid::NodeBoxTest asks = [this](const IndexBox& box) { return mayTake(box); };
-    return std::min(1.0, grid.depositedShare(parcel, dt, asks, fraction, takenBox_));
+    return std::min(1.0, grid.depositedShare(parcel, dt, asks, takenNodes()));
+}
+
+const SparseNodeValues& CaptureLimit::takenNodes() const
+{
+    if (takenNodesStale_)
+    {
+        std::vector<NodeValue> nodes;
+        nodes.reserve(taken_.size());
+        for (const auto& [node, fraction] : taken_)
+        {
+            nodes.push_back(NodeValue{node, {}, fraction});
+        }
+        takenNodes_.assign(std::move(nodes), gridNodes_);
+        takenNodesStale_ = false;
+    }
+    return takenNodes_;
 }
 
 } // namespace dropletFiber

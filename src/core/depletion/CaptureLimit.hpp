@@ -37,6 +37,7 @@
 #include "collision/CollisionMass.hpp"
 #include "grid/DensityGrid.hpp"
 #include "grid/MultilinearWeights.hpp"
+#include "grid/SparseNodeValues.hpp"
 
 #include <Eigen/Core>
 
@@ -148,7 +149,8 @@ public:
     bool mayTake(const IndexBox& box) const;
     // c_p over the nodes this block owns (the whole grid: c_p itself), in [0, 1]. The same
     // parcel and dt as deposited this step. A parcel whose deposit nodes meet no brick
-    // with f_n > 0 costs a clip and a box, not its weights.
+    // with f_n > 0 costs a clip and a box, not its weights; the others' weights are
+    // evaluated at the nodes with f_n > 0 only (DensityGrid::depositedShare, sparse).
     double capturedFraction(DensityGrid& grid, const Parcel& parcel, double dt) const;
     static constexpr int brickSize = 4;
 
@@ -169,6 +171,12 @@ private:
     std::unordered_map<std::size_t, double> demand_;
     std::unordered_map<std::size_t, double> granted_; // g_n
     std::unordered_map<std::size_t, double> taken_;   // f_n > 0, owned nodes
+    // taken_ in node order with grid indices (capturedFraction's sums), built on first use
+    // after taken_ changed; 40 bytes per node with f_n > 0.
+    const SparseNodeValues& takenNodes() const;
+    mutable SparseNodeValues takenNodes_;
+    mutable bool takenNodesStale_ = true;
+    std::array<int, 3> gridNodes_{}; // the grid's nodes per direction (limit, setTakenFraction)
     IndexBox takenBox_;
     std::array<std::size_t, 3> bricks_{};     // per direction, over the grid
     std::vector<unsigned char> takenBrick_;   // per brick of the grid: 1 when it holds f_n > 0

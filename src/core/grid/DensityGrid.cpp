@@ -290,6 +290,13 @@ GridBlock checkedBlock(const GridSpec& spec, const GridBlock& block)
     return block;
 }
 
+// True when [lo, hi] holds an index congruent to offset modulo period (> 0).
+bool holdsMultiple(int lo, int hi, int period, int offset)
+{
+    const int ahead = ((offset - lo) % period + period) % period; // from lo to the next one
+    return lo + ahead <= hi;
+}
+
 } // namespace
 
 DensityGrid::DensityGrid(const GridSpec& spec, const KernelSettings& kernel, int windowLength)
@@ -362,19 +369,33 @@ void DensityGrid::deposit(const Parcel& parcel, double dt)
 double DensityGrid::depositedShare(const Parcel& parcel, double dt, const NodeBoxTest& asks,
                                    const NodeFraction& fraction, const IndexBox& region)
 {
+    StepStatistics unused;
+    WeightSink sink{unused, nullptr, &asks, &fraction, 0.0, region};
+    return shareOf(parcel, dt, sink);
+}
+
+double DensityGrid::depositedShare(const Parcel& parcel, double dt, const NodeBoxTest& asks,
+                                   const SparseNodeValues& fractions)
+{
+    StepStatistics unused;
+    const NodeFraction fraction = [&fractions](std::size_t node) { return fractions.at(node); };
+    WeightSink sink{unused, nullptr, &asks, &fraction, 0.0, fractions.box(), &fractions};
+    return shareOf(parcel, dt, sink);
+}
+
+double DensityGrid::shareOf(const Parcel& parcel, double dt, WeightSink& sink)
+{
     checkParcel(parcel, dt);
     if (parcel.nParticle == 0.0 || parcel.diameter == 0.0)
     {
         return 0.0;
     }
     // deposit()'s steps on their own statistics, the weights into the sum.
-    StepStatistics unused;
     ClippedPath path;
-    if (!clipPath(parcel, dt, parcelMass(parcel), unused, path))
+    if (!clipPath(parcel, dt, parcelMass(parcel), sink.statistics, path))
     {
         return 0.0;
     }
-    WeightSink sink{unused, nullptr, &asks, &fraction, 0.0, region};
     weighPath(parcel, path, sink);
     return path.fraction * sink.sum;
 }
@@ -403,16 +424,25 @@ IndexBox DensityGrid::depositBox(const Parcel& parcel, double dt) const
 
 IndexBox DensityGrid::foldedBox(const IndexBox& box) const
 {
+    // The mirror image is a tent of period 2 last: rising from 0 at the even multiples of
+    // last to last at the odd ones. Over [lo, hi] its least value is 0 where the range holds
+    // an even multiple, else at an end; its largest is last where it holds an odd one.
     IndexBox folded;
     for (int d = 0; d < 3; ++d)
     {
-        folded.lo[d] = spec_.nodes[d];
-        folded.hi[d] = -1;
-        for (int i = box.lo[d]; i <= box.hi[d]; ++i)
+        if (box.lo[d] > box.hi[d])
         {
-            folded.lo[d] = std::min(folded.lo[d], spec_.mirrorIndex(d, i));
-            folded.hi[d] = std::max(folded.hi[d], spec_.mirrorIndex(d, i));
+            folded.lo[d] = spec_.nodes[d];
+            folded.hi[d] = -1;
+            continue;
         }
+        const int a = spec_.mirrorIndex(d, box.lo[d]);
+        const int b = spec_.mirrorIndex(d, box.hi[d]);
+        const int last = spec_.nodes[d] - 1;
+        const bool holdsEven = last > 0 && holdsMultiple(box.lo[d], box.hi[d], 2 * last, 0);
+        const bool holdsOdd = last > 0 && holdsMultiple(box.lo[d], box.hi[d], 2 * last, last);
+        folded.lo[d] = holdsEven ? 0 : std::min(a, b);
+        folded.hi[d] = holdsOdd ? last : std::max(a, b);
     }
     return folded;
 }
@@ -631,6 +661,11 @@ double DensityGrid::prepareSeparable(const PathWeight& pathWeight, const Clipped
 
 void DensityGrid::sendSeparable(double inverseSum, const IndexBox& box, WeightSink& sink)
 {
+    if (sink.sparse != nullptr)
+    {
+        shareSeparable(inverseSum, box, sink);
+        return;
+    }
     if (!sink.accumulates())
     {
         // depositedShare: the nodes of the (folded) box that may have a fraction, the
@@ -681,6 +716,48 @@ void DensityGrid::sendSeparable(double inverseSum, const IndexBox& box, WeightSi
                  });
     sink.statistics.nodesWeighted += static_cast<std::int64_t>(stored.empty() ? 0 : stored.nodeCount());
     touch(box); // the stored part of it
+}
+
+void DensityGrid::shareSeparable(double inverseSum, const IndexBox& box, WeightSink& sink)
+{
+    // The sink's nodes inside the (folded) box, in node order: the terms the row-by-row
+    // sum over the box adds where the fraction is not 0, each weight the row's to the bit.
+    sink.sparse->forEachIn(box, spec_.nodes,
+                           [&](const NodeValue& node)
+                           {
+                               const double weight
+                                   = separable_.omega(node.index[0] - box.lo[0], node.index[1] - box.lo[1],
+                                                      node.index[2] - box.lo[2])
+                                   * inverseSum;
+                               if (weight > 0.0)
+                               {
+                                   sink.sum += weight * node.value;
+                                   ++sink.statistics.nodesWeighted;
+                               }
+                           });
+}
+
+void DensityGrid::shareWeighted(double inverseSum, WeightSink& sink)
+{
+    // scratch_ and the sink's nodes are both in node order: one pass over each.
+    const std::vector<NodeValue>& nodes = sink.sparse->nodes();
+    auto next = nodes.begin();
+    for (const auto& [node, omega] : scratch_)
+    {
+        while (next != nodes.end() && next->node < node)
+        {
+            ++next;
+        }
+        if (next == nodes.end())
+        {
+            break;
+        }
+        if (next->node == node)
+        {
+            sink.sum += omega * inverseSum * next->value;
+        }
+    }
+    sink.statistics.nodesWeighted += static_cast<std::int64_t>(scratch_.size());
 }
 
 double DensityGrid::listWeighted(const double* boxOmega, const IndexBox& box)
@@ -838,6 +915,11 @@ void DensityGrid::sendWeighted(double inverseSum, const IndexBox& box, WeightSin
                 values[q] += weight * parcelTotals[static_cast<std::size_t>(q)];
             }
         }
+    }
+    else if (sink.sparse != nullptr)
+    {
+        shareWeighted(inverseSum, sink);
+        return;
     }
     else
     {

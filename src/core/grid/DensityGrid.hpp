@@ -106,6 +106,7 @@
 #include "grid/PathWeight.hpp"
 #include "grid/PathWeightBatch.hpp"
 #include "grid/SeparableWeight.hpp"
+#include "grid/SparseNodeValues.hpp"
 #include "grid/StepStatistics.hpp"
 
 #include <Eigen/Core>
@@ -185,6 +186,12 @@ public:
     // there only (the same weights; the sum only skips terms that are 0).
     double depositedShare(const Parcel& parcel, double dt, const NodeBoxTest& asks,
                           const NodeFraction& fraction, const IndexBox& region);
+    // The same with the fractions of a few nodes (0 at the others; region: their box), to the
+    // bit: the sum skips only terms that are 0, and adds the others in the same order.
+    // Visits those nodes only: separable weights evaluated per node (SeparableWeight::omega),
+    // the exact code's weighted nodes merged with them (both in node order), no per-node call.
+    double depositedShare(const Parcel& parcel, double dt, const NodeBoxTest& asks,
+                          const SparseNodeValues& fractions);
     // A box (grid indices) holding every node deposit(parcel, dt) can give mass to: the
     // kernel's nodes (folded) and those of its cloud-in-cell fallback; empty when the
     // parcel gives the grid nothing. A parallel caller sends a parcel to the blocks whose
@@ -292,10 +299,13 @@ private:
         const NodeFraction* fraction;                  // depositedShare: per node
         double sum;                                    // depositedShare: sum weight * fraction
         IndexBox region;                               // depositedShare: nodes with a fraction
+        const SparseNodeValues* sparse = nullptr;      // depositedShare: the fractions, if sparse
         bool accumulates() const { return totals != nullptr; }
         bool wants(const IndexBox& box) const { return asks == nullptr || (!box.empty() && (*asks)(box)); }
     };
 
+    // depositedShare's steps: deposit()'s, the weights into the sink's sum.
+    double shareOf(const Parcel& parcel, double dt, WeightSink& sink);
     // Steps 1-2: clips the parcel's path and books the mass outside the box in stats; false
     // when nothing of the parcel is to be deposited.
     bool clipPath(const Parcel& parcel, double dt, double mass, StepStatistics& stats,
@@ -341,6 +351,10 @@ private:
     // into the sink. Accumulating: only the rows of the box inside the storage box, straight
     // into the accumulator's contiguous values (evaluation and accumulation fused).
     void sendSeparable(double inverseSum, const IndexBox& box, WeightSink& sink);
+    // sendSeparable for a sparse sink: omega at the sink's nodes inside the box only.
+    void shareSeparable(double inverseSum, const IndexBox& box, WeightSink& sink);
+    // sendWeighted for a sparse sink: scratch_'s nodes merged with the sink's (node order).
+    void shareWeighted(double inverseSum, WeightSink& sink);
     // The box's omegas (i fastest) -> scratch_ (omega > 0, node order; box inside the
     // grid). Returns their sum.
     double listWeighted(const double* boxOmega, const IndexBox& box);

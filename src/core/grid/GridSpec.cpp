@@ -131,19 +131,6 @@ double GridSpec::dualVolume(int i, int j, int k) const
     return std::ldexp(nodeVolume(), -boundaryDirections(i, j, k));
 }
 
-int GridSpec::mirrorIndex(int d, int index) const
-{
-    if (flat(d))
-    {
-        return 0;
-    }
-    const int last = nodes[d] - 1;
-    const int period = 2 * last;
-    int folded = index % period;
-    folded += folded < 0 ? period : 0;
-    return folded > last ? period - folded : folded;
-}
-
 std::size_t GridSpec::nodeCount() const
 {
     return static_cast<std::size_t>(nodes[0]) * static_cast<std::size_t>(nodes[1])

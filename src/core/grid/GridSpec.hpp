@@ -153,8 +153,19 @@ struct GridSpec
     // The node that lattice index `index` (any integer; the lattice lower[d] + index h[d]
     // extends beyond the box) maps to when the lattice is folded onto the box by mirroring
     // at its faces, repeatedly (period 2 (nodes - 1)): -1 -> 1, nodes -> nodes - 2, ...
-    // Flat directions: 0.
-    int mirrorIndex(int d, int index) const;
+    // Flat directions: 0. Inline: called per lattice index of every folded kernel box.
+    int mirrorIndex(int d, int index) const
+    {
+        if (flat(d))
+        {
+            return 0;
+        }
+        const int last = nodes[d] - 1;
+        const int period = 2 * last;
+        int folded = index % period;
+        folded += folded < 0 ? period : 0;
+        return folded > last ? period - folded : folded;
+    }
     std::size_t nodeCount() const;
     IndexBox fullBox() const;
 

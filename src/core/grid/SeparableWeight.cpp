@@ -199,6 +199,23 @@ const double* SeparableWeight::row(int j, int k, std::size_t first, std::size_t 
     return omega;
 }
 
+double SeparableWeight::omega(int i, int j, int k) const
+{
+    const std::size_t n = length_[0], ny = length_[1], nz = length_[2];
+    const auto x = static_cast<std::size_t>(i);
+    const auto y = static_cast<std::size_t>(j);
+    const auto z = static_cast<std::size_t>(k);
+    // row(): the row factor (W_q Y_q(j)) Z_q(k), then omega = r_0 X_0(i) + r_1 X_1(i) + ...
+    double value = weight_[0] * factor_[1][y] * factor_[2][z] * factor_[0][x];
+    for (int q = 1; q < points_; ++q)
+    {
+        const auto u = static_cast<std::size_t>(q);
+        const double r = weight_[u] * factor_[1][u * ny + y] * factor_[2][u * nz + z];
+        value += r * factor_[0][u * n + x];
+    }
+    return value;
+}
+
 double SeparableWeight::sum() const
 {
     double total = 0.0;

@@ -101,6 +101,10 @@ public:
     // The same for the `count` nodes from position `first` of the row on (a block's stored
     // part of it): the same values, to the bit, as those positions of row(j, k).
     const double* row(int j, int k, std::size_t first, std::size_t count);
+    // omega of the one node (i, j, k) of the (folded) box, positions relative to its lower
+    // corner: row()'s arithmetic in row()'s order, so the same value to the bit, at Q
+    // multiply-adds (depletion's sums over a few nodes, DensityGrid::depositedShare).
+    double omega(int i, int j, int k) const;
     // sum omega over the nodes of the (folded) box, eq. 24's normalising sum, itself
     // separable: sum_q W_q (sum_i X_q(i)) (sum_j Y_q(j)) (sum_k Z_q(k)), O(Q (nx + ny + nz))
     // instead of one addition per node. The per-axis sums are compensated (Neumaier), so the

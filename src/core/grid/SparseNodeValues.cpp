@@ -1,0 +1,48 @@
+#include "grid/SparseNodeValues.hpp"
+
+#include <algorithm>
+
+namespace dropletFiber
+{
+
+void SparseNodeValues::assign(std::vector<NodeValue> nodes, const std::array<int, 3>& gridNodes)
+{
+    const auto nx = static_cast<std::size_t>(gridNodes[0]);
+    const auto ny = static_cast<std::size_t>(gridNodes[1]);
+    for (NodeValue& entry : nodes)
+    {
+        entry.index = {{static_cast<int>(entry.node % nx), static_cast<int>((entry.node / nx) % ny),
+                        static_cast<int>(entry.node / (nx * ny))}};
+    }
+    // Stable: of several entries of a node the last one given is kept (an overwritten value).
+    std::stable_sort(nodes.begin(), nodes.end(),
+                     [](const NodeValue& x, const NodeValue& y) { return x.node < y.node; });
+    nodes_.clear();
+    box_ = IndexBox{};
+    for (const NodeValue& entry : nodes)
+    {
+        if (!nodes_.empty() && nodes_.back().node == entry.node)
+        {
+            nodes_.back() = entry;
+            continue;
+        }
+        nodes_.push_back(entry);
+        IndexBox one;
+        one.lo = one.hi = entry.index;
+        box_ = box_.united(one);
+    }
+}
+
+double SparseNodeValues::at(std::size_t node) const
+{
+    const auto entry = lowerBound(node);
+    return entry != nodes_.end() && entry->node == node ? entry->value : 0.0;
+}
+
+std::vector<NodeValue>::const_iterator SparseNodeValues::lowerBound(std::size_t node) const
+{
+    return std::lower_bound(nodes_.begin(), nodes_.end(), node,
+                            [](const NodeValue& entry, std::size_t n) { return entry.node < n; });
+}
+
+} // namespace dropletFiber
