@@ -12,10 +12,16 @@
 //   batched  : method exact, vectorised true (AVX2 + FMA where the CPU has it)
 //   separable: method automatic (SeparableWeight where chosen; the share of parcels that
 //              took it is printed)
+//   floor    : no weights at all: the seven quantities of each parcel added with a constant
+//              weight into every node of its deposit box (DensityGrid::depositBox, the folded
+//              box) of an array laid out as the grid's accumulator: what adding into the
+//              accumulator alone costs, the least any deposit that adds every box node pays
+//              (the per-node code adds only the nodes within the cut, about pi/6 of a 3D box)
 // Printed: ns per parcel (best of the repeats, and the spread (slowest - fastest) /
 // fastest), ns per node touched (box nodes: StepStatistics::nodesVisited), the kernel's
-// reach after the negligible-weight cut in spacings, and the speed-up of separable over per
-// node. The three columns run interleaved (A B C A B C ...). Figures, not a test.
+// reach after the negligible-weight cut in spacings, the speed-up of separable over per
+// node, and per node over the floor: the most a deposit adding every box node could gain
+// over it. The four columns run interleaved (A B C D A B C D ...). Figures, not a test.
 //
 // Usage: wideKernelBench [--repeats N] [--seconds S] [--spacing MM]
 //   --repeats  interleaved rounds (default 3)
@@ -107,6 +113,40 @@ Run depositAll(DensityGrid& grid, const std::vector<Parcel>& parcels)
     return {seconds, grid.lastStepStatistics()};
 }
 
+// The floor column: each parcel's seven totals (any values: a constant weight times fixed
+// totals) added into every node of its deposit box, in the grid's accumulator layout.
+double accumulateOnly(const DensityGrid& grid, const std::vector<Parcel>& parcels,
+                      std::vector<double>& values)
+{
+    const std::array<int, 3>& nodes = grid.spec().nodes;
+    const double totals[nQuantities] = {1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0};
+    const double start = bench::Clock::now();
+    for (const Parcel& p : parcels)
+    {
+        const IndexBox box = grid.depositBox(p, dt);
+        for (int k = box.lo[2]; k <= box.hi[2]; ++k)
+        {
+            for (int j = box.lo[1]; j <= box.hi[1]; ++j)
+            {
+                const std::size_t first = (static_cast<std::size_t>(k) * static_cast<std::size_t>(nodes[1])
+                                           + static_cast<std::size_t>(j))
+                        * static_cast<std::size_t>(nodes[0])
+                    + static_cast<std::size_t>(box.lo[0]);
+                double* v = values.data() + first * nQuantities;
+                const std::size_t count = static_cast<std::size_t>(box.hi[0] - box.lo[0] + 1);
+                for (std::size_t i = 0; i < count * nQuantities; i += nQuantities)
+                {
+                    for (int q = 0; q < nQuantities; ++q)
+                    {
+                        v[i + static_cast<std::size_t>(q)] += 1e-3 * totals[q];
+                    }
+                }
+            }
+        }
+    }
+    return bench::secondsSince(start);
+}
+
 // The kernel's reach after the negligible-weight cut (P10) in node spacings, and its width
 // (eq. 16) in spacings.
 std::pair<double, double> kernelInSpacings(const Row& row)
@@ -137,8 +177,9 @@ void benchRow(const Row& row, int repeats, double targetSeconds)
     const int count
         = static_cast<int>(std::clamp(targetSeconds / std::max(probe.seconds, 1e-9), 1.0, 4000.0));
     const std::vector<Parcel> parcels = makeParcels(row, count);
-    std::vector<std::vector<double>> seconds(3);
+    std::vector<std::vector<double>> seconds(4);
     std::vector<StepStatistics> statistics(3);
+    std::vector<double> accumulator(grids[0].stepValues().size(), 0.0);
     for (int r = 0; r < repeats; ++r)
     {
         for (int column = 0; column < 3; ++column)
@@ -147,13 +188,14 @@ void benchRow(const Row& row, int repeats, double targetSeconds)
             seconds[static_cast<std::size_t>(column)].push_back(run.seconds);
             statistics[static_cast<std::size_t>(column)] = run.statistics;
         }
+        seconds[3].push_back(accumulateOnly(grids[0], parcels, accumulator));
     }
     const double nodes = static_cast<double>(statistics[0].nodesVisited);
     const auto [reach, width] = kernelInSpacings(row);
     std::printf("%4.1f %4.0f %5.0f %-4s %6d %7.1f %7.2f |", row.spacing * 1e3, row.radius * 1e6, row.n,
                 row.moving ? "mov" : "sta", count, reach, width);
-    double best[3];
-    for (int column = 0; column < 3; ++column)
+    double best[4];
+    for (int column = 0; column < 4; ++column)
     {
         const std::vector<double>& s = seconds[static_cast<std::size_t>(column)];
         best[column] = *std::min_element(s.begin(), s.end());
@@ -162,7 +204,8 @@ void benchRow(const Row& row, int repeats, double targetSeconds)
                     spread);
     }
     const double separableShare = static_cast<double>(statistics[2].parcelsSeparable) / count;
-    std::printf(" %5.1fx %5.1fx %4.0f%%\n", best[0] / best[2], best[1] / best[2], 100.0 * separableShare);
+    std::printf(" %5.1fx %5.1fx %4.0f%% %5.1fx\n", best[0] / best[2], best[1] / best[2],
+                100.0 * separableShare, best[0] / best[3]);
     std::fflush(stdout);
 }
 

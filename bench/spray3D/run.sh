@@ -5,9 +5,14 @@
 # time and the widest kernels the function object reported: the cost of spray
 # parcels of many droplets (docs/performance.md, wide kernels).
 #
-# Usage: bench/spray3D/run.sh [libDir]
-#   libDir   folder with the libdropletFiber.so to measure (default: the one
-#            ./Allwmake built, $FOAM_USER_LIBBIN)
+# Usage: bench/spray3D/run.sh [-baseline] [libDir]
+#   libDir     folder with the libdropletFiber.so to measure (default: the one
+#              ./Allwmake built, $FOAM_USER_LIBBIN)
+#   -baseline  also run the same case without the function object (the cloud and
+#              the air unchanged) and print the whole function object's cost as
+#              the difference of the two runs' ExecutionTime (CPU time): every
+#              part, the writes at write times included, which the table's
+#              per-step columns do not hold
 # Environment: SPRAY3D_DIR scratch folder (default: a new mktemp -d folder),
 #              SPRAY3D_END end time in s (default 0.2: 400 steps)
 #
@@ -30,6 +35,11 @@ root="$(cd "$here/../.." && pwd)"
 # shellcheck disable=SC1091
 . "$root/bin/functions.sh"
 loadFoamEnvironment
+baseline=false
+if [ "${1:-}" = -baseline ]; then
+    baseline=true
+    shift
+fi
 lib="${1:-$FOAM_USER_LIBBIN}"
 [ -f "$lib/libdropletFiber.so" ] || die "no libdropletFiber.so in $lib"
 lib="$(cd "$lib" && pwd)"
@@ -118,3 +128,24 @@ for i, line in enumerate(lines):
 if not shown:
     print("    (none: is this build older than the deposit report?)")
 PY
+
+if [ "$baseline" = true ]; then
+    # The same case without the coupling: the function object's whole cost is the
+    # difference of the CPU times (writes included); reported, not judged.
+    with="$(sed -n 's/^ExecutionTime = \([0-9.eE+-]*\) s.*/\1/p' log.pimpleFoam | tail -1)"
+    cp system/controlDict system/controlDict.full
+    foamDictionary -entry functions/dropletFiber -remove system/controlDict > /dev/null
+    ! grep -q dropletFiberCollision system/controlDict \
+        || die "spray3D: could not remove the dropletFiber function object"
+    rm -rf 0.[0-9]* [1-9]* postProcessing
+    pimpleFoam > log.pimpleFoam.baseline 2>&1 \
+        || die "spray3D: the run without the function object failed, see $dir/log.pimpleFoam.baseline"
+    cp system/controlDict.full system/controlDict
+    without="$(sed -n 's/^ExecutionTime = \([0-9.eE+-]*\) s.*/\1/p' log.pimpleFoam.baseline | tail -1)"
+    python3 - "$with" "$without" <<'PY'
+import sys
+w, wo = map(float, sys.argv[1:3])
+print(f"  without the function object: ExecutionTime {wo:.2f} s; with it {w:.2f} s:"
+      f" the whole function object {w - wo:.2f} s = {100 * (w - wo) / w:.1f} % of ExecutionTime")
+PY
+fi
