@@ -373,8 +373,12 @@ bool CaptureLimit::mayReach(const GridSpec& spec, const KernelSettings& kernel, 
         const double b = (std::max(start[d], end[d]) + grown - spec.lower[d]) / h;
         reached.lo[d] = static_cast<int>(std::max(std::floor(a), -1.0));
         reached.hi[d] = static_cast<int>(std::min(std::ceil(b), static_cast<double>(spec.nodes[d])));
+        if (reached.hi[d] < takenBox_.lo[d] || reached.lo[d] > takenBox_.hi[d])
+        {
+            return false; // most parcels, far from the fibers: no box arithmetic
+        }
     }
-    return !reached.intersected(takenBox_).empty() && mayTake(reached.intersected(spec.fullBox()));
+    return mayTake(reached.intersected(spec.fullBox()));
 }
 
 double CaptureLimit::capturedFraction(DensityGrid& grid, const Parcel& parcel, double dt) const

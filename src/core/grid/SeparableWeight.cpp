@@ -44,6 +44,34 @@ const UnitRules& unitRules()
     return rules;
 }
 
+// The parts of the bound that depend on Q alone, per Q (computed once: chooseQuadrature
+// runs per wide parcel, in the deposit and again in the removal).
+struct BoundTerms
+{
+    std::array<double, SeparableWeight::maximumPoints + 1> logFactorialQ{};
+    std::array<double, SeparableWeight::maximumPoints + 1> logFactorial2Q{};
+    std::array<double, SeparableWeight::maximumPoints + 1> log2QPlus1{};
+    double log4 = 0.0;
+};
+
+const BoundTerms& boundTerms()
+{
+    static const BoundTerms terms = []
+    {
+        BoundTerms t;
+        for (int n = 1; n <= SeparableWeight::maximumPoints; ++n)
+        {
+            const double q = n;
+            t.logFactorialQ[static_cast<std::size_t>(n)] = std::lgamma(q + 1.0);
+            t.logFactorial2Q[static_cast<std::size_t>(n)] = std::lgamma(2.0 * q + 1.0);
+            t.log2QPlus1[static_cast<std::size_t>(n)] = std::log(2.0 * q + 1.0);
+        }
+        t.log4 = std::log(4.0);
+        return t;
+    }();
+    return terms;
+}
+
 } // namespace
 
 SeparableWeight::SeparableWeight(bool vectorised) : lanes_(vectorised && SeparableLanes::available()) {}
@@ -52,14 +80,19 @@ double SeparableWeight::quadratureBound(int points, double k)
 {
     // In logarithms: (2Q)! reaches 1e25 at Q = 12.
     const double q = points;
-    const double logFactorialQ = std::lgamma(q + 1.0);
-    const double logFactorial2Q = std::lgamma(2.0 * q + 1.0);
     if (!(k > 0.0))
     {
         return 0.0;
     }
-    const double logBound = 2.0 * q * std::log(k) + 0.5 * (q * std::log(4.0) + logFactorial2Q)
-        + 4.0 * logFactorialQ - std::log(2.0 * q + 1.0) - 3.0 * logFactorial2Q;
+    // The same values from the table for the Q chooseQuadrature tries, computed otherwise
+    const BoundTerms& terms = boundTerms();
+    const bool tabled = points >= 1 && points <= maximumPoints;
+    const auto u = static_cast<std::size_t>(tabled ? points : 0);
+    const double logFactorialQ = tabled ? terms.logFactorialQ[u] : std::lgamma(q + 1.0);
+    const double logFactorial2Q = tabled ? terms.logFactorial2Q[u] : std::lgamma(2.0 * q + 1.0);
+    const double log2QPlus1 = tabled ? terms.log2QPlus1[u] : std::log(2.0 * q + 1.0);
+    const double logBound = 2.0 * q * std::log(k) + 0.5 * (q * terms.log4 + logFactorial2Q)
+        + 4.0 * logFactorialQ - log2QPlus1 - 3.0 * logFactorial2Q;
     return cramerConstant * std::exp(logBound);
 }
 

@@ -35,13 +35,14 @@ void SparseNodeValues::assign(std::vector<NodeValue> nodes, const std::array<int
 
 double SparseNodeValues::at(std::size_t node) const
 {
-    const auto entry = lowerBound(node);
+    const auto entry = lowerBound(nodes_.begin(), node);
     return entry != nodes_.end() && entry->node == node ? entry->value : 0.0;
 }
 
-std::vector<NodeValue>::const_iterator SparseNodeValues::lowerBound(std::size_t node) const
+std::vector<NodeValue>::const_iterator
+SparseNodeValues::lowerBound(std::vector<NodeValue>::const_iterator from, std::size_t node) const
 {
-    return std::lower_bound(nodes_.begin(), nodes_.end(), node,
+    return std::lower_bound(from, nodes_.end(), node,
                             [](const NodeValue& entry, std::size_t n) { return entry.node < n; });
 }
 

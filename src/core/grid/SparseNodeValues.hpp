@@ -36,7 +36,8 @@ public:
     // The value at a node (0 where none is held): a binary search.
     double at(std::size_t node) const;
     // The held nodes inside the box (grid indices, within the grid of `gridNodes` nodes per
-    // direction), in node order: the range between the box's first and last node, filtered.
+    // direction), in node order: per layer k of the box, the range between its first and last
+    // node, filtered.
     template <class F>
     void forEachIn(const IndexBox& box, const std::array<int, 3>& gridNodes, F&& f) const
     {
@@ -45,19 +46,25 @@ public:
         {
             return;
         }
-        const std::size_t first = flatNodeIndex(gridNodes, asked.lo[0], asked.lo[1], asked.lo[2]);
-        const std::size_t last = flatNodeIndex(gridNodes, asked.hi[0], asked.hi[1], asked.hi[2]);
-        for (auto n = lowerBound(first); n != nodes_.end() && n->node <= last; ++n)
+        auto n = nodes_.begin();
+        for (int k = asked.lo[2]; k <= asked.hi[2]; ++k)
         {
-            if (asked.holds(n->index[0], n->index[1], n->index[2]))
+            const std::size_t first = flatNodeIndex(gridNodes, asked.lo[0], asked.lo[1], k);
+            const std::size_t last = flatNodeIndex(gridNodes, asked.hi[0], asked.hi[1], k);
+            for (n = lowerBound(n, first); n != nodes_.end() && n->node <= last; ++n)
             {
-                f(*n);
+                if (asked.holds(n->index[0], n->index[1], n->index[2]))
+                {
+                    f(*n);
+                }
             }
         }
     }
 
 private:
-    std::vector<NodeValue>::const_iterator lowerBound(std::size_t node) const;
+    // The first node >= node, from `from` on.
+    std::vector<NodeValue>::const_iterator lowerBound(std::vector<NodeValue>::const_iterator from,
+                                                      std::size_t node) const;
 
     std::vector<NodeValue> nodes_;
     IndexBox box_;

@@ -54,6 +54,7 @@ void Foam::dropletFiber::cloudParcels::clear()
     rho.clear();
     origProc.clear();
     origId.clear();
+    address.clear();
 }
 
 
@@ -118,6 +119,10 @@ void Foam::dropletFiber::cloudParcels::append
     // Not written back (depleteKinematic): no identity needed
     origProc.append(labelList(cloudRho.size(), -1));
     origId.append(labelList(cloudRho.size(), -1));
+    for (label i = 0; i < cloudRho.size(); ++i)
+    {
+        address.append(nullptr);
+    }
 }
 
 

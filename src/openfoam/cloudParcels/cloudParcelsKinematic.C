@@ -52,8 +52,10 @@ bool appendIfCloudOf
     parcels.rho.reserve(n);
     parcels.origProc.reserve(n);
     parcels.origId.reserve(n);
+    parcels.address.reserve(n);
     for (const ParcelType& p : *typed)
     {
+        parcels.address.append(&p);
         parcels.origProc.append(p.origProc());
         parcels.origId.append(p.origId());
         const Foam::KinematicParcel<Foam::particle>& k = p;
@@ -73,7 +75,8 @@ bool depleteIfCloudOf
 (
     Foam::cloud& c,
     const Foam::scalar* capturedFraction,
-    const Foam::label count
+    const Foam::label count,
+    const Foam::particle* const* address
 )
 {
     auto* typed = dynamic_cast<Foam::Cloud<ParcelType>*>(&c);
@@ -89,11 +92,15 @@ bool depleteIfCloudOf
             << " step: the captured droplets cannot be matched to its"
             << " parcels." << Foam::exit(Foam::FatalError);
     }
-    Foam::DynamicList<ParcelType*> emptied;
-    Foam::label i = 0;
-    for (ParcelType& p : *typed)
+    bool addressed = address != nullptr;
+    for (Foam::label i = 0; i < count && addressed; ++i)
     {
-        const Foam::scalar f = capturedFraction[i++];
+        addressed = address[i] != nullptr;
+    }
+    Foam::DynamicList<ParcelType*> emptied;
+    // The parcel of the i-th fraction, in the cloud's order either way
+    const auto deplete = [&](ParcelType& p, const Foam::scalar f)
+    {
         Foam::KinematicParcel<Foam::particle>& k = p;
         if (f >= 1)
         {
@@ -102,6 +109,33 @@ bool depleteIfCloudOf
         else if (f > 0)
         {
             k.nParticle() *= 1 - f;
+        }
+    };
+    if (addressed)
+    {
+        // Only the parcels that lost droplets (gathered this step from
+        // this cloud, which has not changed since: its type is ParcelType)
+        for (Foam::label i = 0; i < count; ++i)
+        {
+            if (capturedFraction[i] > 0)
+            {
+                deplete
+                (
+                    *static_cast<ParcelType*>
+                    (
+                        const_cast<Foam::particle*>(address[i])
+                    ),
+                    capturedFraction[i]
+                );
+            }
+        }
+    }
+    else
+    {
+        Foam::label i = 0;
+        for (ParcelType& p : *typed)
+        {
+            deplete(p, capturedFraction[i++]);
         }
     }
     for (ParcelType* p : emptied)
@@ -177,13 +211,23 @@ bool Foam::dropletFiber::cloudParcels::depleteKinematic
 (
     cloud& c,
     const scalar* capturedFraction,
-    const label count
+    const label count,
+    const particle* const* address
 )
 {
     return
-        depleteIfCloudOf<basicKinematicCollidingParcel>(c, capturedFraction, count)
-     || depleteIfCloudOf<basicKinematicParcel>(c, capturedFraction, count)
-     || depleteIfCloudOf<basicKinematicMPPICParcel>(c, capturedFraction, count);
+        depleteIfCloudOf<basicKinematicCollidingParcel>
+        (
+            c, capturedFraction, count, address
+        )
+     || depleteIfCloudOf<basicKinematicParcel>
+        (
+            c, capturedFraction, count, address
+        )
+     || depleteIfCloudOf<basicKinematicMPPICParcel>
+        (
+            c, capturedFraction, count, address
+        );
 }
 
 Foam::label Foam::dropletFiber::cloudParcels::applyRemoval

@@ -146,7 +146,12 @@ void Foam::functionObjects::dropletFiberCollision::writeBackToClouds
         (
             dropletFiber::cloudParcels::depleteKinematic
             (
-                c, fraction.data() + start, end - start
+                c,
+                fraction.data() + start,
+                end - start,
+                parcels_.address.size() == parcels_.size()
+              ? parcels_.address.cdata() + start
+              : nullptr
             )
         )
         {
