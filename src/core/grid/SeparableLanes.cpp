@@ -7,7 +7,6 @@
 #include "grid/KernelBuild.hpp"
 #include "grid/PathWeightBatch.hpp"
 
-
 #if DROPLETFIBER_BATCHED_KERNEL
 
 #include "grid/BranchFreeExp.hpp"

@@ -138,7 +138,7 @@ void SeparableWeight::prepare(const PathWeight& path, const Eigen::Vector3d& sta
         axisTable(d, coordinates[static_cast<std::size_t>(d)], lo[static_cast<std::size_t>(d)],
                   hi[static_cast<std::size_t>(d)], path.kernel().gamma(), start, displacement);
     }
-    rowOmega_.resize(length_[0]);
+    prepareRows();
 }
 
 void SeparableWeight::axisTable(int d, const double* coordinate, int lo, int hi, double gamma,
@@ -186,7 +186,7 @@ void SeparableWeight::fold(const std::array<std::vector<int>, 3>& image, const s
         factor_[d].swap(folded_[d]);
         length_[d] = m;
     }
-    rowOmega_.resize(length_[0]);
+    prepareRows();
 }
 
 const double* SeparableWeight::row(int j, int k)
@@ -196,16 +196,18 @@ const double* SeparableWeight::row(int j, int k)
 
 const double* SeparableWeight::row(int j, int k, std::size_t first, std::size_t count)
 {
-    const std::size_t n = length_[0], ny = length_[1], nz = length_[2];
-    if (first + count > n)
+    const std::size_t n = length_[0];
+    if (first + count > n || static_cast<std::size_t>(j) >= length_[1]
+        || static_cast<std::size_t>(k) >= length_[2])
     {
-        throw std::out_of_range("SeparableWeight::row: positions beyond the row");
+        throw std::out_of_range("SeparableWeight::row: a row or positions beyond the box");
     }
-    for (int q = 0; q < points_; ++q)
+    const auto points = static_cast<std::size_t>(points_);
+    const double* y = pointMajor_[0].data() + static_cast<std::size_t>(j) * points;
+    const double* z = pointMajor_[1].data() + static_cast<std::size_t>(k) * points;
+    for (std::size_t q = 0; q < points; ++q)
     {
-        const auto u = static_cast<std::size_t>(q);
-        rowFactor_[u] = weight_[u] * factor_[1][u * ny + static_cast<std::size_t>(j)]
-            * factor_[2][u * nz + static_cast<std::size_t>(k)];
+        rowFactor_[q] = weight_[q] * y[q] * z[q];
     }
     // sum_q W_q X_q(i) Y_q(j) Z_q(k): one multiply-add per node and point.
     double* omega = rowOmega_.data();
@@ -238,15 +240,34 @@ double SeparableWeight::omega(int i, int j, int k) const
     const auto x = static_cast<std::size_t>(i);
     const auto y = static_cast<std::size_t>(j);
     const auto z = static_cast<std::size_t>(k);
-    // row(): the row factor (W_q Y_q(j)) Z_q(k), then omega = r_0 X_0(i) + r_1 X_1(i) + ...
+    // row(): the row factor (W_q Y_q(j)) Z_q(k), then omega = r_0 X_0(i) + r_1 X_1(i) + ...,
+    // each term fused (one rounding) where row() runs in lanes, as SeparableLanes::row does.
     double value = weight_[0] * factor_[1][y] * factor_[2][z] * factor_[0][x];
     for (int q = 1; q < points_; ++q)
     {
         const auto u = static_cast<std::size_t>(q);
         const double r = weight_[u] * factor_[1][u * ny + y] * factor_[2][u * nz + z];
-        value += r * factor_[0][u * n + x];
+        value = lanes_ ? std::fma(r, factor_[0][u * n + x], value) : value + r * factor_[0][u * n + x];
     }
     return value;
+}
+
+void SeparableWeight::prepareRows()
+{
+    rowOmega_.resize(length_[0]);
+    const auto points = static_cast<std::size_t>(points_);
+    for (std::size_t d = 1; d < 3; ++d)
+    {
+        std::vector<double>& to = pointMajor_[d - 1];
+        to.resize(length_[d] * points);
+        for (std::size_t q = 0; q < points; ++q)
+        {
+            for (std::size_t i = 0; i < length_[d]; ++i)
+            {
+                to[i * points + q] = factor_[d][q * length_[d] + i];
+            }
+        }
+    }
 }
 
 double SeparableWeight::sum() const

@@ -117,6 +117,8 @@ private:
     // The Gaussian factors of one axis, q-major: exp(-gamma (x_i - c_q,d)^2).
     void axisTable(int d, const double* coordinate, int lo, int hi, double gamma,
                    const Eigen::Vector3d& start, const Eigen::Vector3d& displacement);
+    // After prepare() or fold(): the row's working memory and pointMajor_.
+    void prepareRows();
 
     bool lanes_; // vectorised()
     int points_ = 0;
@@ -125,6 +127,9 @@ private:
     std::array<std::vector<double>, 3> folded_;  // folding's working copy
     std::array<double, maximumPoints> tau_{};    // Gauss-Legendre points in [0, 1]
     std::array<double, maximumPoints> weight_{}; // their weights, summing to 1
+    // The y and z tables point-major (index i of axis d at [i Q + q]), so that a row's Q
+    // factors W_q Y_q(j) Z_q(k) are read contiguously (per row, not per node).
+    std::array<std::vector<double>, 2> pointMajor_;
     std::array<double, maximumPoints> rowFactor_{};
     std::vector<double> rowOmega_;
 };

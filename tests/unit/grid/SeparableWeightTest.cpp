@@ -10,8 +10,9 @@
 //  - narrow kernels, method Exact, and kernels whose bound cannot be met keep the exact code;
 //  - the normalising sum from the per-axis sums (P17) against the node-by-node sum from the
 //    definition, before and after folding; blocks tiling the grid, each weighing only its
-//    stored rows, hold the whole grid's deposit to the bit; depositedShare (depletion) gives
-//    the weights deposit() put on the nodes.
+//    stored rows, hold the whole grid's deposit to the bit, with the AVX2 + FMA loops
+//    (SeparableLanes) and with the portable ones, which agree to 1e-14; depositedShare
+//    (depletion) gives the weights deposit() put on the nodes.
 #include "grid/DensityGrid.hpp"
 #include "grid/GaussLegendre.hpp"
 #include "grid/SeparableWeight.hpp"
@@ -427,12 +428,18 @@ TEST(SeparableWeight, NormalisingSumFromTheAxisSumsIsTheSumOfTheNodeWeights)
     EXPECT_NEAR(folded, direct, 1e-14 * direct);
 }
 
-TEST(SeparableWeight, BlocksTilingTheGridStoreTheWholeGridsDepositToTheBit)
+namespace
 {
-    // Four blocks tiling the 3D grid, each depositing every parcel on its stored nodes (the
-    // first by deposit, the others as copies): each stored node holds the whole grid's
-    // value to the bit (the same weights, added in the same order), and the blocks' masses
-    // add up to the whole grid's.
+
+// Four blocks tiling the 3D grid, each depositing every parcel on its stored nodes (the
+// first by deposit, the others as copies): each stored node holds the whole grid's value to
+// the bit (the same weights, added in the same order), and the blocks' masses add up to the
+// whole grid's. vectorised: the AVX2 + FMA loops (SeparableLanes) where the CPU has them, or
+// the portable ones.
+void blocksHoldTheWholeGridsDeposit(bool vectorised)
+{
+    KernelSettings settings = settingsWith(DepositMethod::Automatic, KernelSettings{}.negligibleWeight);
+    settings.vectorised = vectorised;
     const GridSpec spec = grid3D();
     const int splitI = 8, splitK = 4;
     std::vector<GridBlock> blocks;
@@ -447,12 +454,11 @@ TEST(SeparableWeight, BlocksTilingTheGridStoreTheWholeGridsDepositToTheBit)
             blocks.push_back(block);
         }
     }
-    DensityGrid whole(spec, settingsWith(DepositMethod::Automatic, KernelSettings{}.negligibleWeight));
+    DensityGrid whole(spec, settings);
     std::vector<DensityGrid> parts;
     for (const GridBlock& block : blocks)
     {
-        parts.emplace_back(spec, settingsWith(DepositMethod::Automatic, KernelSettings{}.negligibleWeight), 1,
-                           block);
+        parts.emplace_back(spec, settings, 1, block);
     }
     std::mt19937_64 random(23);
     for (int p = 0; p < 30; ++p)
@@ -489,6 +495,40 @@ TEST(SeparableWeight, BlocksTilingTheGridStoreTheWholeGridsDepositToTheBit)
     }
     const double massOnGrid = whole.stepStatistics().massDeposited;
     EXPECT_NEAR(partsMass, massOnGrid, 1e-12 * massOnGrid);
+}
+
+} // namespace
+
+TEST(SeparableWeight, BlocksTilingTheGridStoreTheWholeGridsDepositToTheBit)
+{
+    blocksHoldTheWholeGridsDeposit(true);
+    blocksHoldTheWholeGridsDeposit(false);
+}
+
+TEST(SeparableWeight, PortableAndAvx2LoopsAgreeToRoundOff)
+{
+    // The same wide parcels with the AVX2 + FMA loops (where the CPU has them) and the
+    // portable ones: the same nodes, values within 1e-14 of each quantity's largest (FMA
+    // and the inline exp: ~1e-16 per weight), the same mass to 1e-14.
+    const GridSpec spec = grid3D();
+    KernelSettings lanes = settingsWith(DepositMethod::Automatic, KernelSettings{}.negligibleWeight);
+    KernelSettings portable = lanes;
+    portable.vectorised = false;
+    DensityGrid a(spec, lanes), b(spec, portable);
+    EXPECT_FALSE(b.batchedKernel());
+    std::mt19937_64 random(29);
+    for (int p = 0; p < 30; ++p)
+    {
+        const Parcel parcel = randomWideParcel(random, spec, p % 3 == 0 ? 0.0 : 20.0);
+        a.deposit(parcel, dt);
+        b.deposit(parcel, dt);
+    }
+    EXPECT_GE(a.stepStatistics().parcelsSeparable, 20);
+    EXPECT_EQ(a.stepStatistics().parcelsSeparable, b.stepStatistics().parcelsSeparable);
+    EXPECT_LE(worstRelativeDifference(a, b), 1e-14);
+    EXPECT_NEAR(depositedMass(a), depositedMass(b), 1e-14 * depositedMass(b));
+    std::printf("AVX2 (%s) against portable loops: worst difference %.3g of the largest value\n",
+                a.batchedKernel() ? "in use" : "not on this CPU", worstRelativeDifference(a, b));
 }
 
 TEST(SeparableWeight, DepositedShareGivesTheDepositsWeights)
