@@ -107,7 +107,8 @@ int SeparableWeight::chooseQuadrature(double k, double edgeValue, double thresho
     const double budget = tolerance - 2.0 * relativeRounding;
     for (int points = 1; points <= maximumPoints; ++points)
     {
-        const double perNode = quadratureBound(points, k) + edgeValue * (1.0 + relativeRounding) + threshold;
+        const double perNode = quadratureBound(points, k) + edgeValue * (1.0 + relativeRounding)
+            + argumentRounding + threshold;
         if (nodes * perNode / largestWeightBound <= budget)
         {
             return points;

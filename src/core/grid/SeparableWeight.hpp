@@ -32,7 +32,7 @@
 //    the cut from the path, whose weights are below that too: at most t;
 //  - rounding: relative, below relativeRounding of (omega + E); besides, the exponents'
 //    arguments gamma (x - c)^2, rounded to ~3 ulp, add up to 3 u X exp(-X) <= 1.2e-16 of the
-//    peak per node (X = gamma (x - c)^2; docs/model.md P16: not counted in the bound).
+//    peak per node (X = gamma (x - c)^2; docs/model.md P16), counted as argumentRounding.
 // chooseQuadrature turns these into a bound on the normalised weights (eq. 24) and picks Q.
 //
 // On CPUs with AVX2 + FMA (vectorised, the default) the tables' exponentials and the rows'
@@ -63,6 +63,10 @@ public:
     // Rounding of the per-node products and sums, relative to omega + E (a few ulp of up to
     // Q + 3 operations, with margin).
     static constexpr double relativeRounding = 1e-14;
+    // The exponents' arguments X = gamma (x - c)^2, rounded to ~3 ulp, change a node's omega
+    // by at most 3 u X exp(-X) <= 3 u / e = 1.23e-16 of the kernel's peak (absolute, not
+    // covered by relativeRounding where X > ~30): rounded up, per node.
+    static constexpr double argumentRounding = 1.3e-16;
 
     // vectorised: the per-node loops in AVX2 + FMA (SeparableLanes) where the build and CPU
     // have them (KernelSettings::vectorised, as DensityGrid::batchedKernel); false: the
@@ -79,7 +83,7 @@ public:
     // does (the caller uses the exact code). k = sqrt(gamma) L; edgeValue = E; threshold: t
     // (above); largestWeightBound P: a lower bound of the parcel's largest omega
     // (DensityGrid: phi(c + L/2)); boxNodes N: the lattice nodes evaluated. With per-node
-    // errors at most a = B + E + t and rounding rho (omega + E), a folded node collecting m
+    // errors at most a = B + E + argumentRounding + t and rounding rho (omega + E), a folded node collecting m
     // <= N lattice nodes, the weights w = omega / sum omega differ by at most
     // ((2 N + 1) (a + rho E) / P + 2 rho) times the largest (docs/model.md, P16).
     static int chooseQuadrature(double k, double edgeValue, double threshold, double largestWeightBound,
