@@ -404,6 +404,21 @@ void AveragingWindow::restore(const WindowState& state)
     recomputeTotal(box());
 }
 
+void AveragingWindow::clear(std::int64_t committed)
+{
+    for (auto& slot : slots_)
+    {
+        slot.clear();
+    }
+    std::fill(slotBoxes_.begin(), slotBoxes_.end(), IndexBox{});
+    std::fill(total_.begin(), total_.end(), 0.0);
+    head_ = 0;
+    filled_ = 0;
+    committed_ = committed;
+    staleBox_ = IndexBox{};
+    std::fill(summedAt_.begin(), summedAt_.end(), -1);
+}
+
 void AveragingWindow::copySavedSlot(const double* saved, const IndexBox& savedBox, const IndexBox& kept,
                                     std::vector<double>& slot) const
 {
