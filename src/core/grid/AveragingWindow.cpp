@@ -252,6 +252,16 @@ IndexBox AveragingWindow::box() const
     return result;
 }
 
+std::size_t AveragingWindow::savedValueCount() const
+{
+    std::size_t count = 0;
+    for (int age = 0; age < filled_; ++age)
+    {
+        count += slotBoxes_[slotIndex(age)].nodeCount() * static_cast<std::size_t>(nQuantities_);
+    }
+    return count;
+}
+
 WindowState AveragingWindow::save() const
 {
     WindowState state;
@@ -270,12 +280,7 @@ WindowState AveragingWindow::save() const
             state.counters.end(),
             {region_.lo[0], region_.lo[1], region_.lo[2], region_.hi[0], region_.hi[1], region_.hi[2]});
     }
-    std::size_t valueCount = 0;
-    for (int age = 0; age < filled_; ++age)
-    {
-        valueCount += slotBoxes_[slotIndex(age)].nodeCount() * static_cast<std::size_t>(nQuantities_);
-    }
-    state.values.reserve(valueCount);
+    state.values.reserve(savedValueCount());
     for (int age = 0; age < filled_; ++age)
     {
         const IndexBox& b = slotBoxes_[slotIndex(age)];

@@ -85,6 +85,8 @@ public:
     IndexBox box() const;
 
     WindowState save() const;
+    // The number of values save() gives (the filled slots' boxes).
+    std::size_t savedValueCount() const;
     // Throws std::invalid_argument when the state does not fit this grid. A state saved
     // with a different window length is accepted: the newest min(filled, length) steps
     // are kept.

@@ -995,14 +995,16 @@ void DensityGrid::commitStep()
     log_.commit();
 }
 
-WindowState DensityGrid::saveWindow() const
+WindowState DensityGrid::saveWindow(WindowStateFormat format) const
 {
     const int filled = window_.filled();
-    if (!log_.complete(filled))
-    {
-        return window_.save(); // a step not deposited (unpackStep), or restored from node values
-    }
-    return log_.save(spec_.nodes, owned_, nQuantities, filled, window_.committedSteps());
+    // Node values where a step was not deposited (unpackStep), or restored from node values
+    const bool log = log_.complete(filled)
+        && (format == WindowStateFormat::DepositLog
+            || (format == WindowStateFormat::Smaller
+                && log_.savedValueCount(filled) <= window_.savedValueCount()));
+    return log ? log_.save(spec_.nodes, owned_, nQuantities, filled, window_.committedSteps())
+               : window_.save();
 }
 
 void DensityGrid::restoreWindow(const WindowState& state)

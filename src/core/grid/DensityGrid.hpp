@@ -237,9 +237,16 @@ public:
     std::int64_t committedSteps() const { return window_.committedSteps(); }
     const std::vector<double>& windowTotals() const { return window_.total(); }
     // The window's restart state: the deposit log of its steps (DepositLog, formats 3 and
-    // 4) when every step in it was deposited, else its node values (AveragingWindow,
-    // formats 1 and 2).
-    WindowState saveWindow() const;
+    // 4), or its node values (AveragingWindow, formats 1 and 2): the smaller of the two
+    // (Smaller), or the one asked for; node values where a step in the window was not
+    // deposited (the log cannot replay it).
+    enum class WindowStateFormat
+    {
+        Smaller,
+        DepositLog,
+        NodeValues
+    };
+    WindowState saveWindow(WindowStateFormat format = WindowStateFormat::Smaller) const;
     // The window's node values (formats 1 and 2), whatever the log holds (inspection).
     WindowState saveWindowValues() const { return window_.save(); }
     // Either format. A log is replayed: its parcels deposited again as copies, step by

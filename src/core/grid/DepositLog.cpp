@@ -129,6 +129,16 @@ std::size_t DepositLog::memoryBytes() const
     return bytes;
 }
 
+std::size_t DepositLog::savedValueCount(int filled) const
+{
+    std::size_t count = 0;
+    for (int age = std::max(filled_ - filled, 0); age < filled_; ++age)
+    {
+        count += logged(age).parcels.size() + 2 * logged(age).runs.size();
+    }
+    return count;
+}
+
 WindowState DepositLog::save(const std::array<int, 3>& gridNodes, const IndexBox& region, int nQuantities,
                              int filled, std::int64_t committed) const
 {
@@ -150,12 +160,7 @@ WindowState DepositLog::save(const std::array<int, 3>& gridNodes, const IndexBox
             state.counters.end(),
             {region.lo[0], region.lo[1], region.lo[2], region.hi[0], region.hi[1], region.hi[2]});
     }
-    std::size_t valueCount = 0;
-    for (int age = filled_ - filled; age < filled_; ++age)
-    {
-        valueCount += logged(age).parcels.size() + 2 * logged(age).runs.size();
-    }
-    state.values.reserve(valueCount);
+    state.values.reserve(savedValueCount(filled));
     for (int age = filled_ - filled; age < filled_; ++age)
     {
         const Step& step = logged(age);

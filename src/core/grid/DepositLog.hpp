@@ -82,6 +82,8 @@ public:
     //   values   = per step, oldest first: runs x (dt, parcels), then parcels x 9 values.
     WindowState save(const std::array<int, 3>& gridNodes, const IndexBox& region, int nQuantities, int filled,
                      std::int64_t committed) const;
+    // The number of values save() gives for the newest `filled` steps.
+    std::size_t savedValueCount(int filled) const;
     // True when a saved state is a log (format 3 or 4), not node values (1 or 2).
     static bool holdsLog(const WindowState& state);
     // A saved log read and checked against a grid of gridNodes nodes whose window holds

@@ -22,6 +22,7 @@ namespace
 {
 
 constexpr int window = 4;
+constexpr auto asLog = DensityGrid::WindowStateFormat::DepositLog;
 
 KernelSettings kernel()
 {
@@ -128,7 +129,7 @@ TEST(DepositLog, ReplayRestoresTheWindowBitForBit)
     ASSERT_GT(seen.parcelsCloudInCell, 0);
     ASSERT_GT(seen.parcelsPartlyOutside, 0);
 
-    const WindowState state = original.saveWindow();
+    const WindowState state = original.saveWindow(asLog);
     EXPECT_EQ(state.counters[0], 3); // a log, the whole grid
     EXPECT_EQ(state.counters[6], window);
     DensityGrid restored(spec, kernel(), window);
@@ -137,7 +138,7 @@ TEST(DepositLog, ReplayRestoresTheWindowBitForBit)
     EXPECT_EQ(restored.stepsInWindow(), window);
     expectSameWindow(original, restored);
     // The log is rebuilt too: the next write holds the same state
-    const WindowState again = restored.saveWindow();
+    const WindowState again = restored.saveWindow(asLog);
     EXPECT_EQ(again.counters, state.counters);
     EXPECT_TRUE(again.values == state.values);
     // ...and both continue alike
@@ -157,7 +158,7 @@ TEST(DepositLog, ParcelOrderAndEveryParcelMatter)
     {
         runStep(original, s);
     }
-    const WindowState state = original.saveWindow();
+    const WindowState state = original.saveWindow(asLog);
     std::size_t parcels = 0;
     const std::size_t first = firstParcelOfNewestStep(state, parcels);
     ASSERT_GT(parcels, 2u);
@@ -193,7 +194,7 @@ TEST(DepositLog, WholeGridLogRestoresOntoEachBlock)
     {
         runStep(whole, s);
     }
-    const WindowState state = whole.saveWindow();
+    const WindowState state = whole.saveWindow(asLog);
     const GridPartition three = GridPartition::bisection(spec, 3);
     for (int p = 0; p < 3; ++p)
     {
@@ -214,7 +215,7 @@ TEST(DepositLog, WholeGridLogRestoresOntoEachBlock)
         // A block's log is a block's state (format 4), restored on the same block
         DensityGrid fresh(spec, kernel(), window, GridBlock{three.owned(p), three.owned(p)});
         block.restoreWindow(state);
-        const WindowState blockState = block.saveWindow();
+        const WindowState blockState = block.saveWindow(asLog);
         EXPECT_EQ(blockState.counters[0], 4);
         fresh.restoreWindow(blockState);
         expectSameWindow(block, fresh);
@@ -237,20 +238,20 @@ TEST(DepositLog, NodeValuesWhereTheLogCannotReplay)
     for (int s = 1; s < window; ++s)
     {
         runStep(grid, s);
-        EXPECT_EQ(grid.saveWindow().counters[0], 1) << "step " << s;
+        EXPECT_EQ(grid.saveWindow(asLog).counters[0], 1) << "step " << s;
     }
-    const WindowState values = grid.saveWindow();
+    const WindowState values = grid.saveWindow(asLog);
     DensityGrid restored(spec, kernel(), window);
     restored.restoreWindow(values);
     expectSameWindow(grid, restored);
     for (int s = window; s < 2 * window; ++s)
     {
-        EXPECT_EQ(restored.saveWindow().counters[0], 1) << "step " << s;
+        EXPECT_EQ(restored.saveWindow(asLog).counters[0], 1) << "step " << s;
         runStep(grid, s);
         runStep(restored, s);
     }
-    EXPECT_EQ(grid.saveWindow().counters[0], 3);
-    EXPECT_EQ(restored.saveWindow().counters[0], 3);
+    EXPECT_EQ(grid.saveWindow(asLog).counters[0], 3);
+    EXPECT_EQ(restored.saveWindow(asLog).counters[0], 3);
     expectSameWindow(grid, restored);
 }
 
@@ -262,7 +263,7 @@ TEST(DepositLog, DamagedLogIsRefused)
     {
         runStep(grid, s);
     }
-    const WindowState state = grid.saveWindow();
+    const WindowState state = grid.saveWindow(asLog);
     std::size_t parcels = 0;
     const std::size_t first = firstParcelOfNewestStep(state, parcels);
     auto refused = [&](WindowState damaged, const char* what)
@@ -295,4 +296,30 @@ TEST(DepositLog, DamagedLogIsRefused)
     WindowState otherGrid = state;
     otherGrid.counters[1] = 20;
     refused(otherGrid, "saved for a grid of 20x16x11 nodes");
+}
+
+// By default the smaller of the two: the log where kernels touch many nodes per parcel,
+// node values where many parcels share few nodes; either restores the same window.
+TEST(DepositLog, TheSmallerStateByDefault)
+{
+    const GridSpec spec = grid3D();
+    DensityGrid few(spec, kernel(), window);
+    runStep(few, 0);
+    EXPECT_EQ(few.saveWindow().counters[0], 3);
+    EXPECT_LT(few.saveWindow().values.size(), few.saveWindowValues().values.size());
+    EXPECT_EQ(few.saveWindow(DensityGrid::WindowStateFormat::NodeValues).counters[0], 1);
+
+    GridSpec tiny = spec;
+    tiny.nodes = {{3, 3, 3}};
+    DensityGrid many(tiny, kernel(), window);
+    runStep(many, 0); // 48 parcels on 27 nodes
+    const WindowState state = many.saveWindow();
+    EXPECT_EQ(state.counters[0], 1);
+    EXPECT_LT(state.values.size(), many.saveWindow(asLog).values.size());
+    DensityGrid fromValues(tiny, kernel(), window);
+    fromValues.restoreWindow(state);
+    DensityGrid fromLog(tiny, kernel(), window);
+    fromLog.restoreWindow(many.saveWindow(asLog));
+    expectSameWindow(many, fromValues);
+    expectSameWindow(many, fromLog);
 }

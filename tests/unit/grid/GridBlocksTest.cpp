@@ -351,7 +351,8 @@ TEST(GridBlocks, WindowStateRestoresOnTheSameBlockOnly)
     }
     commit(blocks);
     // Both formats: the deposit log (a block's: 4) and the node values (a block's: 2)
-    for (const WindowState& state : {blocks.grids[1]->saveWindow(), blocks.grids[1]->saveWindowValues()})
+    for (const WindowState& state : {blocks.grids[1]->saveWindow(DensityGrid::WindowStateFormat::DepositLog),
+                                     blocks.grids[1]->saveWindowValues()})
     {
         EXPECT_TRUE(state.counters[0] == 4 || state.counters[0] == 2); // a block's format
         DensityGrid same(spec, KernelSettings{}, 2, GridBlock{two.owned(1), two.owned(1)});
@@ -361,7 +362,7 @@ TEST(GridBlocks, WindowStateRestoresOnTheSameBlockOnly)
         EXPECT_THROW(other.restoreWindow(state), std::invalid_argument);
         DensityGrid whole(spec, KernelSettings{}, 2);
         EXPECT_THROW(whole.restoreWindow(state), std::invalid_argument);
-        EXPECT_EQ(whole.saveWindow().counters[0], 3);       // the whole grid's log
+        EXPECT_EQ(whole.saveWindow(DensityGrid::WindowStateFormat::DepositLog).counters[0], 3); // a log
         EXPECT_EQ(whole.saveWindowValues().counters[0], 1); // ...and node values, unchanged
     }
 }
@@ -383,7 +384,8 @@ TEST(GridBlocks, WholeGridWindowRestoresOntoEachBlock)
     }
     const GridPartition two = GridPartition::bisection(spec, 2);
     // Both formats: the deposit log, replayed, and the node values, cut out
-    for (const WindowState& state : {whole.saveWindow(), whole.saveWindowValues()})
+    for (const WindowState& state :
+         {whole.saveWindow(DensityGrid::WindowStateFormat::DepositLog), whole.saveWindowValues()})
         for (int p = 0; p < 2; ++p)
         {
             DensityGrid block(spec, KernelSettings{}, 2, GridBlock{two.owned(p), two.owned(p)});
