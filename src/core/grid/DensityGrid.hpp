@@ -256,9 +256,8 @@ public:
     // do. Called before the step's deposits (throws std::invalid_argument otherwise, and
     // when the state does not fit this grid). The last step's statistics are kept.
     void restoreWindow(const WindowState& state);
-    // Parcels in the deposit log's committed steps, and the bytes it holds.
+    // Parcels in the deposit log's committed steps.
     std::size_t loggedParcels() const { return log_.loggedParcels(); }
-    std::size_t depositLogBytes() const { return log_.memoryBytes(); }
 
     // Fields at an owned node (grid indices / global flat index).
     DropletFieldValue nodeValue(int i, int j, int k) const;

@@ -113,22 +113,6 @@ std::size_t DepositLog::loggedParcels() const
     return parcels;
 }
 
-std::size_t DepositLog::memoryBytes() const
-{
-    std::size_t bytes = 0;
-    auto add = [&bytes](const Step& step)
-    {
-        bytes += step.parcels.capacity() * sizeof(double)
-            + step.runs.capacity() * sizeof(std::pair<double, std::size_t>);
-    };
-    for (const Step& step : steps_)
-    {
-        add(step);
-    }
-    add(current_);
-    return bytes;
-}
-
 std::size_t DepositLog::savedValueCount(int filled) const
 {
     std::size_t count = 0;

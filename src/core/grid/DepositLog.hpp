@@ -70,9 +70,8 @@ public:
     void clear();
     // True when the newest `steps` committed steps are all logged and replayable.
     bool complete(int steps) const { return replayable_ >= steps; }
-    // Parcels logged in the committed steps, and the bytes the log holds (capacity).
+    // Parcels logged in the committed steps.
     std::size_t loggedParcels() const;
-    std::size_t memoryBytes() const;
 
     // Restart state of a window of length `length` (filled steps, committed in total) over
     // region of a grid of gridNodes nodes, from the newest `filled` logged steps. Layout:
