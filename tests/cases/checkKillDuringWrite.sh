@@ -43,6 +43,8 @@ restartEndsExactly() {
         "$1: the state at 0.2 differs from the continuous run"
     check '"$PY" "$here/compareWindow.py" "$full/0.2/$state.gridWindow" "0.2/$state.gridWindow" 1e-10' \
         "$1: the averaging window at 0.2 differs from the continuous run"
+    check '"$PY" "$here/compareWindow.py" "$full/0.2/$state.gridWindowValues" "0.2/$state.gridWindowValues" 1e-10' \
+        "$1: the averaging window's node values at 0.2 differ from the continuous run"
 }
 
 # restartStopsNaming NAME FILE: the restart stopped with an error naming FILE

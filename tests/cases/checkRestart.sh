@@ -48,6 +48,12 @@ for dir in "${dirs[@]}"; do
     # (0.20000000000000009 against ...15 here), and with it the parcels at round-off
     "$PY" "$here/compareWindow.py" "$work/full/$dir/$end/$state.gridWindow" \
         "$work/split/$dir/$end/$state.gridWindow" 1e-10
+    # ...and its node values (the state holds the parcels deposited, written with
+    # writeWindowValues)
+    if [ -f "$work/full/$dir/$end/$state.gridWindowValues" ]; then
+        "$PY" "$here/compareWindow.py" "$work/full/$dir/$end/$state.gridWindowValues" \
+            "$work/split/$dir/$end/$state.gridWindowValues" 1e-10
+    fi
 done
 "$PY" "$here/compareTables.py" --after "$half" \
     "$work/full/postProcessing/dropletFiber/0/dropletFiber.dat" \

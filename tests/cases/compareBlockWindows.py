@@ -4,7 +4,9 @@ run's blocks (each processor keeps the window of the grid nodes it owns).
 Usage: compareBlockWindows.py SERIAL_STATE PARALLEL_CASE STATE_PATH REL_TOL
 
 SERIAL_STATE is a restart state dictionary (<time>/uniform/dropletFiber/<name>)
-with its <name>.gridWindow beside it; the parallel case's states are
+with its <name>.gridWindow beside it (node values), or, when that holds the
+deposit log, the node values written with writeWindowValues
+(<name>.gridWindowValues, entry gridWindowValuesCounters); the parallel case's states are
 PARALLEL_CASE/processor*/STATE_PATH. Checks: the blocks (entry gridBlock) are
 disjoint and cover every node of the grid; the steps committed agree; per node,
 the window total (sum of the slots) of the owning block equals the serial one to
@@ -29,7 +31,16 @@ def window_totals(state_path):
     """Per node (i, j, k): the window total; the block's box; committed steps."""
     text = open(state_path).read()
     counters = entry(text, "gridWindowCounters")
-    values = read(state_path + ".gridWindow")
+    values = None
+    if counters[0] in (3, 4):
+        # A deposit log: the node values are those written with writeWindowValues
+        counters = entry(text, "gridWindowValuesCounters")
+        if counters is None:
+            raise SystemExit("FAILED: %s holds a deposit log and no node values"
+                             " (run with writeWindowValues yes)" % state_path)
+        values = read(state_path + ".gridWindowValues")
+    else:
+        values = read(state_path + ".gridWindow")
     nodes = counters[1:4]
     header = 8
     block = [0, 0, 0, nodes[0] - 1, nodes[1] - 1, nodes[2] - 1]

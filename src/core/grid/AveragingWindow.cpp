@@ -284,6 +284,16 @@ IndexBox AveragingWindow::box() const
     return result;
 }
 
+std::size_t AveragingWindow::savedValueCount() const
+{
+    std::size_t count = 0;
+    for (int age = 0; age < filled_; ++age)
+    {
+        count += slotBoxes_[slotIndex(age)].nodeCount() * static_cast<std::size_t>(nQuantities_);
+    }
+    return count;
+}
+
 WindowState AveragingWindow::save() const
 {
     WindowState state;
@@ -302,12 +312,7 @@ WindowState AveragingWindow::save() const
             state.counters.end(),
             {region_.lo[0], region_.lo[1], region_.lo[2], region_.hi[0], region_.hi[1], region_.hi[2]});
     }
-    std::size_t valueCount = 0;
-    for (int age = 0; age < filled_; ++age)
-    {
-        valueCount += slotBoxes_[slotIndex(age)].nodeCount() * static_cast<std::size_t>(nQuantities_);
-    }
-    state.values.reserve(valueCount);
+    state.values.reserve(savedValueCount());
     for (int age = 0; age < filled_; ++age)
     {
         const IndexBox& b = slotBoxes_[slotIndex(age)];
@@ -434,6 +439,21 @@ void AveragingWindow::restore(const WindowState& state)
     staleBox_ = IndexBox{};
     std::fill(summedAt_.begin(), summedAt_.end(), -1);
     recomputeTotal(box());
+}
+
+void AveragingWindow::clear(std::int64_t committed)
+{
+    for (auto& slot : slots_)
+    {
+        slot.clear();
+    }
+    std::fill(slotBoxes_.begin(), slotBoxes_.end(), IndexBox{});
+    std::fill(total_.begin(), total_.end(), 0.0);
+    head_ = 0;
+    filled_ = 0;
+    committed_ = committed;
+    staleBox_ = IndexBox{};
+    std::fill(summedAt_.begin(), summedAt_.end(), -1);
 }
 
 void AveragingWindow::copySavedSlot(const double* saved, const IndexBox& savedBox, const IndexBox& kept,

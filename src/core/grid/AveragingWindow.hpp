@@ -45,7 +45,11 @@
 namespace dropletFiber
 {
 
-// Restart state of a window, flat (to be written by the caller in any format):
+// Restart state of a window, flat (to be written by the caller in any format). These
+// node values (formats 1 and 2) are what a window holds; DensityGrid saves its window as
+// the parcels deposited in its steps instead (DepositLog.hpp, formats 3 and 4: far
+// smaller where kernels touch many nodes) unless a step was not deposited:
+
 //   counters = {format version 1, nx, ny, nz, nQuantities, window length, filled slots,
 //               committed steps, then per filled slot, oldest first: lo x y z, hi x y z}
 //   values   = per filled slot, oldest first, that slot's box, nQuantities per node,
@@ -94,10 +98,15 @@ public:
     IndexBox box() const;
 
     WindowState save() const;
+    // The number of values save() gives (the filled slots' boxes).
+    std::size_t savedValueCount() const;
     // Throws std::invalid_argument when the state does not fit this grid. A state saved
     // with a different window length is accepted: the newest min(filled, length) steps
     // are kept.
     void restore(const WindowState& state);
+    // Empties the window (no step in it), with `committed` steps counted as committed
+    // before (a replay of the steps that follow rebuilds the rest: DepositLog).
+    void clear(std::int64_t committed);
 
 private:
     std::size_t slotIndex(int age) const { return static_cast<std::size_t>((head_ + age) % length_); }

@@ -311,7 +311,7 @@ DensityGrid::DensityGrid(const GridSpec& spec, const KernelSettings& kernel, int
       batched_(kernel.vectorised && PathWeightBatch::cpuSupported()), nodeVolume_(spec.nodeVolume()),
       owned_(checkedBlock(spec, block).owned), storage_(block.storage),
       storesWholeGrid_(block.storage == spec.fullBox()), ownsWholeGrid_(block.owned == spec.fullBox()),
-      window_(spec.nodes, block.owned, nQuantities, windowLength), separable_(batched_)
+      window_(spec.nodes, block.owned, nQuantities, windowLength), log_(windowLength), separable_(batched_)
 {
     kernelSettings_.validate();
     for (int d = 0; d < 3; ++d)
@@ -360,6 +360,9 @@ void DensityGrid::deposit(const Parcel& parcel, double dt)
     {
         return;
     }
+    // The window's restart state: what is deposited, as given (depletion changes the
+    // parcel's nParticle after this)
+    log_.record(parcel, dt);
     // 3-7. The weights of the nodes, onto the step accumulator.
     const std::array<double, nQuantities> totals = parcelTotals(parcel, mass, path.fraction);
     WeightSink sink{stats, &totals, nullptr, nullptr, 0.0, IndexBox{}};
@@ -1090,6 +1093,69 @@ void DensityGrid::commitStep()
     lastStepStatistics_ = stepStatistics_;
     stepStatistics_ = StepStatistics{};
     copyStatistics_ = StepStatistics{};
+    log_.commit();
+}
+
+WindowState DensityGrid::saveWindow(WindowStateFormat format) const
+{
+    const int filled = window_.filled();
+    // Node values where a step was not deposited (unpackStep), or restored from node values
+    const bool log = log_.complete(filled)
+        && (format == WindowStateFormat::DepositLog
+            || (format == WindowStateFormat::Smaller
+                && log_.savedValueCount(filled) <= window_.savedValueCount()));
+    return log ? log_.save(spec_.nodes, owned_, nQuantities, filled, window_.committedSteps())
+               : window_.save();
+}
+
+void DensityGrid::restoreWindow(const WindowState& state)
+{
+    if (DepositLog::holdsLog(state))
+    {
+        replayLog(state);
+        return;
+    }
+    window_.restore(state);
+    log_.clear(); // node values: no log of these steps
+}
+
+void DensityGrid::replayLog(const WindowState& state)
+{
+    // Everything checked before this grid changes
+    const DepositLog::Saved saved = DepositLog::read(state, spec_.nodes, owned_, nQuantities);
+    if (!stepBox_.empty() || stepStatistics_.parcels != 0 || copyStatistics_.parcels != 0)
+    {
+        throw std::invalid_argument(
+            "DensityGrid::restoreWindow: the step has deposits (restore before them)");
+    }
+    // The newest min(saved, W) steps, oldest first
+    const std::size_t kept = std::min(saved.steps.size(), static_cast<std::size_t>(window_.length()));
+    const bool sameRegion = saved.region == owned_;
+    const StepStatistics last = lastStepStatistics_;
+    log_.clear();
+    window_.clear(saved.committed - static_cast<std::int64_t>(kept));
+    for (std::size_t s = saved.steps.size() - kept; s < saved.steps.size(); ++s)
+    {
+        const DepositLog::StepView& step = saved.steps[s];
+        std::size_t p = 0;
+        for (std::size_t r = 0; r < step.runCount; ++r)
+        {
+            const double dt = step.runs[2 * r];
+            const std::size_t end = p + static_cast<std::size_t>(step.runs[2 * r + 1]);
+            for (; p < end; ++p)
+            {
+                const Parcel parcel = DepositLog::parcel(step, p);
+                // A larger region's log (a serial run's, decomposed): the parcels that reach
+                // none of the nodes stored here add nothing, and are not logged again
+                if (sameRegion || !depositBox(parcel, dt).intersected(storage_).empty())
+                {
+                    depositCopy(parcel, dt);
+                }
+            }
+        }
+        commitStep();
+    }
+    lastStepStatistics_ = last;
 }
 
 namespace
@@ -1146,6 +1212,7 @@ void DensityGrid::unpackStep(const IndexBox& box, const double* values, std::siz
                                step_.data() + row.first * nQuantities);
                  });
     stepBox_ = stepBox_.united(box);
+    log_.markIncomplete(); // values that no logged deposit gives
 }
 
 DropletFieldValue DensityGrid::fieldFromSums(const std::array<double, nQuantities>& s) const

@@ -84,8 +84,15 @@
 // deposit()'s own code path (steps 1-6 send them to a sink: the step accumulator, or a
 // sum weighted per node), lastStepValue() reads what the newest committed step deposited.
 //
-// Restart: saveWindow()/restoreWindow() (AveragingWindow.hpp); the restored grid gives
-// bit-for-bit the same fields and the same results for later steps.
+// Restart: saveWindow()/restoreWindow(). The state is the deposit log (DepositLog.hpp):
+// every parcel deposit() and depositCopy() put on the grid in the window's steps, in
+// order, with its dt; restoring replays it (each parcel deposited again as a copy, step by
+// step, oldest first, each step committed), which rebuilds slots and total bit for bit
+// with the same kernel settings, grid and code. Where a step's values were written rather
+// than deposited (unpackStep, the non-const stepValues()), the window's node values are
+// saved instead (AveragingWindow.hpp) until W deposited steps have followed; both formats
+// are read. The restored grid gives bit-for-bit the same fields and the same results for
+// later steps.
 //
 // Invalid parcels (non-finite values, negative diameter/nParticle/density) and dt < 0
 // throw std::invalid_argument; nParticle == 0 or diameter == 0 is counted and skipped.
@@ -93,11 +100,13 @@
 // Memory: nQuantities = 7 doubles (56 bytes) per node for the step accumulator (per
 // stored node), the window total and each of the W window slots (allocated as the window
 // fills; per owned node): (W + 2) * 56 bytes per node for the whole grid, e.g.
-// 250 x 250 nodes, W = 10: 42 MB.
+// 250 x 250 nodes, W = 10: 42 MB. The deposit log: 72 bytes per parcel deposited on
+// the grid in each of the W (+1) steps, e.g. 4,000 parcels per step, W = 10: 3.2 MB.
 // Time per parcel: ~ nodes within reach of its path (one erf-type evaluation each).
 #pragma once
 
 #include "grid/AveragingWindow.hpp"
+#include "grid/DepositLog.hpp"
 #include "grid/GridQuantities.hpp"
 #include "grid/GridSpec.hpp"
 #include "grid/MultilinearWeights.hpp"
@@ -208,8 +217,14 @@ public:
     // storage.nodeCount() * nQuantities doubles, GridQuantities layout over the storage box
     // (flatIndexInBox; the whole grid: flat node index), zero outside stepBox(). The
     // vector's storage may change at commitStep() (it can become a window slot): take
-    // data() anew after each commit.
-    std::vector<double>& stepValues() { return step_; }
+    // data() anew after each commit. Writing through the non-const accessor (or
+    // unpackStep) makes the step one that the deposit log cannot replay: saveWindow() then
+    // saves node values until W deposited steps have followed.
+    std::vector<double>& stepValues()
+    {
+        log_.markIncomplete();
+        return step_;
+    }
     const std::vector<double>& stepValues() const { return step_; }
     // The stored nodes the step touched (grid indices).
     IndexBox stepBox() const { return stepBox_; }
@@ -229,8 +244,28 @@ public:
     int stepsInWindow() const { return window_.filled(); }
     std::int64_t committedSteps() const { return window_.committedSteps(); }
     const std::vector<double>& windowTotals() const { return window_.total(); }
-    WindowState saveWindow() const { return window_.save(); }
-    void restoreWindow(const WindowState& state) { window_.restore(state); }
+    // The window's restart state: the deposit log of its steps (DepositLog, formats 3 and
+    // 4), or its node values (AveragingWindow, formats 1 and 2): the smaller of the two
+    // (Smaller), or the one asked for; node values where a step in the window was not
+    // deposited (the log cannot replay it).
+    enum class WindowStateFormat
+    {
+        Smaller,
+        DepositLog,
+        NodeValues
+    };
+    WindowState saveWindow(WindowStateFormat format = WindowStateFormat::Smaller) const;
+    // The window's node values (formats 1 and 2), whatever the log holds (inspection).
+    WindowState saveWindowValues() const { return window_.save(); }
+    // Either format. A log is replayed: its parcels deposited again as copies, step by
+    // step, oldest first, each step committed (the newest min(saved, W) steps): the same
+    // slots and total bit for bit, given the same kernel settings, grid and code. A state
+    // of a larger block (a serial run's whole grid) gives a block its part, as node values
+    // do. Called before the step's deposits (throws std::invalid_argument otherwise, and
+    // when the state does not fit this grid). The last step's statistics are kept.
+    void restoreWindow(const WindowState& state);
+    // Parcels in the deposit log's committed steps.
+    std::size_t loggedParcels() const { return log_.loggedParcels(); }
 
     // Fields at an owned node (grid indices / global flat index).
     DropletFieldValue nodeValue(int i, int j, int k) const;
@@ -400,6 +435,8 @@ private:
     }
     // A block's storage, or nullptr for nodes beyond it (other blocks deposit those).
     double* stepValuesOfBlockNode(std::size_t node);
+    // restoreWindow() from a deposit log: its steps deposited again and committed.
+    void replayLog(const WindowState& state);
     // Grid indices of a global flat node index.
     std::array<int, 3> nodeIndices(std::size_t node) const;
     // Where a touched box of nodes (grid indices) is stored: stepBox_ grows by it.
@@ -422,6 +459,7 @@ private:
     bool storesWholeGrid_;            // storage_ is the whole grid: flat node index = storage index
     bool ownsWholeGrid_;              // owned_ is the whole grid: flat node index = window index
     AveragingWindow window_;
+    DepositLog log_; // the parcels of the window's steps: its restart state
     std::vector<double> step_;
     IndexBox stepBox_;
     StepStatistics stepStatistics_;

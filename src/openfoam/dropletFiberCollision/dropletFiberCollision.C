@@ -53,7 +53,7 @@ namespace
 const Foam::wordList functionObjectKeys
 {
     "clouds", "gather", "grid", "collision", "air", "fibers",
-    "writeVtk", "writeGridVtk", "restart",
+    "writeVtk", "writeGridVtk", "writeWindowValues", "windowState", "restart",
     // functionObject, functionObjectList: the object itself
     "type", "libs", "functionObjectLibs", "enabled", "log",
     // regionFunctionObject (fvMeshFunctionObject)
@@ -103,6 +103,19 @@ void Foam::functionObjects::dropletFiberCollision::readOutputAndClouds
     writeFile::read(tableFileDict(dict));
     writeVtk_ = dropletFiber::getSwitch(dict, "writeVtk", true);
     writeGridVtk_ = dropletFiber::getSwitch(dict, "writeGridVtk", true);
+    writeWindowValues_ =
+        dropletFiber::getSwitch(dict, "writeWindowValues", false);
+    {
+        const word format = dropletFiber::getChoice
+        (
+            dict, "windowState", "smaller", {"smaller", "parcels", "nodeValues"}
+        );
+        using Format = ::dropletFiber::DensityGrid::WindowStateFormat;
+        windowStateFormat_ =
+            format == "parcels" ? Format::DepositLog
+          : format == "nodeValues" ? Format::NodeValues
+          : Format::Smaller;
+    }
 
     cloudNames_ = dict.lookupOrDefault<wordList>("clouds", wordList());
     // direct: the kinematic parcel types read parcel by parcel, others through
@@ -842,7 +855,9 @@ Foam::functionObjects::dropletFiberCollision::dropletFiberCollision
     stateProcessors_(0),
     restartFresh_(false),
     writeVtk_(true),
-    writeGridVtk_(true)
+    writeGridVtk_(true),
+    writeWindowValues_(false),
+    windowStateFormat_(::dropletFiber::DensityGrid::WindowStateFormat::Smaller)
 {
     read(dict);
     boxes_.reset(new dropletFiber::processorBoxes(mesh_));

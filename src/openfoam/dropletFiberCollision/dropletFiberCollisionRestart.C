@@ -10,7 +10,17 @@ Description
       \<name\>             fibers (fiber\<id\>; in parallel those the processor
                            holds, with the entries processors and processor),
                            injector counters, totals (dictionary)
-      \<name\>.gridWindow  the averaging window's values (binary list)
+      \<name\>.gridWindow  the averaging window's state (binary list): the
+                           parcels deposited in its steps, replayed on
+                           restart (DepositLog.hpp; formats 3, 4), or its
+                           node values (AveragingWindow.hpp; formats 1, 2,
+                           as earlier versions wrote): entry windowState,
+                           by default the smaller; node values where a
+                           step cannot be replayed
+      \<name\>.gridWindowValues  with writeWindowValues only: the window's
+                           node values (formats 1, 2; counters in the entry
+                           gridWindowValuesCounters), for inspection and the
+                           case tests comparing windows; not read back
       \<name\>.marker      written by OpenFOAM with the fields, when the state
                            follows (restartStateMarker)
 
@@ -101,9 +111,23 @@ std::vector<std::int64_t> windowCounters(const dictionary& state)
 }
 
 
-//- The window's values, read from file and each checked: finite, and the
-//  sums of masses, counts and radii not negative (momenta may be)
-std::vector<double> windowValues(const fileName& file, const label expected)
+//- True when the counters are those of node values (formats 1 and 2), not
+//  of a deposit log
+bool nodeValuesFormat(const std::vector<std::int64_t>& counters)
+{
+    return counters.empty() || counters[0] <= 2;
+}
+
+
+//- The window's values, read from file and each checked: finite, and for
+//  node values the sums of masses, counts and radii not negative (momenta
+//  may be); a deposit log's parcels are checked by the core
+std::vector<double> windowValues
+(
+    const fileName& file,
+    const label expected,
+    const bool nodeValues
+)
 {
     if (!isFile(file))
     {
@@ -125,6 +149,18 @@ std::vector<double> windowValues(const fileName& file, const label expected)
     const label nQ = ::dropletFiber::nQuantities;
     forAll(values, i)
     {
+        if (!nodeValues)
+        {
+            if (!std::isfinite(values[i]))
+            {
+                FatalIOErrorInFunction(file)
+                    << "Restart state " << file << ": value " << i << " is "
+                    << values[i] << ": allowed are finite values (the"
+                    << " parcels deposited in the averaging window's steps)."
+                    << exit(FatalIOError);
+            }
+            continue;
+        }
         const bool mayBeNegative = i % nQ >= ::dropletFiber::quantityMomentumX;
         if (!std::isfinite(values[i]) || (!mayBeNegative && values[i] < 0))
         {
@@ -238,9 +274,9 @@ Foam::dictionary Foam::functionObjects::dropletFiberCollision::stateDict
             std::vector<double>(window.counters.begin(), window.counters.end())
         )
     );
-    // The window's values are the bulk of the state (nodes x 7 x steps): they
-    // go to a binary OpenFOAM list beside it, exact and ten times faster to
-    // write than 17-digit text
+    // The window's values (the parcels of its steps, or node values) are the
+    // bulk of the state: they go to a binary OpenFOAM list beside it, exact
+    // and ten times faster to write than 17-digit text
     state.add("gridWindowValueCount", label(window.values.size()));
     if (Pstream::parRun())
     {
@@ -267,24 +303,30 @@ void Foam::functionObjects::dropletFiberCollision::writeState() const
     // and checkWindowBlock say what happens with another).
     // The window first, the dictionary last: a dictionary that exists
     // belongs to a complete state.
-    const ::dropletFiber::WindowState window = grid_->saveWindow();
+    // The window's state is the log of the parcels deposited in its steps
+    // (replayed on restart; 72 bytes per parcel) or its node values (56
+    // bytes per node and step touched), by default whichever is smaller.
+    const ::dropletFiber::WindowState window =
+        grid_->saveWindow(windowStateFormat_);
     const fileName path = statePath(time_.timeName());
     mkDir(path.path());
-    writeAtomically
-    (
-        path + ".gridWindow",
-        IOstream::BINARY,
-        [&window](OFstream& os)
-        {
-            // Written straight from the window's buffer (a view, no copy)
-            os  << UList<scalar>
+    writeWindowList(path + ".gridWindow", window.values);
+    dictionary state = stateDict(window);
+    if (writeWindowValues_)
+    {
+        const ::dropletFiber::WindowState values = grid_->saveWindowValues();
+        writeWindowList(path + ".gridWindowValues", values.values);
+        const unsigned oldPrecision = IOstream::defaultPrecision(17);
+        state.add
+        (
+            "gridWindowValuesCounters",
+            dropletFiber::toScalarList
             (
-                const_cast<scalar*>(window.values.data()),
-                label(window.values.size())
-            );
-        }
-    );
-    const dictionary state = stateDict(window);
+                std::vector<double>(values.counters.begin(), values.counters.end())
+            )
+        );
+        IOstream::defaultPrecision(oldPrecision);
+    }
     writeAtomically
     (
         path,
@@ -295,6 +337,29 @@ void Foam::functionObjects::dropletFiberCollision::writeState() const
             os  << "// dropletFiber restart state of function object " << name()
                 << " at time " << time_.timeName() << nl;
             state.write(os, false);
+        }
+    );
+}
+
+
+void Foam::functionObjects::dropletFiberCollision::writeWindowList
+(
+    const fileName& file,
+    const std::vector<double>& values
+) const
+{
+    writeAtomically
+    (
+        file,
+        IOstream::BINARY,
+        [&values](OFstream& os)
+        {
+            // Written straight from the window's buffer (a view, no copy)
+            os  << UList<scalar>
+            (
+                const_cast<scalar*>(values.data()),
+                label(values.size())
+            );
         }
     );
 }
@@ -603,15 +668,28 @@ void Foam::functionObjects::dropletFiberCollision::restoreWindow
     checkWindowBlock(state, path);
     ::dropletFiber::WindowState window;
     window.counters = windowCounters(state);
+    const fileName file = path + ".gridWindow";
     window.values = windowValues
     (
-        path + ".gridWindow", requiredCount(state, "gridWindowValueCount")
+        file,
+        requiredCount(state, "gridWindowValueCount"),
+        nodeValuesFormat(window.counters)
     );
-    // The core checks the layout against this grid (sizes, slot boxes)
-    dropletFiber::checkedCoreCall
-    (
-        state, [&]() { grid_->restoreWindow(window); }
-    );
+    // The core checks the layout against this grid (sizes, slot boxes, the
+    // logged parcels) and replays a log of the parcels deposited
+    try
+    {
+        grid_->restoreWindow(window);
+    }
+    catch (const std::exception& e)
+    {
+        FatalIOErrorInFunction(state)
+            << "Restart state " << path << " with " << file << ": "
+            << e.what() << "." << nl
+            << "    Restart from an earlier time, or set 'restart fresh;'"
+            << " (the dictionary's fibers, an empty window)."
+            << exit(FatalIOError);
+    }
 }
 
 // ************************************************************************* //

@@ -472,7 +472,7 @@ TEST(DensityGrid, RestartReproducesContinuousRunBitForBit)
         runStep(continuousShort, step);
         runStep(first, step);
     }
-    const WindowState state = first.saveWindow();
+    const WindowState state = first.saveWindow(DensityGrid::WindowStateFormat::DepositLog);
     DensityGrid restored(spec, KernelSettings{}, 4);
     restored.restoreWindow(state);
     DensityGrid restoredShort(spec, KernelSettings{}, 2); // window length changed on restart

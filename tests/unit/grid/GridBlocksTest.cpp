@@ -350,16 +350,21 @@ TEST(GridBlocks, WindowStateRestoresOnTheSameBlockOnly)
         depositOnBlocks(blocks, 0, parcel, 1e-3);
     }
     commit(blocks);
-    const WindowState state = blocks.grids[1]->saveWindow();
-    EXPECT_EQ(state.counters[0], 2); // a block's format
-    DensityGrid same(spec, KernelSettings{}, 2, GridBlock{two.owned(1), two.owned(1)});
-    same.restoreWindow(state);
-    EXPECT_TRUE(same.windowTotals() == blocks.grids[1]->windowTotals());
-    DensityGrid other(spec, KernelSettings{}, 2, GridBlock{three.owned(1), three.owned(1)});
-    EXPECT_THROW(other.restoreWindow(state), std::invalid_argument);
-    DensityGrid whole(spec, KernelSettings{}, 2);
-    EXPECT_THROW(whole.restoreWindow(state), std::invalid_argument);
-    EXPECT_EQ(whole.saveWindow().counters[0], 1); // the whole grid's format is unchanged
+    // Both formats: the deposit log (a block's: 4) and the node values (a block's: 2)
+    for (const WindowState& state : {blocks.grids[1]->saveWindow(DensityGrid::WindowStateFormat::DepositLog),
+                                     blocks.grids[1]->saveWindowValues()})
+    {
+        EXPECT_TRUE(state.counters[0] == 4 || state.counters[0] == 2); // a block's format
+        DensityGrid same(spec, KernelSettings{}, 2, GridBlock{two.owned(1), two.owned(1)});
+        same.restoreWindow(state);
+        EXPECT_TRUE(same.windowTotals() == blocks.grids[1]->windowTotals());
+        DensityGrid other(spec, KernelSettings{}, 2, GridBlock{three.owned(1), three.owned(1)});
+        EXPECT_THROW(other.restoreWindow(state), std::invalid_argument);
+        DensityGrid whole(spec, KernelSettings{}, 2);
+        EXPECT_THROW(whole.restoreWindow(state), std::invalid_argument);
+        EXPECT_EQ(whole.saveWindow(DensityGrid::WindowStateFormat::DepositLog).counters[0], 3); // a log
+        EXPECT_EQ(whole.saveWindowValues().counters[0], 1); // ...and node values, unchanged
+    }
 }
 
 // A serial run's state decomposed onto processors: each block takes its part of the whole
@@ -377,23 +382,25 @@ TEST(GridBlocks, WholeGridWindowRestoresOntoEachBlock)
         }
         whole.commitStep();
     }
-    const WindowState state = whole.saveWindow();
     const GridPartition two = GridPartition::bisection(spec, 2);
-    for (int p = 0; p < 2; ++p)
-    {
-        DensityGrid block(spec, KernelSettings{}, 2, GridBlock{two.owned(p), two.owned(p)});
-        block.restoreWindow(state);
-        const IndexBox owned = two.owned(p);
-        for (int k = owned.lo[2]; k <= owned.hi[2]; ++k)
-            for (int j = owned.lo[1]; j <= owned.hi[1]; ++j)
-                for (int i = owned.lo[0]; i <= owned.hi[0]; ++i)
-                {
-                    const DropletFieldValue a = whole.nodeValue(i, j, k);
-                    const DropletFieldValue b = block.nodeValue(i, j, k);
-                    ASSERT_EQ(a.rho, b.rho);
-                    ASSERT_EQ(a.rMeanMass, b.rMeanMass);
-                    ASSERT_EQ(a.velocity, b.velocity);
-                }
-        EXPECT_EQ(block.committedSteps(), whole.committedSteps());
-    }
+    // Both formats: the deposit log, replayed, and the node values, cut out
+    for (const WindowState& state :
+         {whole.saveWindow(DensityGrid::WindowStateFormat::DepositLog), whole.saveWindowValues()})
+        for (int p = 0; p < 2; ++p)
+        {
+            DensityGrid block(spec, KernelSettings{}, 2, GridBlock{two.owned(p), two.owned(p)});
+            block.restoreWindow(state);
+            const IndexBox owned = two.owned(p);
+            for (int k = owned.lo[2]; k <= owned.hi[2]; ++k)
+                for (int j = owned.lo[1]; j <= owned.hi[1]; ++j)
+                    for (int i = owned.lo[0]; i <= owned.hi[0]; ++i)
+                    {
+                        const DropletFieldValue a = whole.nodeValue(i, j, k);
+                        const DropletFieldValue b = block.nodeValue(i, j, k);
+                        ASSERT_EQ(a.rho, b.rho);
+                        ASSERT_EQ(a.rMeanMass, b.rMeanMass);
+                        ASSERT_EQ(a.velocity, b.velocity);
+                    }
+            EXPECT_EQ(block.committedSteps(), whole.committedSteps());
+        }
 }
