@@ -47,13 +47,7 @@ std::vector<Parcel> readParcels(const std::string& path)
         check(6, "diameter");
         check(7, "droplet count");
         check(8, "droplet density");
-        Parcel p;
-        p.position = Eigen::Vector3d(v[0], v[1], v[2]);
-        p.velocity = Eigen::Vector3d(v[3], v[4], v[5]);
-        p.diameter = v[6];
-        p.nParticle = v[7];
-        p.rhoDroplet = v[8];
-        parcels.push_back(p);
+        parcels.push_back(parcelFromValues(v.data()));
     }
     return parcels;
 }

@@ -413,14 +413,7 @@ void AveragingWindow::restore(const WindowState& state)
     const std::size_t skip = boxes.size() > static_cast<std::size_t>(length_)
         ? boxes.size() - static_cast<std::size_t>(length_)
         : 0;
-    for (auto& slot : slots_)
-    {
-        slot.clear();
-    }
-    std::fill(slotBoxes_.begin(), slotBoxes_.end(), IndexBox{});
-    std::fill(total_.begin(), total_.end(), 0.0);
-    head_ = 0;
-    filled_ = 0;
+    clear(state.counters[7]);
     std::size_t position = 0;
     for (std::size_t s = 0; s < boxes.size(); ++s)
     {
@@ -435,9 +428,6 @@ void AveragingWindow::restore(const WindowState& state)
         }
         position += boxes[s].nodeCount() * static_cast<std::size_t>(nQuantities_);
     }
-    committed_ = state.counters[7];
-    staleBox_ = IndexBox{};
-    std::fill(summedAt_.begin(), summedAt_.end(), -1);
     recomputeTotal(box());
 }
 

@@ -65,10 +65,9 @@ void DepositLog::record(const Parcel& parcel, double dt)
         current_.runs.emplace_back(dt, 0);
     }
     ++current_.runs.back().second;
-    const double values[parcelValues]
-        = {parcel.position[0], parcel.position[1], parcel.position[2], parcel.velocity[0], parcel.velocity[1],
-           parcel.velocity[2], parcel.diameter,    parcel.nParticle,   parcel.rhoDroplet};
-    current_.parcels.insert(current_.parcels.end(), values, values + parcelValues);
+    const std::size_t end = current_.parcels.size();
+    current_.parcels.resize(end + parcelValues);
+    writeParcelValues(parcel, current_.parcels.data() + end);
 }
 
 void DepositLog::commit()
@@ -303,14 +302,7 @@ DepositLog::Saved DepositLog::read(const WindowState& state, const std::array<in
 
 Parcel DepositLog::parcel(const StepView& step, std::size_t p)
 {
-    const double* v = step.parcels + p * parcelValues;
-    Parcel parcel;
-    parcel.position = Eigen::Vector3d(v[0], v[1], v[2]);
-    parcel.velocity = Eigen::Vector3d(v[3], v[4], v[5]);
-    parcel.diameter = v[6];
-    parcel.nParticle = v[7];
-    parcel.rhoDroplet = v[8];
-    return parcel;
+    return parcelFromValues(step.parcels + p * parcelValues);
 }
 
 } // namespace dropletFiber

@@ -37,7 +37,7 @@ class DepositLog
 {
 public:
     // Numbers per logged parcel: position xyz, velocity xyz, diameter, nParticle, rhoDroplet.
-    static constexpr std::size_t parcelValues = 9;
+    static constexpr std::size_t parcelValues = parcelValueCount;
 
     // One step's log, or a view of a saved one.
     struct StepView

@@ -1,5 +1,7 @@
 #include "grid/Parcel.hpp"
 
+#include <algorithm>
+
 namespace dropletFiber
 {
 
@@ -13,6 +15,25 @@ double dropletMass(double diameter, double rhoDroplet)
 double parcelMass(const Parcel& parcel)
 {
     return parcel.nParticle * dropletMass(parcel.diameter, parcel.rhoDroplet);
+}
+
+void writeParcelValues(const Parcel& parcel, double* values)
+{
+    const double flat[parcelValueCount]
+        = {parcel.position[0], parcel.position[1], parcel.position[2], parcel.velocity[0], parcel.velocity[1],
+           parcel.velocity[2], parcel.diameter,    parcel.nParticle,   parcel.rhoDroplet};
+    std::copy(flat, flat + parcelValueCount, values);
+}
+
+Parcel parcelFromValues(const double* values)
+{
+    Parcel parcel;
+    parcel.position = Eigen::Vector3d(values[0], values[1], values[2]);
+    parcel.velocity = Eigen::Vector3d(values[3], values[4], values[5]);
+    parcel.diameter = values[6];
+    parcel.nParticle = values[7];
+    parcel.rhoDroplet = values[8];
+    return parcel;
 }
 
 } // namespace dropletFiber

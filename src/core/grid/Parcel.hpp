@@ -26,4 +26,11 @@ double dropletMass(double diameter, double rhoDroplet);
 // n m(r_p), the whole parcel.
 double parcelMass(const Parcel& parcel);
 
+// A parcel as flat numbers, the layout of every message, log and file that carries parcels
+// (the blocks' exchange, the deposit log, dropletGrid's input): position x y z, velocity
+// x y z, diameter, nParticle, rhoDroplet.
+constexpr int parcelValueCount = 9;
+void writeParcelValues(const Parcel& parcel, double* values);
+Parcel parcelFromValues(const double* values);
+
 } // namespace dropletFiber

@@ -49,8 +49,8 @@ std::vector<::dropletFiber::SubdomainBounds> subdomainBounds
 }
 
 
-//- Numbers per parcel sent: position, velocity, diameter, nParticle, rho
-constexpr Foam::label parcelValues = 9;
+//- Numbers per parcel sent (dropletFiber::writeParcelValues' layout)
+constexpr Foam::label parcelValues = ::dropletFiber::parcelValueCount;
 
 
 void appendParcel
@@ -59,29 +59,18 @@ void appendParcel
     const ::dropletFiber::Parcel& p
 )
 {
-    for (int d = 0; d < 3; ++d)
+    double values[parcelValues];
+    ::dropletFiber::writeParcelValues(p, values);
+    for (const double v : values)
     {
-        out.append(p.position[d]);
+        out.append(v);
     }
-    for (int d = 0; d < 3; ++d)
-    {
-        out.append(p.velocity[d]);
-    }
-    out.append(p.diameter);
-    out.append(p.nParticle);
-    out.append(p.rhoDroplet);
 }
 
 
 ::dropletFiber::Parcel readParcel(const scalar* in)
 {
-    ::dropletFiber::Parcel p;
-    p.position = Eigen::Vector3d(in[0], in[1], in[2]);
-    p.velocity = Eigen::Vector3d(in[3], in[4], in[5]);
-    p.diameter = in[6];
-    p.nParticle = in[7];
-    p.rhoDroplet = in[8];
-    return p;
+    return ::dropletFiber::parcelFromValues(in);
 }
 
 } // End anonymous namespace

@@ -9,6 +9,8 @@
 
 #include "../grid/TestGrids.hpp"
 
+#include "DepositedBlocks.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -70,36 +72,6 @@ void checkSharesAgainstDeposit(const GridSpec& spec, const KernelSettings& setti
     }
     EXPECT_GT(withMass, 200);
     EXPECT_GT(grid.lastStepStatistics().parcels, 0);
-}
-
-// The parcels deposited and committed on the whole grid and on a block per part of the
-// partition. Storage = the whole grid: the exchange is GridBlocksTest's business; here each
-// block gets the whole step (as after the exchange) and owns its box.
-std::vector<std::unique_ptr<DensityGrid>> depositedBlocks(const GridSpec& spec,
-                                                          const GridPartition& partition,
-                                                          const std::vector<Parcel>& parcels, double dt,
-                                                          DensityGrid& whole)
-{
-    std::vector<std::unique_ptr<DensityGrid>> blocks;
-    for (int b = 0; b < partition.processors(); ++b)
-    {
-        blocks.push_back(std::make_unique<DensityGrid>(spec, KernelSettings{}, 1,
-                                                       GridBlock{partition.owned(b), spec.fullBox()}));
-    }
-    for (const Parcel& parcel : parcels)
-    {
-        whole.deposit(parcel, dt);
-        for (auto& block : blocks)
-        {
-            block->deposit(parcel, dt);
-        }
-    }
-    whole.commitStep();
-    for (auto& block : blocks)
-    {
-        block->commitStep();
-    }
-    return blocks;
 }
 
 } // namespace
@@ -260,7 +232,8 @@ TEST(CaptureLimit, BlocksGivePartsThatAddUpToTheWholeGrids)
     const std::vector<Parcel> parcels = randomParcels(spec, 200, 8);
     DensityGrid whole(spec, KernelSettings{}, 1);
     const GridPartition partition = GridPartition::bisection(spec, 4);
-    std::vector<std::unique_ptr<DensityGrid>> blocks = depositedBlocks(spec, partition, parcels, dt, whole);
+    std::vector<std::unique_ptr<DensityGrid>> blocks
+        = test::depositedBlocks(spec, partition, parcels, dt, whole);
     // Demand at random nodes, some above the supply.
     std::mt19937_64 rng(2);
     std::uniform_int_distribution<std::size_t> anyNode(0, spec.nodeCount() - 1);
@@ -333,7 +306,8 @@ TEST(CaptureAttribution, OwnedCornersOfTheBlocksAddUpToTheWholeSample)
     const std::vector<Parcel> parcels = randomParcels(spec, 200, 11);
     DensityGrid whole(spec, KernelSettings{}, 1);
     const GridPartition partition = GridPartition::bisection(spec, 4);
-    std::vector<std::unique_ptr<DensityGrid>> blocks = depositedBlocks(spec, partition, parcels, dt, whole);
+    std::vector<std::unique_ptr<DensityGrid>> blocks
+        = test::depositedBlocks(spec, partition, parcels, dt, whole);
     std::mt19937_64 rng(5);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     int compared = 0;

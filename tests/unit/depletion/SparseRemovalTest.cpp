@@ -13,6 +13,8 @@
 
 #include "../grid/TestGrids.hpp"
 
+#include "DepositedBlocks.hpp"
+
 #include <gtest/gtest.h>
 
 #include <map>
@@ -122,25 +124,8 @@ Taken checkRemoval(const GridSpec& spec, int processors, unsigned seed)
     const std::vector<Parcel> parcels = sprayParcels(spec, 160, seed);
     DensityGrid whole(spec, settings, 1);
     const GridPartition partition = GridPartition::bisection(spec, processors);
-    std::vector<std::unique_ptr<DensityGrid>> blocks;
-    for (int b = 0; b < processors; ++b)
-    {
-        blocks.push_back(
-            std::make_unique<DensityGrid>(spec, settings, 1, GridBlock{partition.owned(b), spec.fullBox()}));
-    }
-    for (const Parcel& parcel : parcels)
-    {
-        whole.deposit(parcel, dt);
-        for (auto& block : blocks)
-        {
-            block->deposit(parcel, dt);
-        }
-    }
-    whole.commitStep();
-    for (auto& block : blocks)
-    {
-        block->commitStep();
-    }
+    std::vector<std::unique_ptr<DensityGrid>> blocks
+        = test::depositedBlocks(spec, partition, parcels, dt, whole, settings);
     CaptureLimit wholeLimit;
     addDemand(spec, whole, seed, wholeLimit);
     std::vector<CaptureLimit> blockLimits(blocks.size());
