@@ -15,9 +15,11 @@ extent, and their cells tile it (every cell in exactly one piece; neighbouring
 pieces share their boundary nodes, with the same values). The .series files
 list every written file.
 """
+import base64
 import json
 import math
 import os
+import struct
 import sys
 import xml.etree.ElementTree as ET
 
@@ -37,12 +39,23 @@ def check(ok, what):
     print(("ok: " if ok else "FAILED: ") + what)
 
 
+def array_values(da):
+    """An array's numbers: ASCII, or VTK's inline binary form (the grid): base64 of
+    a UInt64 byte count (header_type UInt64) and the little-endian doubles."""
+    if da.get("format") != "binary":
+        return [float(v) for v in (da.text or "").split()]
+    raw = base64.b64decode("".join((da.text or "").split()), validate=True)
+    (count,) = struct.unpack("<Q", raw[:8])
+    if count != len(raw) - 8:
+        raise ValueError("binary array %s: header says %d bytes, holds %d" % (da.get("Name"), count, len(raw) - 8))
+    return list(struct.unpack("<%dd" % (count // 8), raw[8:]))
+
+
 def arrays(piece, tag):
     block = piece.find(tag)
     result = {}
     for da in (block if block is not None else []):
-        values = [float(v) for v in (da.text or "").split()]
-        result[da.get("Name")] = (int(da.get("NumberOfComponents", "1")), values)
+        result[da.get("Name")] = (int(da.get("NumberOfComponents", "1")), array_values(da))
     return result
 
 

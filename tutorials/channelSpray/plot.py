@@ -4,11 +4,14 @@ density of the grid), and sigma along every fiber.
 
 Usage: /usr/bin/python3 plot.py [CASE_DIR] [OUTPUT_PNG]
 Reads postProcessing/dropletFiber/0/{dropletFiber.dat, the last fibers_*.vtp (a
-parallel run: fibers_*.pvtp and its pieces) and grid_*.vti} (plain XML, read with the standard library).
+parallel run: fibers_*.pvtp and its pieces) and grid_*.vti} (XML, the grid's arrays
+in VTK's base64 binary form; read with the standard library).
 """
+import base64
 import json
 import math
 import os
+import struct
 import sys
 import xml.etree.ElementTree as ET
 
@@ -37,8 +40,18 @@ def last_file(series):
     return os.path.join(out, json.load(open(os.path.join(out, series)))["files"][-1]["name"])
 
 
+def array_values(da):
+    """ASCII numbers, or VTK's inline binary form (the grid's arrays): base64 of a
+    UInt64 byte count followed by the little-endian doubles."""
+    if da.get("format") != "binary":
+        return [float(v) for v in (da.text or "").split()]
+    raw = base64.b64decode("".join((da.text or "").split()))
+    (count,) = struct.unpack("<Q", raw[:8])
+    return list(struct.unpack("<%dd" % (count // 8), raw[8:8 + count]))
+
+
 def data_arrays(block):
-    return {da.get("Name"): [float(v) for v in (da.text or "").split()] for da in block}
+    return {da.get("Name"): array_values(da) for da in block}
 
 
 rows = table(os.path.join(out, "dropletFiber.dat"))
