@@ -18,6 +18,8 @@
 #include "grid/SeparableLanes.hpp"
 #include "grid/SeparableWeight.hpp"
 
+#include "TestGrids.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -216,16 +218,8 @@ TEST(SeparableLanes, SeparableWeightsWithinTheRoundingAllowanceOfTheirDefinition
     // is tiny (absolute, at most 3 u / e of the peak: docs/model.md P16).
     const double h = 1e-3;
     const int lowest = -30;
-    std::array<std::vector<double>, 3> coordinate;
-    for (auto& c : coordinate)
-    {
-        for (int i = lowest; i <= 60; ++i)
-        {
-            c.push_back(i * h);
-        }
-    }
-    const std::array<const double*, 3> lattice{
-        {coordinate[0].data() - lowest, coordinate[1].data() - lowest, coordinate[2].data() - lowest}};
+    const test::TestLattice grid = test::testLattice(lowest, 60, h);
+    const std::array<const double*, 3>& lattice = grid.atIndexZero;
     const KernelSettings settings;
     const ParcelKernel kernel(2e-5, 2000.0, settings, 3);
     const long double gamma = kernel.gamma();

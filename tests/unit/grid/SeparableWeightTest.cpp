@@ -340,16 +340,8 @@ TEST(SeparableWeight, NormalisingSumFromTheAxisSumsIsTheSumOfTheNodeWeights)
     // weight between nodes, the sum stays), and a part of a row must be that part of the row.
     const double h = 1e-3;
     const int lowest = -30;
-    std::array<std::vector<double>, 3> coordinate;
-    for (auto& c : coordinate)
-    {
-        for (int i = lowest; i <= 60; ++i)
-        {
-            c.push_back(i * h);
-        }
-    }
-    const std::array<const double*, 3> lattice{
-        {coordinate[0].data() - lowest, coordinate[1].data() - lowest, coordinate[2].data() - lowest}};
+    const test::TestLattice grid = test::testLattice(lowest, 60, h);
+    const std::array<const double*, 3>& lattice = grid.atIndexZero;
     const KernelSettings settings;
     const ParcelKernel kernel(2e-5, 2000.0, settings, 3);
     const Eigen::Vector3d start(3.3e-3, 1.2e-3, 0.4e-3), displacement(2e-3, -1e-3, 0.5e-3);

@@ -6,6 +6,7 @@
 #include "grid/GridSpec.hpp"
 #include "grid/Parcel.hpp"
 
+#include <array>
 #include <random>
 #include <vector>
 
@@ -13,6 +14,28 @@ namespace dropletFiber
 {
 namespace test
 {
+
+// Lattice coordinates i h, i = lowest..highest, on each axis (ghost indices below 0
+// included), as SeparableWeight::prepare takes them: pointers at index 0.
+struct TestLattice
+{
+    std::array<std::vector<double>, 3> coordinate;
+    std::array<const double*, 3> atIndexZero;
+};
+
+inline TestLattice testLattice(int lowest, int highest, double h)
+{
+    TestLattice lattice;
+    for (std::size_t d = 0; d < 3; ++d)
+    {
+        for (int i = lowest; i <= highest; ++i)
+        {
+            lattice.coordinate[d].push_back(i * h);
+        }
+        lattice.atIndexZero[d] = lattice.coordinate[d].data() - lowest;
+    }
+    return lattice;
+}
 
 inline GridSpec grid2D(int nx = 31, int ny = 21)
 {
