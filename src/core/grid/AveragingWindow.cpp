@@ -11,14 +11,6 @@ namespace
 {
 constexpr std::int64_t formatVersion = 1;      // the whole grid
 constexpr std::int64_t blockFormatVersion = 2; // a block of it: its box after the header
-constexpr std::size_t headerSize = 8;
-
-std::string boxText(const IndexBox& box)
-{
-    return "(" + std::to_string(box.lo[0]) + " " + std::to_string(box.lo[1]) + " " + std::to_string(box.lo[2])
-        + ") to (" + std::to_string(box.hi[0]) + " " + std::to_string(box.hi[1]) + " "
-        + std::to_string(box.hi[2]) + ")";
-}
 
 IndexBox wholeGridBox(const std::array<int, 3>& nodes)
 {
@@ -330,51 +322,58 @@ WindowState AveragingWindow::save() const
     return state;
 }
 
-std::size_t AveragingWindow::savedHeaderSize(const WindowState& state, IndexBox& saved) const
+std::size_t readWindowStateHeader(const std::vector<std::int64_t>& c, std::int64_t wholeVersion,
+                                  std::int64_t blockVersion, const std::array<int, 3>& gridNodes,
+                                  int nQuantities, const IndexBox& region, const std::string& context,
+                                  IndexBox& saved)
 {
-    const std::vector<std::int64_t>& c = state.counters;
-    if (c.size() < headerSize || (c[0] != formatVersion && c[0] != blockFormatVersion))
+    const auto fail
+        = [&context](const std::string& what) { throw std::invalid_argument(context + ": " + what); };
+    if (c.size() < windowStateHeaderSize || (c[0] != wholeVersion && c[0] != blockVersion))
     {
-        failRestart("unknown format");
+        fail("unknown format");
     }
-    if (c[1] != gridNodes_[0] || c[2] != gridNodes_[1] || c[3] != gridNodes_[2])
+    if (c[1] != gridNodes[0] || c[2] != gridNodes[1] || c[3] != gridNodes[2])
     {
-        failRestart("saved for a grid of " + std::to_string(c[1]) + "x" + std::to_string(c[2]) + "x"
-                    + std::to_string(c[3]) + " nodes, this grid has " + std::to_string(gridNodes_[0]) + "x"
-                    + std::to_string(gridNodes_[1]) + "x" + std::to_string(gridNodes_[2]));
+        fail("saved for a grid of " + std::to_string(c[1]) + "x" + std::to_string(c[2]) + "x"
+             + std::to_string(c[3]) + " nodes, this grid has " + std::to_string(gridNodes[0]) + "x"
+             + std::to_string(gridNodes[1]) + "x" + std::to_string(gridNodes[2]));
     }
-    saved = wholeGridBox(gridNodes_);
-    if (c[0] == blockFormatVersion)
+    if (c[4] != nQuantities)
     {
-        if (c.size() < headerSize + 6)
+        fail("different number of quantities per node");
+    }
+    saved = wholeGridBox(gridNodes);
+    const std::size_t size = c[0] == blockVersion ? windowStateHeaderSize + 6 : windowStateHeaderSize;
+    if (c[0] == blockVersion)
+    {
+        if (c.size() < size)
         {
-            failRestart("unknown format");
+            fail("unknown format");
         }
         for (std::size_t d = 0; d < 3; ++d)
         {
-            saved.lo[d] = static_cast<int>(c[headerSize + d]);
-            saved.hi[d] = static_cast<int>(c[headerSize + 3 + d]);
+            saved.lo[d] = static_cast<int>(c[windowStateHeaderSize + d]);
+            saved.hi[d] = static_cast<int>(c[windowStateHeaderSize + 3 + d]);
         }
     }
     // A state of a larger region (the whole grid of a serial run, decomposed) gives this
     // window its part; a smaller or another block cannot.
-    if (saved.intersected(region_) != region_)
+    if (saved.empty() || saved.intersected(region) != region)
     {
-        failRestart("saved for the block " + boxText(saved) + " of the grid's nodes, this window holds "
-                    + boxText(region_));
+        fail("saved for the block " + boxText(saved) + " of the grid's nodes, this window holds "
+             + boxText(region));
     }
-    return c[0] == blockFormatVersion ? headerSize + 6 : headerSize;
+    return size;
 }
 
 std::vector<IndexBox> AveragingWindow::savedSlotBoxes(const WindowState& state) const
 {
     IndexBox saved;
-    const std::size_t header = savedHeaderSize(state, saved);
+    const std::size_t header
+        = readWindowStateHeader(state.counters, formatVersion, blockFormatVersion, gridNodes_, nQuantities_,
+                                region_, "averaging window restart", saved);
     const std::vector<std::int64_t>& c = state.counters;
-    if (c[4] != nQuantities_)
-    {
-        failRestart("different number of quantities per node");
-    }
     const std::int64_t savedFilled = c[6];
     if (savedFilled < 0 || savedFilled > c[5]
         || c.size() != header + 6 * static_cast<std::size_t>(savedFilled))

@@ -40,6 +40,7 @@
 
 #include <array>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace dropletFiber
@@ -63,6 +64,19 @@ struct WindowState
     std::vector<std::int64_t> counters;
     std::vector<double> values;
 };
+
+// The header both restart formats of a window begin with (AveragingWindow's node values,
+// DepositLog's parcels): {format version, nx, ny, nz, nQuantities, length, filled steps,
+// committed steps}, in the block version followed by the saved block's lo x y z hi x y z.
+constexpr std::size_t windowStateHeaderSize = 8;
+// That header checked against a grid of gridNodes nodes, nQuantities and a window over
+// `region` (the saved block must hold it: the same block, or the whole grid of a serial
+// run); `saved`: the saved block. Returns the counters' length up to the per-step entries.
+// Throws std::invalid_argument, its message starting with `context`.
+std::size_t readWindowStateHeader(const std::vector<std::int64_t>& counters, std::int64_t wholeVersion,
+                                  std::int64_t blockVersion, const std::array<int, 3>& gridNodes,
+                                  int nQuantities, const IndexBox& region, const std::string& context,
+                                  IndexBox& saved);
 
 class AveragingWindow
 {
@@ -123,8 +137,6 @@ private:
     // The slot boxes of a saved state, checked against this grid and the state's value
     // count; throws std::invalid_argument naming what does not fit.
     std::vector<IndexBox> savedSlotBoxes(const WindowState& state) const;
-    // Checks the saved format, grid and block; the number of counters before the slot boxes.
-    std::size_t savedHeaderSize(const WindowState& state, IndexBox& saved) const;
     // The part `kept` of a saved slot whose values cover savedBox, into slot (this region).
     void copySavedSlot(const double* saved, const IndexBox& savedBox, const IndexBox& kept,
                        std::vector<double>& slot) const;

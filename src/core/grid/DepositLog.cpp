@@ -13,7 +13,6 @@ namespace
 {
 constexpr std::int64_t formatVersion = 3;      // the whole grid
 constexpr std::int64_t blockFormatVersion = 4; // a block of it: its box after the header
-constexpr std::size_t headerSize = 8;
 constexpr const char* parcelValueNames[DepositLog::parcelValues]
     = {"position x", "position y", "position z", "velocity x", "velocity y",
        "velocity z", "diameter",   "nParticle",  "rhoDroplet"};
@@ -21,13 +20,6 @@ constexpr const char* parcelValueNames[DepositLog::parcelValues]
 [[noreturn]] void failRestart(const std::string& what)
 {
     throw std::invalid_argument("averaging window restart (deposit log): " + what);
-}
-
-std::string boxText(const IndexBox& box)
-{
-    return "(" + std::to_string(box.lo[0]) + " " + std::to_string(box.lo[1]) + " " + std::to_string(box.lo[2])
-        + ") to (" + std::to_string(box.hi[0]) + " " + std::to_string(box.hi[1]) + " "
-        + std::to_string(box.hi[2]) + ")";
 }
 
 std::string valueText(double v)
@@ -167,50 +159,6 @@ bool DepositLog::holdsLog(const WindowState& state)
 
 namespace
 {
-// The saved region (the whole grid, or the block after the header), checked against the
-// grid and the window's region; returns the header's size.
-std::size_t readHeader(const std::vector<std::int64_t>& c, const std::array<int, 3>& gridNodes,
-                       const IndexBox& region, int nQuantities, IndexBox& saved)
-{
-    if (c.size() < headerSize || (c[0] != formatVersion && c[0] != blockFormatVersion))
-    {
-        failRestart("unknown format");
-    }
-    if (c[1] != gridNodes[0] || c[2] != gridNodes[1] || c[3] != gridNodes[2])
-    {
-        failRestart("saved for a grid of " + std::to_string(c[1]) + "x" + std::to_string(c[2]) + "x"
-                    + std::to_string(c[3]) + " nodes, this grid has " + std::to_string(gridNodes[0]) + "x"
-                    + std::to_string(gridNodes[1]) + "x" + std::to_string(gridNodes[2]));
-    }
-    if (c[4] != nQuantities)
-    {
-        failRestart("different number of quantities per node");
-    }
-    saved.lo = {{0, 0, 0}};
-    saved.hi = {{gridNodes[0] - 1, gridNodes[1] - 1, gridNodes[2] - 1}};
-    const std::size_t size = c[0] == blockFormatVersion ? headerSize + 6 : headerSize;
-    if (c[0] == blockFormatVersion)
-    {
-        if (c.size() < size)
-        {
-            failRestart("unknown format");
-        }
-        for (std::size_t d = 0; d < 3; ++d)
-        {
-            saved.lo[d] = static_cast<int>(c[headerSize + d]);
-            saved.hi[d] = static_cast<int>(c[headerSize + 3 + d]);
-        }
-    }
-    // The log of a larger region (the whole grid of a serial run, decomposed) holds every
-    // parcel this window's nodes got; that of a smaller or another block does not.
-    if (saved.empty() || saved.intersected(region) != region)
-    {
-        failRestart("saved for the block " + boxText(saved) + " of the grid's nodes, this window holds "
-                    + boxText(region));
-    }
-    return size;
-}
-
 // One step's runs and parcels checked: counts, and every value allowed.
 void checkStep(const DepositLog::StepView& step, std::size_t first, std::size_t s, std::size_t steps)
 {
@@ -259,7 +207,9 @@ DepositLog::Saved DepositLog::read(const WindowState& state, const std::array<in
 {
     const std::vector<std::int64_t>& c = state.counters;
     Saved saved;
-    const std::size_t header = readHeader(c, gridNodes, region, nQuantities, saved.region);
+    const std::size_t header
+        = readWindowStateHeader(c, formatVersion, blockFormatVersion, gridNodes, nQuantities, region,
+                                "averaging window restart (deposit log)", saved.region);
     const std::int64_t steps = c[6];
     if (c[5] < 1 || steps < 0 || steps > c[5] || c[7] < steps
         || c.size() != header + 2 * static_cast<std::size_t>(steps))

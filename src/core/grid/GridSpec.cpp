@@ -8,6 +8,13 @@
 namespace dropletFiber
 {
 
+std::string boxText(const IndexBox& box)
+{
+    return "(" + std::to_string(box.lo[0]) + " " + std::to_string(box.lo[1]) + " " + std::to_string(box.lo[2])
+        + ") to (" + std::to_string(box.hi[0]) + " " + std::to_string(box.hi[1]) + " "
+        + std::to_string(box.hi[2]) + ")";
+}
+
 std::size_t IndexBox::nodeCount() const
 {
     if (empty())

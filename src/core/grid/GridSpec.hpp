@@ -24,6 +24,7 @@
 
 #include <array>
 #include <cstddef>
+#include <string>
 #include <utility>
 
 namespace dropletFiber
@@ -50,6 +51,9 @@ struct IndexBox
     bool operator==(const IndexBox& other) const { return lo == other.lo && hi == other.hi; }
     bool operator!=(const IndexBox& other) const { return !(*this == other); }
 };
+
+// "(lo x y z) to (hi x y z)", for messages.
+std::string boxText(const IndexBox& box);
 
 // Flat index i + nx * (j + ny * k) of node (i, j, k) in a grid of `nodes` nodes per direction.
 inline std::size_t flatNodeIndex(const std::array<int, 3>& nodes, int i, int j, int k)
