@@ -220,11 +220,8 @@ CaptureLimitReport CaptureLimit::limit(const DensityGrid& grid)
 void CaptureLimit::markTaken(std::size_t node, const std::array<int, 3>& nodes)
 {
     takenNodesStale_ = true;
-    const auto nx = static_cast<std::size_t>(nodes[0]);
-    const auto ny = static_cast<std::size_t>(nodes[1]);
     IndexBox one;
-    one.lo = one.hi = {{static_cast<int>(node % nx), static_cast<int>((node / nx) % ny),
-                        static_cast<int>(node / (nx * ny))}};
+    one.lo = one.hi = nodeIndicesOfFlat(nodes, node);
     takenBox_ = takenBox_.united(one);
     const std::size_t brick = brickIndex(one.lo[0] / brickSize, one.lo[1] / brickSize, one.lo[2] / brickSize);
     takenBrick_.resize(bricks_[0] * bricks_[1] * bricks_[2], 0);

@@ -31,18 +31,8 @@ IndexBox wholeGridBox(const std::array<int, 3>& nodes)
 
 bool AveragingWindow::boxHolds(const IndexBox& box, std::size_t node) const
 {
-    const std::size_t nx = static_cast<std::size_t>(nodes_[0]);
-    const std::size_t ny = static_cast<std::size_t>(nodes_[1]);
-    const std::array<int, 3> index{{static_cast<int>(node % nx), static_cast<int>((node / nx) % ny),
-                                    static_cast<int>(node / (nx * ny))}};
-    for (int d = 0; d < 3; ++d)
-    {
-        if (index[d] < box.lo[d] || index[d] > box.hi[d])
-        {
-            return false;
-        }
-    }
-    return true;
+    const std::array<int, 3> index = nodeIndicesOfFlat(nodes_, node);
+    return box.holds(index[0], index[1], index[2]);
 }
 
 AveragingWindow::AveragingWindow(const std::array<int, 3>& nodes, int nQuantities, int length)

@@ -947,10 +947,7 @@ double DensityGrid::negligibleDistance(const ParcelKernel& kernel, double pathLe
 
 std::array<int, 3> DensityGrid::nodeIndices(std::size_t node) const
 {
-    const auto nx = static_cast<std::size_t>(spec_.nodes[0]);
-    const auto ny = static_cast<std::size_t>(spec_.nodes[1]);
-    return {{static_cast<int>(node % nx), static_cast<int>((node / nx) % ny),
-             static_cast<int>(node / (nx * ny))}};
+    return nodeIndicesOfFlat(spec_.nodes, node);
 }
 
 double* DensityGrid::stepValuesOfBlockNode(std::size_t node)
@@ -1243,12 +1240,8 @@ DropletFieldValue DensityGrid::fieldFromSums(const std::array<double, nQuantitie
 
 double DensityGrid::cellsPerNodeVolume(std::size_t flatIndex) const
 {
-    const auto nx = static_cast<std::size_t>(spec_.nodes[0]);
-    const auto ny = static_cast<std::size_t>(spec_.nodes[1]);
-    const int i = static_cast<int>(flatIndex % nx);
-    const int j = static_cast<int>((flatIndex / nx) % ny);
-    const int k = static_cast<int>(flatIndex / (nx * ny));
-    return std::ldexp(1.0, spec_.boundaryDirections(i, j, k));
+    const std::array<int, 3> n = nodeIndices(flatIndex);
+    return std::ldexp(1.0, spec_.boundaryDirections(n[0], n[1], n[2]));
 }
 
 bool DensityGrid::owns(std::size_t node) const

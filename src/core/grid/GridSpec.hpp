@@ -63,6 +63,15 @@ inline std::size_t flatNodeIndex(const std::array<int, 3>& nodes, int i, int j, 
         * (static_cast<std::size_t>(j) + static_cast<std::size_t>(nodes[1]) * static_cast<std::size_t>(k));
 }
 
+// Its inverse: the grid indices (i, j, k) of flat node index `node`.
+inline std::array<int, 3> nodeIndicesOfFlat(const std::array<int, 3>& nodes, std::size_t node)
+{
+    const auto nx = static_cast<std::size_t>(nodes[0]);
+    const auto ny = static_cast<std::size_t>(nodes[1]);
+    return {{static_cast<int>(node % nx), static_cast<int>((node / nx) % ny),
+             static_cast<int>(node / (nx * ny))}};
+}
+
 // Flat index of node (i, j, k) among the nodes of `region` (i fastest): the storage of a
 // block of the grid (DensityGrid's storage box, AveragingWindow's region).
 inline std::size_t flatIndexInBox(const IndexBox& region, int i, int j, int k)

@@ -7,12 +7,9 @@ namespace dropletFiber
 
 void SparseNodeValues::assign(std::vector<NodeValue> nodes, const std::array<int, 3>& gridNodes)
 {
-    const auto nx = static_cast<std::size_t>(gridNodes[0]);
-    const auto ny = static_cast<std::size_t>(gridNodes[1]);
     for (NodeValue& entry : nodes)
     {
-        entry.index = {{static_cast<int>(entry.node % nx), static_cast<int>((entry.node / nx) % ny),
-                        static_cast<int>(entry.node / (nx * ny))}};
+        entry.index = nodeIndicesOfFlat(gridNodes, entry.node);
     }
     // Stable: of several entries of a node the last one given is kept (an overwritten value).
     std::stable_sort(nodes.begin(), nodes.end(),

@@ -132,12 +132,9 @@ Foam::dropletFiber::gridBlocks::gridBlocks
 
 Foam::label Foam::dropletFiber::gridBlocks::ownerOf(const std::size_t node) const
 {
-    const std::size_t nx = std::size_t(spec_.nodes[0]);
-    const std::size_t ny = std::size_t(spec_.nodes[1]);
-    return partition_.owner
-    (
-        int(node % nx), int((node/nx) % ny), int(node/(nx*ny))
-    );
+    const std::array<int, 3> index =
+        ::dropletFiber::nodeIndicesOfFlat(spec_.nodes, node);
+    return partition_.owner(index[0], index[1], index[2]);
 }
 
 
