@@ -319,13 +319,12 @@ double CaptureLimit::takenFraction(std::size_t node) const
 
 std::vector<NodeMass> CaptureLimit::takenFractions() const
 {
+    // taken_ in node order, as the sparse sums keep it
     std::vector<NodeMass> fractions;
-    for (const auto& [node, fraction] : taken_)
+    for (const NodeValue& entry : takenNodes().nodes())
     {
-        fractions.push_back(NodeMass{node, fraction});
+        fractions.push_back(NodeMass{entry.node, entry.value});
     }
-    std::sort(fractions.begin(), fractions.end(),
-              [](const NodeMass& x, const NodeMass& y) { return x.node < y.node; });
     return fractions;
 }
 
