@@ -139,7 +139,7 @@ void SeparableWeight::prepare(const PathWeight& path, const Eigen::Vector3d& sta
         axisTable(d, coordinates[static_cast<std::size_t>(d)], lo[static_cast<std::size_t>(d)],
                   hi[static_cast<std::size_t>(d)], path.kernel().gamma(), start, displacement);
     }
-    prepareRows();
+    rowsPrepared_ = false; // built by the first row(): fold() may change the tables first
 }
 
 void SeparableWeight::axisTable(int d, const double* coordinate, int lo, int hi, double gamma,
@@ -187,7 +187,7 @@ void SeparableWeight::fold(const std::array<std::vector<int>, 3>& image, const s
         factor_[d].swap(folded_[d]);
         length_[d] = m;
     }
-    prepareRows();
+    rowsPrepared_ = false; // built by the first row(): fold() may change the tables first
 }
 
 const double* SeparableWeight::row(int j, int k)
@@ -202,6 +202,10 @@ const double* SeparableWeight::row(int j, int k, std::size_t first, std::size_t 
         || static_cast<std::size_t>(k) >= length_[2])
     {
         throw std::out_of_range("SeparableWeight::row: a row or positions beyond the box");
+    }
+    if (!rowsPrepared_)
+    {
+        prepareRows();
     }
     const auto points = static_cast<std::size_t>(points_);
     const double* y = pointMajor_[0].data() + static_cast<std::size_t>(j) * points;
@@ -255,6 +259,7 @@ double SeparableWeight::omega(int i, int j, int k) const
 
 void SeparableWeight::prepareRows()
 {
+    rowsPrepared_ = true;
     rowOmega_.resize(length_[0]);
     const auto points = static_cast<std::size_t>(points_);
     for (std::size_t d = 1; d < 3; ++d)

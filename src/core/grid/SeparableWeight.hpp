@@ -121,7 +121,8 @@ private:
     // The Gaussian factors of one axis, q-major: exp(-gamma (x_i - c_q,d)^2).
     void axisTable(int d, const double* coordinate, int lo, int hi, double gamma,
                    const Eigen::Vector3d& start, const Eigen::Vector3d& displacement);
-    // After prepare() or fold(): the row's working memory and pointMajor_.
+    // The row's working memory and pointMajor_ for the present tables, once per prepare() (or
+    // fold()), at the first row(): not twice for a folded kernel.
     void prepareRows();
 
     bool lanes_; // vectorised()
@@ -134,6 +135,7 @@ private:
     // The y and z tables point-major (index i of axis d at [i Q + q]), so that a row's Q
     // factors W_q Y_q(j) Z_q(k) are read contiguously (per row, not per node).
     std::array<std::vector<double>, 2> pointMajor_;
+    bool rowsPrepared_ = false;
     std::array<double, maximumPoints> rowFactor_{};
     std::vector<double> rowOmega_;
 };
