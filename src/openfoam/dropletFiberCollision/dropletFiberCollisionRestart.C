@@ -111,14 +111,6 @@ std::vector<std::int64_t> windowCounters(const dictionary& state)
 }
 
 
-//- True when the counters are those of node values (formats 1 and 2), not
-//  of a deposit log
-bool nodeValuesFormat(const std::vector<std::int64_t>& counters)
-{
-    return counters.empty() || counters[0] <= 2;
-}
-
-
 //- The window's values, read from file and each checked: finite, and for
 //  node values the sums of masses, counts and radii not negative (momenta
 //  may be); a deposit log's parcels are checked by the core
@@ -673,7 +665,7 @@ void Foam::functionObjects::dropletFiberCollision::restoreWindow
     (
         file,
         requiredCount(state, "gridWindowValueCount"),
-        nodeValuesFormat(window.counters)
+        !::dropletFiber::DepositLog::holdsLog(window)
     );
     // The core checks the layout against this grid (sizes, slot boxes, the
     // logged parcels) and replays a log of the parcels deposited
