@@ -38,13 +38,7 @@ std::vector<Parcel> sprayParcels(const GridSpec& spec, int count, unsigned seed)
     for (int n = static_cast<int>(parcels.size()); n < count; ++n)
     {
         Parcel p;
-        for (int d = 0; d < 3; ++d)
-        {
-            const double size = spec.upper[d] - spec.lower[d];
-            p.position[d] = spec.flat(d) ? 0.5 * (spec.lower[d] + spec.upper[d])
-                                         : spec.lower[d] - 0.05 * size + 1.1 * size * unit(rng);
-            p.velocity[d] = spec.flat(d) ? 0.0 : (n % 4 == 0 ? 0.0 : 30.0 * (unit(rng) - 0.5));
-        }
+        test::placeRandomly(spec, n % 4 == 0 ? 0.0 : 30.0, rng, p);
         p.diameter = 2e-5 + 6e-5 * unit(rng);
         p.nParticle = 300.0 + 3000.0 * unit(rng);
         p.rhoDroplet = 1000.0;

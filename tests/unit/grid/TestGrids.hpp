@@ -57,6 +57,21 @@ inline GridSpec grid3D()
 
 // Parcels anywhere in and a little beyond the box, wide and narrow kernels (the narrow
 // ones go to the cell corners or the zero-weight fallback), moving and still.
+// A random end position in the box grown by 5 % beyond each face (the middle of the node
+// layer in flat directions) and velocity components uniform in +-speed/2 (speed 0: a
+// stationary parcel, no draw), axis by axis.
+inline void placeRandomly(const GridSpec& spec, double speed, std::mt19937_64& rng, Parcel& p)
+{
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int d = 0; d < 3; ++d)
+    {
+        const double size = spec.upper[d] - spec.lower[d];
+        p.position[d] = spec.flat(d) ? 0.5 * (spec.lower[d] + spec.upper[d])
+                                     : spec.lower[d] - 0.05 * size + 1.1 * size * unit(rng);
+        p.velocity[d] = spec.flat(d) ? 0.0 : (speed == 0.0 ? 0.0 : speed * (unit(rng) - 0.5));
+    }
+}
+
 inline std::vector<Parcel> randomParcels(const GridSpec& spec, int count, unsigned seed)
 {
     std::mt19937_64 rng(seed);
@@ -65,13 +80,7 @@ inline std::vector<Parcel> randomParcels(const GridSpec& spec, int count, unsign
     for (int n = 0; n < count; ++n)
     {
         Parcel p;
-        for (int d = 0; d < 3; ++d)
-        {
-            const double size = spec.upper[d] - spec.lower[d];
-            p.position[d] = spec.flat(d) ? 0.5 * (spec.lower[d] + spec.upper[d])
-                                         : spec.lower[d] - 0.05 * size + 1.1 * size * unit(rng);
-            p.velocity[d] = spec.flat(d) ? 0.0 : (n % 5 == 0 ? 0.0 : 4.0 * (unit(rng) - 0.5));
-        }
+        placeRandomly(spec, n % 5 == 0 ? 0.0 : 4.0, rng, p);
         p.diameter = 2e-5 * (0.5 + unit(rng));
         p.nParticle = n % 3 == 0 ? 2.0 : 20.0 + 200.0 * unit(rng);
         p.rhoDroplet = 1000.0;
