@@ -128,10 +128,7 @@ double accumulateOnly(const DensityGrid& grid, const std::vector<Parcel>& parcel
         {
             for (int j = box.lo[1]; j <= box.hi[1]; ++j)
             {
-                const std::size_t first = (static_cast<std::size_t>(k) * static_cast<std::size_t>(nodes[1])
-                                           + static_cast<std::size_t>(j))
-                        * static_cast<std::size_t>(nodes[0])
-                    + static_cast<std::size_t>(box.lo[0]);
+                const std::size_t first = flatNodeIndex(nodes, box.lo[0], j, k);
                 double* v = values.data() + first * nQuantities;
                 const std::size_t count = static_cast<std::size_t>(box.hi[0] - box.lo[0] + 1);
                 for (std::size_t i = 0; i < count * nQuantities; i += nQuantities)
