@@ -52,6 +52,8 @@ expectError grid/vectorised maybe "Entry 'vectorised' is 'maybe': allowed are tr
 expectError grid/vectorised 2 "Entry 'vectorised' is '2': allowed are true or false"
 expectError writeVtk 2 "Entry 'writeVtk' is '2': allowed are true or false"
 expectError gather fast "Entry 'gather' is 'fast': allowed are"
+expectError windowState compact "Entry 'windowState' is 'compact': allowed are"
+expectError writeWindowValues 2 "Entry 'writeWindowValues' is '2': allowed are true or false"
 expectError grid/radiusAverage median "Entry 'radiusAverage' is 'median': allowed are"
 expectError collision "{ radiusAverage median; }" "Entry 'radiusAverage' is 'median': allowed are"
 expectError fibers/maxSubSteps 0 "Entry 'maxSubSteps' is 0"
