@@ -5,9 +5,14 @@
 # time and the widest kernels the function object reported: the cost of spray
 # parcels of many droplets (docs/performance.md, wide kernels).
 #
-# Usage: bench/spray3D/run.sh [-baseline] [libDir]
+# Usage: bench/spray3D/run.sh [-baseline] [-refine R] [libDir]
 #   libDir     folder with the libdropletFiber.so to measure (default: the one
 #              ./Allwmake built, $FOAM_USER_LIBBIN)
+#   -refine R  the CFD mesh R times finer in every direction (25R x 75R x 5R
+#              cells) and the time step R times shorter; the grid, the spray
+#              (parcels per second), the fibers and the function object
+#              unchanged: the case whose CFD dominates (target (a) of
+#              docs/performance.md for this case)
 #   -baseline  also run the same case without the function object (the cloud and
 #              the air unchanged) and print the whole function object's cost as
 #              the difference of the two runs' ExecutionTime (CPU time): every
@@ -36,10 +41,18 @@ root="$(cd "$here/../.." && pwd)"
 . "$root/bin/functions.sh"
 loadFoamEnvironment
 baseline=false
-if [ "${1:-}" = -baseline ]; then
-    baseline=true
+refine=1
+while [ $# -gt 0 ]; do
+    case "$1" in
+        -baseline) baseline=true ;;
+        -refine) [ $# -ge 2 ] || die "spray3D: -refine needs a value"; refine="$2"; shift ;;
+        *) break ;;
+    esac
     shift
-fi
+done
+case "$refine" in
+    '' | *[!0-9]* | 0) die "spray3D: -refine takes a positive integer, got '$refine'" ;;
+esac
 lib="${1:-$FOAM_USER_LIBBIN}"
 [ -f "$lib/libdropletFiber.so" ] || die "no libdropletFiber.so in $lib"
 lib="$(cd "$lib" && pwd)"
@@ -61,7 +74,7 @@ text = open(path).read()
 open(path, "w").write(text.replace(old, new))
 PY
 }
-edit system/blockMeshDict "(25 75 1)" "(25 75 5)"
+edit system/blockMeshDict "(25 75 1)" "($((25 * refine)) $((75 * refine)) $((5 * refine)))"
 edit system/blockMeshDict "type empty;" "type wall;"
 python3 - <<'PY'
 # frontAndBack: no-slip walls for the air (U), zero gradient for p
@@ -87,6 +100,11 @@ edit constant/kinematicCloudProperties "            outlet
 foamDictionary system/controlDict -entry functions/dropletFiber/grid/rMaxCap -remove > /dev/null
 ! grep -q rMaxCap system/controlDict || die "spray3D: could not remove rMaxCap"
 foamDictionary system/controlDict -entry endTime -set "$endTime" > /dev/null
+if [ "$refine" != 1 ]; then
+    deltaT="$(foamDictionary -entry deltaT -value system/controlDict)"
+    foamDictionary system/controlDict -entry deltaT \
+        -set "$(python3 -c "print($deltaT / $refine)")" > /dev/null
+fi
 foamDictionary system/controlDict -entry writeInterval -set "$(python3 -c "print($endTime / 4)")" > /dev/null
 
 cp -r 0.orig 0

@@ -237,6 +237,27 @@ void AveragingWindow::nodeTotal(std::size_t node, double* sums) const
     std::copy(total, total + q, sums);
 }
 
+void AveragingWindow::prefetchNodeTotal(std::size_t node) const
+{
+    const std::size_t q = static_cast<std::size_t>(nQuantities_);
+    const std::size_t offset = node * q;
+    const auto request = [q](const double* values)
+    {
+        // A node's values may straddle two cache lines
+        __builtin_prefetch(values);
+        __builtin_prefetch(values + q - 1);
+    };
+    if (summedAt_[node] == committed_ || !boxHolds(staleBox_, node))
+    {
+        request(total_.data() + offset);
+        return;
+    }
+    for (int age = 0; age < filled_; ++age)
+    {
+        request(slots_[slotIndex(age)].data() + offset);
+    }
+}
+
 void AveragingWindow::recomputeTotal(const IndexBox& box) const
 {
     forEachBoxRow(box,

@@ -102,6 +102,11 @@ public:
     const std::vector<double>& total() const;
     // The window total of one node, nQuantities values into `sums` (no full update).
     void nodeTotal(std::size_t node, double* sums) const;
+    // Requests the memory nodeTotal(node) will read (its W slots' values when they are to
+    // be summed), so that the reads of several nodes overlap instead of waiting for each
+    // cache miss in turn: the collision's sample corners are scattered over slots of
+    // megabytes. No effect on any value.
+    void prefetchNodeTotal(std::size_t node) const;
     // Quantity q of the newest committed step at a node of the region (0 before any).
     double newestStepValue(std::size_t node, int q) const;
     int length() const { return length_; }

@@ -1325,6 +1325,23 @@ void DensityGrid::addOwnedCornerSums(const CornerWeights& corners,
     }
 }
 
+void DensityGrid::prefetchOwnedCornerSums(const CornerWeights& corners) const
+{
+    for (int c = 0; c < corners.count; ++c)
+    {
+        const std::size_t node = corners.node[static_cast<std::size_t>(c)];
+        if (ownsWholeGrid_)
+        {
+            window_.prefetchNodeTotal(node);
+        }
+        else if (owns(node))
+        {
+            const std::array<int, 3> n = nodeIndices(node);
+            window_.prefetchNodeTotal(flatIndexInBox(owned_, n[0], n[1], n[2]));
+        }
+    }
+}
+
 DropletFieldValue DensityGrid::interpolated(const CornerWeights& corners, const double* cornerTotals) const
 {
     std::array<double, nQuantities> sums{};

@@ -283,6 +283,9 @@ public:
     // that own a point's corners, they are sample()'s sums; fieldFromCornerSums() then gives
     // its value (the whole grid: the same arithmetic, in the same order, to the bit).
     void addOwnedCornerSums(const CornerWeights& corners, std::array<double, nQuantities>& sums) const;
+    // Requests the memory addOwnedCornerSums(corners, ...) will read: called a few points
+    // ahead, it overlaps their cache misses (AveragingWindow::prefetchNodeTotal).
+    void prefetchOwnedCornerSums(const CornerWeights& corners) const;
     DropletFieldValue fieldFromCornerSums(const std::array<double, nQuantities>& sums) const
     {
         return fieldFromSums(sums);

@@ -424,17 +424,34 @@ Foam::dropletFiber::gridBlocks::sample
     {
         outgoing_[proci].clear();
     }
-    // This block's corners here; the other owners of a point's corners are
-    // sent the point once each
+    std::vector<::dropletFiber::CornerWeights> cornersOf(points.size());
     for (std::size_t p = 0; p < points.size(); ++p)
     {
         inside[p] = ::dropletFiber::insideActiveBox(spec_, points[p]);
+        if (inside[p])
+        {
+            cornersOf[p] = ::dropletFiber::multilinearWeights(spec_, points[p]);
+        }
+    }
+    // This block's corners here, their window sums requested a few points
+    // ahead (each corner's W slots are megabytes apart: the misses overlap);
+    // the other owners of a point's corners are sent the point once each
+    const std::size_t ahead = 8;
+    for (std::size_t p = 0; p < std::min(ahead, points.size()); ++p)
+    {
+        grid.prefetchOwnedCornerSums(cornersOf[p]);
+    }
+    for (std::size_t p = 0; p < points.size(); ++p)
+    {
+        if (p + ahead < points.size())
+        {
+            grid.prefetchOwnedCornerSums(cornersOf[p + ahead]);
+        }
         if (!inside[p])
         {
             continue;
         }
-        const ::dropletFiber::CornerWeights corners =
-            ::dropletFiber::multilinearWeights(spec_, points[p]);
+        const ::dropletFiber::CornerWeights& corners = cornersOf[p];
         grid.addOwnedCornerSums(corners, sums[p]);
         if (Pstream::parRun())
         {
