@@ -13,6 +13,7 @@
 #              (parcels per second), the fibers and the function object
 #              unchanged: the case whose CFD dominates (target (a) of
 #              docs/performance.md for this case)
+#   -spacing S the grid's node spacing in m (default: the tutorial's 1e-3)
 #   -baseline  also run the same case without the function object (the cloud and
 #              the air unchanged) and print the whole function object's cost as
 #              the difference of the two runs' ExecutionTime (CPU time): every
@@ -42,10 +43,12 @@ root="$(cd "$here/../.." && pwd)"
 loadFoamEnvironment
 baseline=false
 refine=1
+spacing=
 while [ $# -gt 0 ]; do
     case "$1" in
         -baseline) baseline=true ;;
         -refine) [ $# -ge 2 ] || die "spray3D: -refine needs a value"; refine="$2"; shift ;;
+        -spacing) [ $# -ge 2 ] || die "spray3D: -spacing needs a value"; spacing="$2"; shift ;;
         *) break ;;
     esac
     shift
@@ -100,6 +103,10 @@ edit constant/kinematicCloudProperties "            outlet
 foamDictionary system/controlDict -entry functions/dropletFiber/grid/rMaxCap -remove > /dev/null
 ! grep -q rMaxCap system/controlDict || die "spray3D: could not remove rMaxCap"
 foamDictionary system/controlDict -entry endTime -set "$endTime" > /dev/null
+if [ -n "$spacing" ]; then
+    foamDictionary system/controlDict -entry functions/dropletFiber/grid/spacing \
+        -set "$spacing" > /dev/null || die "spray3D: could not set the grid spacing"
+fi
 if [ "$refine" != 1 ]; then
     deltaT="$(foamDictionary -entry deltaT -value system/controlDict)"
     foamDictionary system/controlDict -entry deltaT \
