@@ -7,7 +7,8 @@
 // path clears a row first). A whole grid must give BIT FOR BIT the window totals and
 // newest-step values of two references that never hold stale values: blocks of the grid
 // whose storage box differs from their owned box (they copy the step into the window and
-// clear it in place), and a fresh grid fed only the window's steps (no slot ever evicted).
+// clear it in place), and a fresh grid fed only the window's steps (no slot ever evicted);
+// so must blocks that store what they own (they clear lazily too, in block indices).
 // The step's values read mid-step (packStep, stepValues) and written (unpackStep), and a
 // deposit log replayed into a grid with pending rows, are checked the same way.
 #include "grid/DensityGrid.hpp"
@@ -171,6 +172,23 @@ std::vector<DensityGrid> referenceBlocks(const GridSpec& spec)
     return blocks;
 }
 
+// Blocks that store what they own (2 x 2 in x and y, the function object's layout): their
+// step arrays swap with the window's slots and clear lazily in block indices too.
+std::vector<DensityGrid> swappingBlocks(const GridSpec& spec)
+{
+    std::vector<DensityGrid> blocks;
+    for (int b = 0; b < 4; ++b)
+    {
+        IndexBox owned = spec.fullBox();
+        owned.lo[0] = b % 2 == 0 ? 0 : 8;
+        owned.hi[0] = b % 2 == 0 ? 7 : spec.nodes[0] - 1;
+        owned.lo[1] = b / 2 == 0 ? 0 : 9;
+        owned.hi[1] = b / 2 == 0 ? 8 : spec.nodes[1] - 1;
+        blocks.emplace_back(spec, kernel(), window, GridBlock{owned, owned});
+    }
+    return blocks;
+}
+
 } // namespace
 
 TEST(DensityGridLazyClear, WindowBitForBitAsGridsThatNeverHoldStaleValues)
@@ -178,6 +196,7 @@ TEST(DensityGridLazyClear, WindowBitForBitAsGridsThatNeverHoldStaleValues)
     const GridSpec spec = grid3D();
     DensityGrid grid(spec, kernel(), window);
     std::vector<DensityGrid> blocks = referenceBlocks(spec);
+    std::vector<DensityGrid> swapping = swappingBlocks(spec);
     StepStatistics seen;
     for (int s = 0; s < steps; ++s)
     {
@@ -188,14 +207,23 @@ TEST(DensityGridLazyClear, WindowBitForBitAsGridsThatNeverHoldStaleValues)
             {
                 block.depositCopy(p, dt);
             }
+            for (DensityGrid& block : swapping)
+            {
+                block.depositCopy(p, dt);
+            }
         }
         grid.commitStep();
         for (DensityGrid& block : blocks)
         {
             block.commitStep();
         }
+        for (DensityGrid& block : swapping)
+        {
+            block.commitStep();
+        }
         seen += grid.lastStepStatistics();
         expectSameWindow(grid, blocks, s);
+        expectSameWindow(grid, swapping, s);
 
         // A fresh grid fed the window's steps only: its slots are new arrays, never evicted
         DensityGrid fresh(spec, kernel(), window);
