@@ -135,13 +135,6 @@ std::size_t AveragingWindow::takeSlot(IndexBox& evicted)
     }
     const std::size_t slot = static_cast<std::size_t>(head_);
     evicted = slotBoxes_[slot];
-    std::vector<double>& old = slots_[slot];
-    forEachBoxRow(evicted,
-                  [&](std::size_t offset, std::size_t count)
-                  {
-                      std::fill(old.begin() + static_cast<std::ptrdiff_t>(offset),
-                                old.begin() + static_cast<std::ptrdiff_t>(offset + count), 0.0);
-                  });
     head_ = (head_ + 1) % length_;
     return slot;
 }
@@ -163,6 +156,12 @@ void AveragingWindow::push(const double* step, const IndexBox& stepRegion, const
     {
         target.assign(total_.size(), 0.0);
     }
+    forEachBoxRow(evicted,
+                  [&](std::size_t offset, std::size_t count)
+                  {
+                      std::fill(target.begin() + static_cast<std::ptrdiff_t>(offset),
+                                target.begin() + static_cast<std::ptrdiff_t>(offset + count), 0.0);
+                  });
     const std::size_t q = static_cast<std::size_t>(nQuantities_);
     forEachRowIn(box, stepRegion,
                  [&](const IndexRow& row)
@@ -175,7 +174,7 @@ void AveragingWindow::push(const double* step, const IndexBox& stepRegion, const
     filledSlot(slot, toRegion(box), evicted);
 }
 
-void AveragingWindow::pushSwapping(std::vector<double>& step, const IndexBox& box)
+void AveragingWindow::pushSwappingUncleared(std::vector<double>& step, const IndexBox& box, IndexBox& dirty)
 {
     if (step.size() != total_.size())
     {
@@ -184,13 +183,14 @@ void AveragingWindow::pushSwapping(std::vector<double>& step, const IndexBox& bo
     checkStepBox(box, region_);
     IndexBox evicted;
     const std::size_t slot = takeSlot(evicted);
-    // The slot is zero everywhere now (cleared over the evicted step's box, zero outside
-    // it) or not allocated yet: it becomes the caller's next, zeroed, step array.
+    // The slot is zero outside the evicted step's box, or not allocated yet: it becomes
+    // the caller's next step array, to be cleared over that box by the caller.
     slots_[slot].swap(step);
     if (step.empty())
     {
         step.assign(total_.size(), 0.0);
     }
+    dirty = toGrid(evicted);
     filledSlot(slot, toRegion(box), evicted);
 }
 
@@ -200,7 +200,8 @@ double AveragingWindow::newestStepValue(std::size_t node, int q) const
     {
         return 0.0;
     }
-    // A slot is zero outside its box (push clears the evicted box), so any node reads it.
+    // A slot is zero outside its box (push clears the evicted box, pushSwappingUncleared's
+    // caller does), so any node reads it.
     const std::vector<double>& newest = slots_[slotIndex(filled_ - 1)];
     return newest[node * static_cast<std::size_t>(nQuantities_) + static_cast<std::size_t>(q)];
 }

@@ -7,12 +7,13 @@
 // and slot for the 7 quantities. Every slot is zero outside its step's box.
 //
 // Committing a step: push() copies the step's box into the slot (after clearing the
-// evicted step's box there). pushSwapping() takes the caller's step array itself as the
-// slot (std::vector::swap) and hands back the evicted slot, cleared over its box, as the
-// caller's next step array: no copy, and the caller need not clear its array either. A
-// step of wide kernels touches about the whole grid (bench/spray3D: 85,000 nodes, 4.8 MB
-// per step), so this saves a copy and a clearing of that size per step; DensityGrid uses
-// it whenever its step array has the window's layout (storage box = owned box).
+// evicted step's box there). pushSwappingUncleared() takes the caller's step array itself
+// as the slot (std::vector::swap) and hands back the evicted slot as the caller's next
+// step array, NOT cleared, with the box where it may be non-zero: no copy, and the caller
+// clears that box as it goes. A step of wide kernels touches about the whole grid
+// (bench/spray3D: 85,000 nodes, 4.8 MB per step): clearing it here would send it through
+// the caches once more, while the caller clears each row as its first deposit brings it
+// into cache (DensityGrid, storage box = owned box).
 //
 // Exact, drift-free total: instead of a running sum with add-new/subtract-oldest (whose
 // round-off residue leaves small negative masses in empty regions and would make a
@@ -92,9 +93,11 @@ public:
     void push(const double* step, const IndexBox& stepRegion, const IndexBox& box);
     // The same as push(step, box) without copying: `step` (laid out over region(), zero
     // outside box) becomes the newest slot, and the caller gets back in `step` an array
-    // of the same size that is zero everywhere (the evicted slot, cleared over its box
-    // only; a new one while the window fills), to accumulate the next step in.
-    void pushSwapping(std::vector<double>& step, const IndexBox& box);
+    // of the same size (the evicted slot; a new one, all zero, while the window fills)
+    // that is zero outside `dirty` (grid indices; empty: zero everywhere) and holds the
+    // evicted step's values inside it: the caller zeroes that box before it accumulates
+    // the next step there, and before it pushes the array again.
+    void pushSwappingUncleared(std::vector<double>& step, const IndexBox& box, IndexBox& dirty);
     // The block of the grid this window holds (grid indices).
     const IndexBox& region() const { return region_; }
 
@@ -132,9 +135,9 @@ private:
     void recomputeTotal(const IndexBox& box) const;
     // push(): throws unless box (grid indices) lies in region() and in stepRegion.
     void checkStepBox(const IndexBox& box, const IndexBox& stepRegion) const;
-    // The slot the next step goes to: the next unused one while the window fills, else
-    // the oldest, whose box (region indices) is returned in `evicted` and cleared: every
-    // slot is zero outside its box, so the returned slot is zero or not allocated.
+    // The slot the next step goes to: the next unused one while the window fills (not
+    // allocated), else the oldest, whose box (region indices) is returned in `evicted`:
+    // every slot is zero outside its box, so the slot is zero outside `evicted`.
     std::size_t takeSlot(IndexBox& evicted);
     // The step in `slot` covers `local` (region indices): counts it and marks the boxes
     // whose total changed stale.

@@ -339,6 +339,7 @@ DensityGrid::DensityGrid(const GridSpec& spec, const KernelSettings& kernel, int
     }
     halfCellDiagonal_ = std::sqrt(halfCellDiagonal_);
     step_.assign(storage_.nodeCount() * nQuantities, 0.0);
+    rowPending_.assign(storageRow(0, storage_.hi[2] - storage_.lo[2] + 1), 0);
 }
 
 void DensityGrid::deposit(const Parcel& parcel, double dt)
@@ -710,6 +711,13 @@ void DensityGrid::sendSeparable(double inverseSum, const IndexBox& box, WeightSi
                      const double* omega
                          = separable_.row(row.j + storage_.lo[1] - box.lo[1],
                                           row.k + storage_.lo[2] - box.lo[2], first, row.length);
+                     // First write into the row this step: the evicted step's values go
+                     // (the row is being brought into cache by this parcel anyway)
+                     const std::size_t rowIndex = storageRow(row.j, row.k);
+                     if (rowPending_[rowIndex] != 0)
+                     {
+                         zeroPendingRow(rowIndex);
+                     }
                      double* values = step_.data() + row.first * nQuantities;
                      if ((row.first + row.length) * nQuantities + rowAhead <= step_.size())
                      {
@@ -896,6 +904,10 @@ double DensityGrid::foldOntoNodes(const double* omega, const IndexBox& foldedBox
 
 void DensityGrid::sendWeighted(double inverseSum, const IndexBox& box, WeightSink& sink)
 {
+    if (sink.accumulates())
+    {
+        clearPendingRowsOf(box); // the weighted nodes lie inside it
+    }
     if (sink.accumulates() && storesWholeGrid_)
     {
         // Serial runs: the nodes' values straight from the accumulator, each node's cache
@@ -1013,6 +1025,7 @@ void DensityGrid::weighCloudInCell(const Eigen::Vector3d& start, const Eigen::Ve
     }
     if (sink.accumulates())
     {
+        clearPendingRowsOf(cells.box);
         touch(cells.box);
     }
     const int corners = (spec_.flat(0) ? 1 : 2) * (spec_.flat(1) ? 1 : 2) * (spec_.flat(2) ? 1 : 2);
@@ -1066,15 +1079,89 @@ void DensityGrid::sendPathWeights(const IndexBox& box, WeightSink& sink)
     sink.statistics.nodesWeighted += weighted;
 }
 
+void DensityGrid::zeroPendingRow(std::size_t row) const
+{
+    const auto rowNodes = static_cast<std::size_t>(storage_.hi[0] - storage_.lo[0] + 1);
+    const auto dirtyNodes = static_cast<std::size_t>(dirty_.hi[0] - dirty_.lo[0] + 1);
+    double* first = step_.data() + (row * rowNodes + static_cast<std::size_t>(dirty_.lo[0])) * nQuantities;
+    std::fill(first, first + dirtyNodes * nQuantities, 0.0);
+    rowPending_[row] = 0;
+}
+
+void DensityGrid::clearPendingRowsOf(const IndexBox& box) const
+{
+    if (dirty_.empty() || box.empty())
+    {
+        return;
+    }
+    // The box's rows in storage indices, within the dirty rows
+    const int jLo = std::max(box.lo[1] - storage_.lo[1], dirty_.lo[1]);
+    const int jHi = std::min(box.hi[1] - storage_.lo[1], dirty_.hi[1]);
+    const int kLo = std::max(box.lo[2] - storage_.lo[2], dirty_.lo[2]);
+    const int kHi = std::min(box.hi[2] - storage_.lo[2], dirty_.hi[2]);
+    for (int k = kLo; k <= kHi; ++k)
+    {
+        for (int j = jLo; j <= jHi; ++j)
+        {
+            const std::size_t row = storageRow(j, k);
+            if (rowPending_[row] != 0)
+            {
+                zeroPendingRow(row);
+            }
+        }
+    }
+}
+
+void DensityGrid::clearPendingRows() const
+{
+    for (int k = dirty_.lo[2]; k <= dirty_.hi[2]; ++k)
+    {
+        for (int j = dirty_.lo[1]; j <= dirty_.hi[1]; ++j)
+        {
+            const std::size_t row = storageRow(j, k);
+            if (rowPending_[row] != 0)
+            {
+                zeroPendingRow(row);
+            }
+        }
+    }
+    dirty_ = IndexBox{};
+}
+
+void DensityGrid::markDirty(const IndexBox& dirty)
+{
+    dirty_ = IndexBox{};
+    if (dirty.empty())
+    {
+        return;
+    }
+    for (int d = 0; d < 3; ++d)
+    {
+        dirty_.lo[d] = dirty.lo[d] - storage_.lo[d];
+        dirty_.hi[d] = dirty.hi[d] - storage_.lo[d];
+    }
+    for (int k = dirty_.lo[2]; k <= dirty_.hi[2]; ++k)
+    {
+        for (int j = dirty_.lo[1]; j <= dirty_.hi[1]; ++j)
+        {
+            rowPending_[storageRow(j, k)] = 1;
+        }
+    }
+}
+
 void DensityGrid::commitStep()
 {
     if (storage_ == owned_)
     {
         // The accumulator has the window's layout (serial runs; blocks of the function
-        // object store their owned nodes only): it becomes the newest slot and the evicted
-        // slot, cleared over its own box, the next accumulator. No copy, one clearing
+        // object store their owned nodes only): it becomes the newest slot (zero outside
+        // stepBox_ once the rows no deposit reached are cleared) and the evicted slot the
+        // next accumulator, cleared row by row as the next step's deposits reach it. No copy
         // (the spray3D case's steps touch about the whole grid, 4.8 MB).
-        window_.pushSwapping(step_, stepBox_);
+        clearPendingRows();
+        IndexBox evicted;
+        window_.pushSwappingUncleared(step_, stepBox_, evicted);
+        markDirty(evicted);
     }
     else
     {
@@ -1176,6 +1263,7 @@ std::vector<double> DensityGrid::packStep(const IndexBox& box) const
 void DensityGrid::packStep(const IndexBox& box, double* values) const
 {
     checkStored(box, storage_, "packStep");
+    clearPendingRowsOf(box);
     forEachRowIn(box, storage_,
                  [&](const IndexRow& row)
                  {
@@ -1201,6 +1289,7 @@ void DensityGrid::unpackStep(const IndexBox& box, const double* values, std::siz
     {
         throw std::invalid_argument("DensityGrid::unpackStep: value count does not match the box");
     }
+    clearPendingRowsOf(box); // the rows' parts outside the box keep the step's values
     forEachRowIn(box, storage_,
                  [&](const IndexRow& row)
                  {

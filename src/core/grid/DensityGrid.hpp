@@ -223,9 +223,14 @@ public:
     std::vector<double>& stepValues()
     {
         log_.markIncomplete();
+        clearPendingRows();
         return step_;
     }
-    const std::vector<double>& stepValues() const { return step_; }
+    const std::vector<double>& stepValues() const
+    {
+        clearPendingRows();
+        return step_;
+    }
     // The stored nodes the step touched (grid indices).
     IndexBox stepBox() const { return stepBox_; }
     // Copies the box's values (nQuantities per node, i fastest; the box inside the storage
@@ -444,6 +449,22 @@ private:
     std::array<int, 3> nodeIndices(std::size_t node) const;
     // Where a touched box of nodes (grid indices) is stored: stepBox_ grows by it.
     void touch(const IndexBox& box) { stepBox_ = stepBox_.united(box.intersected(storage_)); }
+    // The step array's lazy clearing (dirty_, rowPending_). A storage row's index: j + ny k
+    // (storage indices).
+    std::size_t storageRow(int j, int k) const
+    {
+        return static_cast<std::size_t>(j)
+            + static_cast<std::size_t>(storage_.hi[1] - storage_.lo[1] + 1) * static_cast<std::size_t>(k);
+    }
+    // Zeroes the dirty part of a pending row (storageRow) and marks it cleared.
+    void zeroPendingRow(std::size_t row) const;
+    // Zeroes the pending rows that meet the box (grid indices): before writing into it.
+    void clearPendingRowsOf(const IndexBox& box) const;
+    // Zeroes every pending row: step_ then holds the step's values only.
+    void clearPendingRows() const;
+    // The evicted slot that became step_ holds its values in `dirty` (grid indices): every
+    // row of it pending.
+    void markDirty(const IndexBox& dirty);
 
     GridSpec spec_;
     KernelSettings kernelSettings_;
@@ -463,8 +484,24 @@ private:
     bool ownsWholeGrid_;              // owned_ is the whole grid: flat node index = window index
     AveragingWindow window_;
     DepositLog log_; // the parcels of the window's steps: its restart state
-    std::vector<double> step_;
+    // The step's accumulator (mutable: the lazy clearing below gives the same values, so
+    // const readers may clear pending rows first).
+    mutable std::vector<double> step_;
     IndexBox stepBox_;
+    // commitStep() takes the evicted window slot as the next step_ without clearing it
+    // (AveragingWindow::pushSwappingUncleared): clearing its box at the commit (about the
+    // whole grid, 4.8 MB, in the spray3D case) brings every line of it into the caches,
+    // and the next step's deposits bring them in again; a row zeroed just before a
+    // deposit's first write into it is brought in once. dirty_ (storage indices) holds the
+    // evicted step's values; rowPending_ (per storage row, storageRow) marks its rows whose
+    // dirty part is not yet zeroed. Every write into step_ zeroes its row first
+    // (sendSeparable row by row, the node-by-node paths over the rows of the parcel's box,
+    // unpackStep over its box), every read of step_ too, and commitStep() the rows no
+    // deposit reached: step_ holds to the bit what clearing the slot at once gave. Empty
+    // (no pending row) for blocks whose storage is not the owned box (they copy the step
+    // into the window).
+    mutable IndexBox dirty_;
+    mutable std::vector<unsigned char> rowPending_;
     StepStatistics stepStatistics_;
     StepStatistics copyStatistics_;
     StepStatistics lastStepStatistics_;

@@ -163,14 +163,38 @@ TEST(AveragingWindow, RestoreForgetsTheNodeTotalsOfTheWindowsOwnSteps)
     }
 }
 
-// pushSwapping: the caller's step array becomes the newest slot and the caller gets back
-// the evicted slot, which must be zero everywhere (it was cleared over its own box only)
-// to accumulate the next step in. The reference is independent of the window: a plain
+namespace
+{
+// The array pushSwappingUncleared hands back must be zero outside its dirty box (grid
+// indices); the caller then clears that box, as DensityGrid does row by row.
+void expectZeroOutsideThenClear(std::vector<double>& step, const IndexBox& region, const IndexBox& dirty)
+{
+    forEachRowIn(region, region,
+                 [&](const IndexRow& row)
+                 {
+                     for (std::size_t i = 0; i < row.length; ++i)
+                     {
+                         const int gi = region.lo[0] + static_cast<int>(i);
+                         const bool inDirty = dirty.holds(gi, region.lo[1] + row.j, region.lo[2] + row.k);
+                         double* values = step.data() + (row.offsetInBox + i) * nq;
+                         for (std::size_t q = 0; q < nq; ++q)
+                         {
+                             ASSERT_TRUE(inDirty || values[q] == 0.0) << "node " << row.offsetInBox + i;
+                             values[q] = 0.0;
+                         }
+                     }
+                 });
+}
+} // namespace
+
+// pushSwappingUncleared: the caller's step array becomes the newest slot and the caller
+// gets back the evicted slot, zero outside the box handed back with it (checked), to clear
+// and accumulate the next step in. The reference is independent of the window: a plain
 // list of the last W step arrays, summed oldest to newest. The steps are added (+=) into
 // the array the window handed back, as DensityGrid's deposit does, so a returned array
-// not cleared (in or outside the new step's box) shows in the totals. Boxes of different
-// sizes and positions, more than W steps, a window of a block of the grid and one of the
-// whole grid, and a restore from a saved state midway whose window goes on swapping.
+// not zero outside its box shows. Boxes of different sizes and positions, more than W
+// steps, a window of a block of the grid and one of the whole grid, and a restore from a
+// saved state midway whose window goes on swapping.
 TEST(AveragingWindow, SwappedStepArraysGiveTheChronologicalSumBitForBit)
 {
     IndexBox whole;
@@ -188,6 +212,7 @@ TEST(AveragingWindow, SwappedStepArraysGiveTheChronologicalSumBitForBit)
         std::vector<double> accumulator(regionValues, 0.0);
         std::vector<double> restoredAccumulator(regionValues, 0.0);
         std::deque<std::vector<double>> history; // the last `length` steps, oldest first
+        std::deque<IndexBox> boxes;              // their boxes
         std::mt19937 rng(31);
         for (int step = 0; step < 13; ++step)
         {
@@ -208,13 +233,23 @@ TEST(AveragingWindow, SwappedStepArraysGiveTheChronologicalSumBitForBit)
                 history.pop_front();
             for (std::size_t v = 0; v < regionValues; ++v)
                 accumulator[v] += local[v];
-            window.pushSwapping(accumulator, box);
+            IndexBox dirty;
+            window.pushSwappingUncleared(accumulator, box, dirty);
             ASSERT_EQ(accumulator.size(), regionValues);
+            // The evicted step's box (none while the window fills)
+            boxes.push_back(box);
+            const IndexBox evicted = static_cast<int>(boxes.size()) > length ? boxes.front() : IndexBox{};
+            if (static_cast<int>(boxes.size()) > length)
+                boxes.pop_front();
+            ASSERT_TRUE(dirty == evicted || (dirty.empty() && evicted.empty())) << "step " << step;
+            expectZeroOutsideThenClear(accumulator, region, dirty);
             if (restored)
             {
                 for (std::size_t v = 0; v < regionValues; ++v)
                     restoredAccumulator[v] += local[v];
-                restored->pushSwapping(restoredAccumulator, box);
+                IndexBox restoredDirty;
+                restored->pushSwappingUncleared(restoredAccumulator, box, restoredDirty);
+                expectZeroOutsideThenClear(restoredAccumulator, region, restoredDirty);
             }
             else if (step == 5)
             {
