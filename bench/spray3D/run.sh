@@ -20,7 +20,8 @@
 #              part, the writes at write times included, which the table's
 #              per-step columns do not hold
 # Environment: SPRAY3D_DIR scratch folder (default: a new mktemp -d folder),
-#              SPRAY3D_END end time in s (default 0.2: 400 steps)
+#              SPRAY3D_END end time in s (default 0.2: 400 steps),
+#              SPRAY3D_MALLOC=default: glibc's own malloc thresholds (see below)
 #
 # The case, generated from tutorials/channelSpray (same channel, air, nozzles,
 # fibers and function-object settings):
@@ -60,6 +61,16 @@ lib="${1:-$FOAM_USER_LIBBIN}"
 [ -f "$lib/libdropletFiber.so" ] || die "no libdropletFiber.so in $lib"
 lib="$(cd "$lib" && pwd)"
 endTime="${SPRAY3D_END:-0.2}"
+# glibc serves blocks above 128 kB (the solver's field temporaries of this mesh) from
+# fresh mmap'd pages, and raises that threshold only after such a block is freed, so
+# whether the CFD pays a page fault per page of every temporary depends on what else
+# the process allocated: on the VMs measured here page faults are slow, and the same
+# CFD took 8.3 or 18.1 s of CPU time with the 2 mm grid (docs/performance.md). Fixed
+# thresholds make the solver's cost independent of the function object's allocations;
+# set SPRAY3D_MALLOC=default to run with glibc's own.
+if [ "${SPRAY3D_MALLOC:-fixed}" != default ]; then
+    export MALLOC_MMAP_THRESHOLD_=67108864 MALLOC_TRIM_THRESHOLD_=268435456
+fi
 dir="${SPRAY3D_DIR:-$(mktemp -d /tmp/spray3D.XXXXXX)}"
 rm -rf "$dir"
 cp -r "$root/tutorials/channelSpray" "$dir"

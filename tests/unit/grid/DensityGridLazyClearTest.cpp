@@ -101,29 +101,33 @@ std::vector<Parcel> parcelsOfStep(const GridSpec& spec, int s)
     return parcels;
 }
 
+// Values of a node whose bits differ between two grids: its window totals and its newest
+// step's values.
+std::size_t differingAt(const DensityGrid& a, const DensityGrid& b, std::size_t node)
+{
+    double x[nQuantities];
+    double y[nQuantities];
+    a.windowTotal(node, x);
+    b.windowTotal(node, y);
+    std::size_t differing = 0;
+    for (int q = 0; q < nQuantities; ++q)
+    {
+        differing += bits(x[q]) != bits(y[q]) ? 1 : 0;
+        differing += bits(a.lastStepValue(node, q)) != bits(b.lastStepValue(node, q)) ? 1 : 0;
+    }
+    return differing;
+}
+
 // The whole grid's window at every node (totals and newest step) bit for bit that of the
 // reference blocks (each node from the block that owns it).
 void expectSameWindow(const DensityGrid& grid, const std::vector<DensityGrid>& blocks, int step)
 {
-    const GridSpec& spec = grid.spec();
     std::size_t differing = 0;
-    for (std::size_t node = 0; node < spec.nodeCount(); ++node)
+    for (std::size_t node = 0; node < grid.spec().nodeCount(); ++node)
     {
         for (const DensityGrid& block : blocks)
         {
-            if (!block.owns(node))
-            {
-                continue;
-            }
-            double a[nQuantities];
-            double b[nQuantities];
-            grid.windowTotal(node, a);
-            block.windowTotal(node, b);
-            for (int q = 0; q < nQuantities; ++q)
-            {
-                differing += bits(a[q]) != bits(b[q]) ? 1 : 0;
-                differing += bits(grid.lastStepValue(node, q)) != bits(block.lastStepValue(node, q)) ? 1 : 0;
-            }
+            differing += block.owns(node) ? differingAt(grid, block, node) : 0;
         }
     }
     EXPECT_EQ(differing, 0u) << "after step " << step;
@@ -135,15 +139,7 @@ void expectSameWindow(const DensityGrid& a, const DensityGrid& b, int step)
     std::size_t differing = 0;
     for (std::size_t node = 0; node < a.spec().nodeCount(); ++node)
     {
-        double x[nQuantities];
-        double y[nQuantities];
-        a.windowTotal(node, x);
-        b.windowTotal(node, y);
-        for (int q = 0; q < nQuantities; ++q)
-        {
-            differing += bits(x[q]) != bits(y[q]) ? 1 : 0;
-            differing += bits(a.lastStepValue(node, q)) != bits(b.lastStepValue(node, q)) ? 1 : 0;
-        }
+        differing += differingAt(a, b, node);
     }
     EXPECT_EQ(differing, 0u) << "after step " << step;
 }
