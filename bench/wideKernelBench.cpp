@@ -17,11 +17,16 @@
 //              box) of an array laid out as the grid's accumulator: what adding into the
 //              accumulator alone costs, the least any deposit that adds every box node pays
 //              (the per-node code adds only the nodes within the cut, about pi/6 of a 3D box)
+//   as filed : the deposit's defaults when the wide-kernel work began (issue "spray-solver
+//              parcels": "10x faster than today's per-node code"): method exact, vectorised
+//              (batched where the CPU has it), negligibleWeight 1e-17 (reach ~8.9 widths
+//              instead of ~6): the before of "before and after" with default settings
 // Printed: ns per parcel (best of the repeats, and the spread (slowest - fastest) /
 // fastest), ns per node touched (box nodes: StepStatistics::nodesVisited), the kernel's
 // reach after the negligible-weight cut in spacings, the speed-up of separable over per
 // node, and per node over the floor: the most a deposit adding every box node could gain
-// over it. The four columns run interleaved (A B C D A B C D ...). Figures, not a test.
+// over it, and of separable over as filed. The five columns run interleaved (A B C D E A B C D
+// E ...). Figures, not a test.
 //
 // Usage: wideKernelBench [--repeats N] [--seconds S] [--spacing MM]
 //   --repeats  interleaved rounds (default 3)
@@ -85,11 +90,16 @@ std::vector<Parcel> makeParcels(const Row& row, int count)
     return parcels;
 }
 
+// Columns 0 per node, 1 batched, 2 separable, 3 as filed (the floor has no grid).
 KernelSettings settingsOf(int column)
 {
     KernelSettings s;
     s.method = column == 2 ? DepositMethod::Automatic : DepositMethod::Exact;
     s.vectorised = column != 0;
+    if (column == 3)
+    {
+        s.negligibleWeight = 1e-17;
+    }
     return s;
 }
 
@@ -165,7 +175,7 @@ void benchRow(const Row& row, int repeats, double targetSeconds)
 {
     const GridSpec spec = gridSpec(row.spacing);
     std::vector<DensityGrid> grids;
-    for (int column = 0; column < 3; ++column)
+    for (int column = 0; column < 4; ++column)
     {
         grids.emplace_back(spec, settingsOf(column));
     }
@@ -174,8 +184,9 @@ void benchRow(const Row& row, int repeats, double targetSeconds)
     const int count
         = static_cast<int>(std::clamp(targetSeconds / std::max(probe.seconds, 1e-9), 1.0, 4000.0));
     const std::vector<Parcel> parcels = makeParcels(row, count);
-    std::vector<std::vector<double>> seconds(4);
-    std::vector<StepStatistics> statistics(3);
+    // seconds: per node, batched, separable, floor, as filed
+    std::vector<std::vector<double>> seconds(5);
+    std::vector<StepStatistics> statistics(4);
     std::vector<double> accumulator(grids[0].stepValues().size(), 0.0);
     for (int r = 0; r < repeats; ++r)
     {
@@ -186,23 +197,27 @@ void benchRow(const Row& row, int repeats, double targetSeconds)
             statistics[static_cast<std::size_t>(column)] = run.statistics;
         }
         seconds[3].push_back(accumulateOnly(grids[0], parcels, accumulator));
+        const Run filed = depositAll(grids[3], parcels);
+        seconds[4].push_back(filed.seconds);
+        statistics[3] = filed.statistics;
     }
     const double nodes = static_cast<double>(statistics[0].nodesVisited);
+    const double filedNodes = static_cast<double>(statistics[3].nodesVisited);
     const auto [reach, width] = kernelInSpacings(row);
     std::printf("%4.1f %4.0f %5.0f %-4s %6d %7.1f %7.2f |", row.spacing * 1e3, row.radius * 1e6, row.n,
                 row.moving ? "mov" : "sta", count, reach, width);
-    double best[4];
-    for (int column = 0; column < 4; ++column)
+    double best[5];
+    for (int column = 0; column < 5; ++column)
     {
         const std::vector<double>& s = seconds[static_cast<std::size_t>(column)];
         best[column] = *std::min_element(s.begin(), s.end());
         const double spread = 100.0 * (*std::max_element(s.begin(), s.end()) - best[column]) / best[column];
-        std::printf(" %10.0f %6.2f %3.0f%% |", best[column] / count * 1e9, best[column] / nodes * 1e9,
-                    spread);
+        std::printf(" %10.0f %6.2f %3.0f%% |", best[column] / count * 1e9,
+                    best[column] / (column == 4 ? filedNodes : nodes) * 1e9, spread);
     }
     const double separableShare = static_cast<double>(statistics[2].parcelsSeparable) / count;
-    std::printf(" %5.1fx %5.1fx %4.0f%% %5.1fx\n", best[0] / best[2], best[1] / best[2],
-                100.0 * separableShare, best[0] / best[3]);
+    std::printf(" %5.1fx %5.1fx %4.0f%% %5.1fx %5.1fx\n", best[0] / best[2], best[1] / best[2],
+                100.0 * separableShare, best[0] / best[3], best[4] / best[2]);
     std::fflush(stdout);
 }
 
@@ -238,7 +253,9 @@ int main(int argc, char** argv)
                 repeats, DensityGrid(gridSpec(2e-3)).batchedKernel() ? "AVX2 + FMA" : "not available");
     std::printf("h/mm r/um     n path parcels reach/h width/h |  per node: ns/parcel ns/node spread |"
                 "   batched: ns/parcel ns/node spread | separable: ns/parcel ns/node spread |"
-                " vs per node, vs batched, separable share\n");
+                " floor: ns/parcel ns/node spread | as filed: ns/parcel ns/node spread |"
+                " separable vs per node, vs batched, separable share, per node vs floor,"
+                " separable vs as filed\n");
     for (double spacing : {2e-3, 5e-4})
     {
         if (onlySpacing > 0.0 && std::abs(spacing - onlySpacing) > 1e-9)
