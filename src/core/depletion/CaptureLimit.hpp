@@ -172,7 +172,10 @@ private:
 
     // Per node values, cleared and refilled every step: their nodes are recycled
     // (RecyclingAllocator), not freed and allocated again; the same maps and iteration
-    // order as with the standard allocator, so limit()'s sums are unchanged.
+    // order as with the standard allocator, so limit()'s sums are unchanged. clear() still
+    // walks the nodes, cold after the deposit (spray3D: ~0.2 % of the run's samples with
+    // free() or without; flat arrays would avoid the walk but add limit()'s sums in
+    // another order).
     using NodeMap = std::unordered_map<std::size_t, double, std::hash<std::size_t>, std::equal_to<std::size_t>,
                                        RecyclingAllocator<std::pair<const std::size_t, double>>>;
     NodeMap demand_;

@@ -16,10 +16,11 @@
 // the tables. Found by a hash and compared in full.
 //
 // Memory: per kept parcel Q (1 + nx + ny + nz) doubles (W_q and the three (folded) axis
-// tables) plus 112 bytes of entry and index; spray3D (docs/performance.md, the removal):
-// ~2.3 kB per kept parcel on average (stationary parcels Q = 1: ~0.5 kB; moving ones
-// Q ~ 4-8), ~110 of ~700 separable parcels a step kept, ~0.3 MB. The vectors are cleared,
-// not freed, per step: their capacity is the largest step's.
+// tables) plus 152 bytes of entry and index. spray3D (docs/performance.md, the removal;
+// bytes() and parcels() after each step's removal, 400 steps): 2.3 kB per kept parcel on
+// average, 123 of ~136 separable parcels a step kept (the fibers' cells span most of the
+// spray there), 0.29 MB a step on average, 0.37 MB at most; ~78 of them re-weighed. The
+// vectors are cleared, not freed, per step: their capacity is the largest step's.
 #pragma once
 
 #include "grid/GridSpec.hpp"
