@@ -176,8 +176,9 @@ private:
     // walks the nodes, cold after the deposit (spray3D: ~0.2 % of the run's samples with
     // free() or without; flat arrays would avoid the walk but add limit()'s sums in
     // another order).
-    using NodeMap = std::unordered_map<std::size_t, double, std::hash<std::size_t>, std::equal_to<std::size_t>,
-                                       RecyclingAllocator<std::pair<const std::size_t, double>>>;
+    using NodeMap
+        = std::unordered_map<std::size_t, double, std::hash<std::size_t>, std::equal_to<std::size_t>,
+                             RecyclingAllocator<std::pair<const std::size_t, double>>>;
     NodeMap demand_;
     NodeMap granted_; // g_n
     NodeMap taken_;   // f_n > 0, owned nodes

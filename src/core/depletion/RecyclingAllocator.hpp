@@ -123,8 +123,7 @@ private:
     // for by such nodes.
     static bool fromPool(std::size_t n)
     {
-        return n == 1 && sizeof(T) <= NodePool::chunkBytes
-            && alignof(T) <= __STDCPP_DEFAULT_NEW_ALIGNMENT__;
+        return n == 1 && sizeof(T) <= NodePool::chunkBytes && alignof(T) <= __STDCPP_DEFAULT_NEW_ALIGNMENT__;
     }
 
     std::shared_ptr<NodePool> pool_;

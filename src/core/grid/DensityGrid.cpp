@@ -681,8 +681,9 @@ double DensityGrid::prepareSeparable(const PathWeight& pathWeight, const Clipped
 }
 
 double DensityGrid::separableTables(const KeptTables::Key& key, const KeptTables::Entry* kept,
-                                    const PathWeight& pathWeight, const ClippedPath& path, const IndexBox& box,
-                                    int points, WeightSink& sink, IndexBox& weightedBox, SeparableTables& tables)
+                                    const PathWeight& pathWeight, const ClippedPath& path,
+                                    const IndexBox& box, int points, WeightSink& sink, IndexBox& weightedBox,
+                                    SeparableTables& tables)
 {
     if (kept != nullptr)
     {

@@ -410,8 +410,8 @@ private:
     // sink's find), prepareSeparable otherwise, keeping the tables (under key) where the
     // deposit is to (keepTablesNear). tables: those to weigh with; returns sum omega.
     double separableTables(const KeptTables::Key& key, const KeptTables::Entry* kept,
-                           const PathWeight& pathWeight, const ClippedPath& path, const IndexBox& box, int points,
-                           WeightSink& sink, IndexBox& weightedBox, SeparableTables& tables);
+                           const PathWeight& pathWeight, const ClippedPath& path, const IndexBox& box,
+                           int points, WeightSink& sink, IndexBox& weightedBox, SeparableTables& tables);
     // sendSeparable for a sparse sink: omega at the sink's nodes inside the box only.
     void shareSeparable(const SeparableTables& tables, double inverseSum, const IndexBox& box,
                         WeightSink& sink);
@@ -535,9 +535,9 @@ private:
     std::vector<double> latticeOmega_;
     std::array<std::vector<int>, 3> mirrorImage_;
     std::vector<double> foldedOmega_;
-    PathWeightBatch batch_;     // the batched deposit (batchedKernel(); unused, empty, otherwise)
-    SeparableWeight separable_; // wide kernels' per-axis tables
-    KeptTables kept_;           // the tables kept for the removal (keepTablesNear)
+    PathWeightBatch batch_;          // the batched deposit (batchedKernel(); unused, empty, otherwise)
+    SeparableWeight separable_;      // wide kernels' per-axis tables
+    KeptTables kept_;                // the tables kept for the removal (keepTablesNear)
     bool keptStepCommitted_ = false; // kept_ holds a committed step's: the next deposit forgets them
 };
 

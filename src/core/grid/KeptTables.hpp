@@ -55,12 +55,12 @@ public:
     struct Entry
     {
         Key key;
-        IndexBox box;            // the (folded) weighted box the tables cover
-        double omegaSum = 0.0;   // SeparableWeight::sum()
-        int points = 0;          // Q
-        bool lanes = false;      // SeparableWeight::vectorised()
+        IndexBox box;          // the (folded) weighted box the tables cover
+        double omegaSum = 0.0; // SeparableWeight::sum()
+        int points = 0;        // Q
+        bool lanes = false;    // SeparableWeight::vectorised()
         std::array<std::size_t, 3> length{};
-        std::size_t offset = 0;  // first of its values in values_
+        std::size_t offset = 0; // first of its values in values_
     };
 
     // The region whose parcels the next steps' deposits keep (grid indices; empty: none).
