@@ -345,6 +345,12 @@ DensityGrid::DensityGrid(const GridSpec& spec, const KernelSettings& kernel, int
 void DensityGrid::deposit(const Parcel& parcel, double dt)
 {
     checkParcel(parcel, dt);
+    if (keptStepCommitted_)
+    {
+        // A new step: the last one's kept tables are no longer asked for
+        kept_.clear();
+        keptStepCommitted_ = false;
+    }
     StepStatistics& stats = stepStatistics_;
     ++stats.parcels;
     if (parcel.nParticle == 0.0 || parcel.diameter == 0.0)
@@ -483,13 +489,19 @@ void DensityGrid::weighPath(const Parcel& parcel, const ClippedPath& path, Weigh
         return; // depositedShare: neither these nodes nor the fallback's are asked for
     }
     IndexBox weightedBox = box;
-    const int points = separablePoints(pathWeight, box.nodeCount());
+    // The removal: the deposit's tables of this parcel where kept (a sparse sink), with
+    // the points Q the deposit chose for them
+    const KeptTables::Key key(path.start, path.displacement, parcel.diameter, parcel.nParticle);
+    const KeptTables::Entry* kept = sink.sparse != nullptr ? kept_.find(key) : nullptr;
+    const int points = kept != nullptr ? kept->points : separablePoints(pathWeight, box.nodeCount());
     if (points > 0)
     {
         ++stats.parcelsSeparable;
     }
-    const double omegaSum = points > 0 ? prepareSeparable(pathWeight, path, box, points, weightedBox)
-                                       : weighLattice(pathWeight, path, box, weightedBox);
+    SeparableTables tables;
+    const double omegaSum = points > 0
+        ? separableTables(key, kept, pathWeight, path, box, points, sink, weightedBox, tables)
+        : weighLattice(pathWeight, path, box, weightedBox);
     stats.nodesVisited += static_cast<std::int64_t>(box.nodeCount());
 
     // 5-6. Normalise (eq. 24), or fall back to cloud-in-cell weights.
@@ -497,6 +509,11 @@ void DensityGrid::weighPath(const Parcel& parcel, const ClippedPath& path, Weigh
     {
         ++stats.parcelsFallback;
         weighCloudInCell(path.start, path.displacement, sink);
+        return;
+    }
+    if (points > 0 && sink.sparse != nullptr)
+    {
+        shareSeparable(tables, 1.0 / omegaSum, weightedBox, sink);
         return;
     }
     if (points > 0)
@@ -663,13 +680,29 @@ double DensityGrid::prepareSeparable(const PathWeight& pathWeight, const Clipped
     return separable_.sum();
 }
 
+double DensityGrid::separableTables(const KeptTables::Key& key, const KeptTables::Entry* kept,
+                                    const PathWeight& pathWeight, const ClippedPath& path,
+                                    const IndexBox& box, int points, WeightSink& sink, IndexBox& weightedBox,
+                                    SeparableTables& tables)
+{
+    if (kept != nullptr)
+    {
+        // The deposit's tables of this parcel: what prepareSeparable would build again
+        weightedBox = kept->box;
+        tables = kept_.tables(*kept);
+        return kept->omegaSum;
+    }
+    const double omegaSum = prepareSeparable(pathWeight, path, box, points, weightedBox);
+    tables = separable_.tables();
+    if (sink.accumulates() && omegaSum >= DBL_MIN && kept_.keeps(weightedBox))
+    {
+        kept_.keep(key, separable_, omegaSum, weightedBox);
+    }
+    return omegaSum;
+}
+
 void DensityGrid::sendSeparable(double inverseSum, const IndexBox& box, WeightSink& sink)
 {
-    if (sink.sparse != nullptr)
-    {
-        shareSeparable(inverseSum, box, sink);
-        return;
-    }
     if (!sink.accumulates())
     {
         // depositedShare: the nodes of the (folded) box that may have a fraction, the
@@ -729,7 +762,8 @@ void DensityGrid::sendSeparable(double inverseSum, const IndexBox& box, WeightSi
     touch(box); // the stored part of it
 }
 
-void DensityGrid::shareSeparable(double inverseSum, const IndexBox& box, WeightSink& sink)
+void DensityGrid::shareSeparable(const SeparableTables& tables, double inverseSum, const IndexBox& box,
+                                 WeightSink& sink)
 {
     // The sink's nodes inside the (folded) box, in node order: the terms the row-by-row
     // sum over the box adds where the fraction is not 0, each weight the row's to the bit.
@@ -737,8 +771,8 @@ void DensityGrid::shareSeparable(double inverseSum, const IndexBox& box, WeightS
                            [&](const NodeValue& node)
                            {
                                const double weight
-                                   = separable_.omega(node.index[0] - box.lo[0], node.index[1] - box.lo[1],
-                                                      node.index[2] - box.lo[2])
+                                   = tables.omega(node.index[0] - box.lo[0], node.index[1] - box.lo[1],
+                                                  node.index[2] - box.lo[2])
                                    * inverseSum;
                                if (weight > 0.0)
                                {
@@ -1178,6 +1212,7 @@ void DensityGrid::commitStep()
     stepStatistics_ = StepStatistics{};
     copyStatistics_ = StepStatistics{};
     log_.commit();
+    keptStepCommitted_ = true; // kept_ stays for this step's removal
 }
 
 WindowState DensityGrid::saveWindow(WindowStateFormat format) const

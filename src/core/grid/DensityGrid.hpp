@@ -83,6 +83,10 @@
 // Depletion (docs/model.md sec. 7): depositedShare() re-evaluates a parcel's weights by
 // deposit()'s own code path (steps 1-6 send them to a sink: the step accumulator, or a
 // sum weighted per node), lastStepValue() reads what the newest committed step deposited.
+// The separable tables of the parcels whose weighted box meets a region the caller names
+// (keepTablesNear: where the fibers may take) are kept from the deposit until the next
+// step's first deposit, and the sparse depositedShare reads them instead of rebuilding them
+// (KeptTables.hpp; the same tables, so the same sums to the bit).
 //
 // Restart: saveWindow()/restoreWindow(). The state is the deposit log (DepositLog.hpp):
 // every parcel deposit() and depositCopy() put on the grid in the window's steps, in
@@ -109,6 +113,7 @@
 #include "grid/DepositLog.hpp"
 #include "grid/GridQuantities.hpp"
 #include "grid/GridSpec.hpp"
+#include "grid/KeptTables.hpp"
 #include "grid/MultilinearWeights.hpp"
 #include "grid/Parcel.hpp"
 #include "grid/ParcelKernel.hpp"
@@ -201,6 +206,13 @@ public:
     // the exact code's weighted nodes merged with them (both in node order), no per-node call.
     double depositedShare(const Parcel& parcel, double dt, const NodeBoxTest& asks,
                           const SparseNodeValues& fractions);
+    // The deposits from now on keep the separable tables of the parcels whose (folded)
+    // weighted box meets `region` (grid indices; empty: none, the default), for the sparse
+    // depositedShare of the same step (KeptTables.hpp). Only the time of depositedShare
+    // depends on the region, never a result.
+    void keepTablesNear(const IndexBox& region) { kept_.setRegion(region); }
+    // The tables the last step's deposits kept (their number and bytes).
+    const KeptTables& keptTables() const { return kept_; }
     // A box (grid indices) holding every node deposit(parcel, dt) can give mass to: the
     // kernel's nodes (folded) and those of its cloud-in-cell fallback; empty when the
     // parcel gives the grid nothing. A parallel caller sends a parcel to the blocks whose
@@ -394,8 +406,15 @@ private:
     // into the sink. Accumulating: only the rows of the box inside the storage box, straight
     // into the accumulator's contiguous values (evaluation and accumulation fused).
     void sendSeparable(double inverseSum, const IndexBox& box, WeightSink& sink);
+    // Step 4 for wide kernels: the kept tables where the parcel has them (kept: a sparse
+    // sink's find), prepareSeparable otherwise, keeping the tables (under key) where the
+    // deposit is to (keepTablesNear). tables: those to weigh with; returns sum omega.
+    double separableTables(const KeptTables::Key& key, const KeptTables::Entry* kept,
+                           const PathWeight& pathWeight, const ClippedPath& path, const IndexBox& box,
+                           int points, WeightSink& sink, IndexBox& weightedBox, SeparableTables& tables);
     // sendSeparable for a sparse sink: omega at the sink's nodes inside the box only.
-    void shareSeparable(double inverseSum, const IndexBox& box, WeightSink& sink);
+    void shareSeparable(const SeparableTables& tables, double inverseSum, const IndexBox& box,
+                        WeightSink& sink);
     // sendWeighted for a sparse sink: scratch_'s nodes merged with the sink's (node order).
     void shareWeighted(double inverseSum, WeightSink& sink);
     // The box's omegas (i fastest) -> scratch_ (omega > 0, node order; box inside the
@@ -516,8 +535,10 @@ private:
     std::vector<double> latticeOmega_;
     std::array<std::vector<int>, 3> mirrorImage_;
     std::vector<double> foldedOmega_;
-    PathWeightBatch batch_;     // the batched deposit (batchedKernel(); unused, empty, otherwise)
-    SeparableWeight separable_; // wide kernels' per-axis tables
+    PathWeightBatch batch_;          // the batched deposit (batchedKernel(); unused, empty, otherwise)
+    SeparableWeight separable_;      // wide kernels' per-axis tables
+    KeptTables kept_;                // the tables kept for the removal (keepTablesNear)
+    bool keptStepCommitted_ = false; // kept_ holds a committed step's: the next deposit forgets them
 };
 
 } // namespace dropletFiber

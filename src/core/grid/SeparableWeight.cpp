@@ -239,22 +239,55 @@ const double* SeparableWeight::row(int j, int k, std::size_t first, std::size_t 
     return omega;
 }
 
-double SeparableWeight::omega(int i, int j, int k) const
+double SeparableTables::omega(int i, int j, int k) const
 {
-    const std::size_t n = length_[0], ny = length_[1], nz = length_[2];
+    const std::size_t n = length[0], ny = length[1], nz = length[2];
     const auto x = static_cast<std::size_t>(i);
     const auto y = static_cast<std::size_t>(j);
     const auto z = static_cast<std::size_t>(k);
     // row(): the row factor (W_q Y_q(j)) Z_q(k), then omega = r_0 X_0(i) + r_1 X_1(i) + ...,
     // each term fused (one rounding) where row() runs in lanes, as SeparableLanes::row does.
-    double value = weight_[0] * factor_[1][y] * factor_[2][z] * factor_[0][x];
-    for (int q = 1; q < points_; ++q)
+    const double* fx = factor[0];
+    const double* fy = factor[1];
+    const double* fz = factor[2];
+    double value = weight[0] * fy[y] * fz[z] * fx[x];
+    for (int q = 1; q < points; ++q)
     {
         const auto u = static_cast<std::size_t>(q);
-        const double r = weight_[u] * factor_[1][u * ny + y] * factor_[2][u * nz + z];
-        value = lanes_ ? std::fma(r, factor_[0][u * n + x], value) : value + r * factor_[0][u * n + x];
+        const double r = weight[u] * fy[u * ny + y] * fz[u * nz + z];
+        value = lanes ? std::fma(r, fx[u * n + x], value) : value + r * fx[u * n + x];
     }
     return value;
+}
+
+SeparableTables SeparableWeight::tables() const
+{
+    SeparableTables view;
+    view.points = points_;
+    view.lanes = lanes_;
+    view.length = length_;
+    view.weight = weight_.data();
+    for (std::size_t d = 0; d < 3; ++d)
+    {
+        view.factor[d] = factor_[d].data();
+    }
+    return view;
+}
+
+std::size_t SeparableWeight::tableValues() const
+{
+    return static_cast<std::size_t>(points_) * (1 + length_[0] + length_[1] + length_[2]);
+}
+
+void SeparableWeight::copyTables(double* to) const
+{
+    const auto points = static_cast<std::size_t>(points_);
+    to = std::copy(weight_.begin(), weight_.begin() + static_cast<std::ptrdiff_t>(points), to);
+    for (std::size_t d = 0; d < 3; ++d)
+    {
+        const double* from = factor_[d].data();
+        to = std::copy(from, from + points * length_[d], to);
+    }
 }
 
 void SeparableWeight::prepareRows()

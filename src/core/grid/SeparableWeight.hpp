@@ -52,6 +52,22 @@
 namespace dropletFiber
 {
 
+// The tables omega() reads, wherever they are held: SeparableWeight's own, or a compact
+// copy of them (KeptTables: the deposit's tables kept for the removal). factor[d] holds
+// length[d] values per point q, q-major; weight the points' W_q; lanes: fused multiply-adds
+// as SeparableWeight::vectorised().
+struct SeparableTables
+{
+    int points = 0;
+    bool lanes = false;
+    std::array<std::size_t, 3> length{};
+    const double* weight = nullptr;
+    std::array<const double*, 3> factor{};
+
+    // omega of the node (i, j, k) of the (folded) box: SeparableWeight::omega's arithmetic.
+    double omega(int i, int j, int k) const;
+};
+
 class SeparableWeight
 {
 public:
@@ -108,7 +124,13 @@ public:
     // omega of the one node (i, j, k) of the (folded) box, positions relative to its lower
     // corner: row()'s arithmetic in row()'s order, so the same value to the bit, at Q
     // multiply-adds (depletion's sums over a few nodes, DensityGrid::depositedShare).
-    double omega(int i, int j, int k) const;
+    double omega(int i, int j, int k) const { return tables().omega(i, j, k); }
+    // The present tables (valid until the next prepare() or fold()).
+    SeparableTables tables() const;
+    // Doubles a compact copy of the tables takes: W_q and every axis's factors.
+    std::size_t tableValues() const;
+    // Copies them to `to` (tableValues() doubles): W_q, then the x, y and z factors, q-major.
+    void copyTables(double* to) const;
     // sum omega over the nodes of the (folded) box, eq. 24's normalising sum, itself
     // separable: sum_q W_q (sum_i X_q(i)) (sum_j Y_q(j)) (sum_k Z_q(k)), O(Q (nx + ny + nz))
     // instead of one addition per node. The per-axis sums are compensated (Neumaier), so the

@@ -469,6 +469,10 @@ void Foam::functionObjects::dropletFiberCollision::gatherParcels()
 ::dropletFiber::StepStatistics
 Foam::functionObjects::dropletFiberCollision::depositParcels(const scalar dt)
 {
+    if (depletion_)
+    {
+        grid_->keepTablesNear(fiberNodes());
+    }
     depositLocalParcels(dt);
     blocks_->depositCopies(*grid_, stepParcels_, dt, parallelStatistics_);
     const ::dropletFiber::StepStatistics local = grid_->stepStatistics();

@@ -86,6 +86,56 @@ void Foam::functionObjects::dropletFiberCollision::limitCapture
 }
 
 
+::dropletFiber::IndexBox
+Foam::functionObjects::dropletFiberCollision::fiberNodes() const
+{
+    // The fibers' bounding box, over every processor
+    vector lo(vector::uniform(GREAT));
+    vector hi(vector::uniform(-GREAT));
+    for (const ::dropletFiber::Fiber& fiber : held_.fibers)
+    {
+        const Eigen::Matrix3Xd& x = fiber.positions();
+        for (Eigen::Index j = 0; j < x.cols(); ++j)
+        {
+            for (direction d = 0; d < 3; ++d)
+            {
+                lo[d] = min(lo[d], x(d, j));
+                hi[d] = max(hi[d], x(d, j));
+            }
+        }
+    }
+    reduce(lo, minOp<vector>());
+    reduce(hi, maxOp<vector>());
+    // The nodes of the cells it lies in: a sample's corners are the nodes
+    // below and above it in each direction
+    const ::dropletFiber::GridSpec& spec = gridSettings_.spec;
+    ::dropletFiber::IndexBox box;
+    for (direction d = 0; d < 3; ++d)
+    {
+        if (!(lo[d] <= hi[d]))
+        {
+            return ::dropletFiber::IndexBox();
+        }
+        if (spec.flat(d))
+        {
+            box.lo[d] = box.hi[d] = 0;
+            continue;
+        }
+        const scalar h = spec.spacing(d);
+        const scalar last = spec.nodes[d] - 1;
+        const scalar a = std::floor((lo[d] - spec.lower[d])/h);
+        const scalar b = std::floor((hi[d] - spec.lower[d])/h) + 1;
+        box.lo[d] = label(std::min(std::max(a, scalar(0)), last));
+        box.hi[d] = label(std::min(std::max(b, scalar(0)), last));
+        if (b < 0 || a > last)
+        {
+            return ::dropletFiber::IndexBox();
+        }
+    }
+    return box;
+}
+
+
 void Foam::functionObjects::dropletFiberCollision::depleteParcels
 (
     const scalar dt
