@@ -35,7 +35,6 @@
 #pragma once
 
 #include "collision/CollisionMass.hpp"
-#include "depletion/RecyclingAllocator.hpp"
 #include "grid/DensityGrid.hpp"
 #include "grid/MultilinearWeights.hpp"
 #include "grid/SparseNodeValues.hpp"
@@ -45,7 +44,6 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
-#include <functional>
 #include <unordered_map>
 #include <vector>
 
@@ -170,18 +168,9 @@ private:
             + bricks_[0] * (static_cast<std::size_t>(j) + bricks_[1] * static_cast<std::size_t>(k));
     }
 
-    // Per node values, cleared and refilled every step: their nodes are recycled
-    // (RecyclingAllocator), not freed and allocated again; the same maps and iteration
-    // order as with the standard allocator, so limit()'s sums are unchanged. clear() still
-    // walks the nodes, cold after the deposit (spray3D: ~0.2 % of the run's samples with
-    // free() or without; flat arrays would avoid the walk but add limit()'s sums in
-    // another order).
-    using NodeMap
-        = std::unordered_map<std::size_t, double, std::hash<std::size_t>, std::equal_to<std::size_t>,
-                             RecyclingAllocator<std::pair<const std::size_t, double>>>;
-    NodeMap demand_;
-    NodeMap granted_; // g_n
-    NodeMap taken_;   // f_n > 0, owned nodes
+    std::unordered_map<std::size_t, double> demand_;
+    std::unordered_map<std::size_t, double> granted_; // g_n
+    std::unordered_map<std::size_t, double> taken_;   // f_n > 0, owned nodes
     // taken_ in node order with grid indices (capturedFraction's sums), built on first use
     // after taken_ changed; 40 bytes per node with f_n > 0.
     const SparseNodeValues& takenNodes() const;
