@@ -84,19 +84,8 @@ const KeptTables::Entry* KeptTables::find(const Key& key) const
 
 SeparableTables KeptTables::tables(const Entry& entry) const
 {
-    SeparableTables tables;
-    tables.points = entry.points;
-    tables.lanes = entry.lanes;
-    tables.length = entry.length;
-    const double* at = values_.data() + entry.offset;
-    tables.weight = at;
-    at += entry.points;
-    for (std::size_t d = 0; d < 3; ++d)
-    {
-        tables.factor[d] = at;
-        at += static_cast<std::size_t>(entry.points) * entry.length[d];
-    }
-    return tables;
+    return SeparableTables::inCompactCopy(values_.data() + entry.offset, entry.points, entry.lanes,
+                                          entry.length);
 }
 
 void KeptTables::clear()

@@ -290,6 +290,24 @@ void SeparableWeight::copyTables(double* to) const
     }
 }
 
+SeparableTables SeparableTables::inCompactCopy(const double* values, int points, bool lanes,
+                                               const std::array<std::size_t, 3>& length)
+{
+    // copyTables' layout: W_q, then the x, y and z factors, q-major
+    SeparableTables tables;
+    tables.points = points;
+    tables.lanes = lanes;
+    tables.length = length;
+    tables.weight = values;
+    values += points;
+    for (std::size_t d = 0; d < 3; ++d)
+    {
+        tables.factor[d] = values;
+        values += static_cast<std::size_t>(points) * length[d];
+    }
+    return tables;
+}
+
 void SeparableWeight::prepareRows()
 {
     rowsPrepared_ = true;

@@ -66,6 +66,10 @@ struct SeparableTables
 
     // omega of the node (i, j, k) of the (folded) box: SeparableWeight::omega's arithmetic.
     double omega(int i, int j, int k) const;
+    // The tables of a compact copy (SeparableWeight::copyTables) at `values`, with the points,
+    // lanes and lengths of the tables() it was copied from.
+    static SeparableTables inCompactCopy(const double* values, int points, bool lanes,
+                                         const std::array<std::size_t, 3>& length);
 };
 
 class SeparableWeight
