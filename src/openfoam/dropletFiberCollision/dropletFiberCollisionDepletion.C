@@ -28,6 +28,7 @@ Description
 #include "fvMesh.H"
 #include "PstreamReduceOps.H"
 #include "dictionaryChecks.H"
+#include "grid/MultilinearWeights.hpp"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -106,8 +107,8 @@ Foam::functionObjects::dropletFiberCollision::fiberNodes() const
     }
     reduce(lo, minOp<vector>());
     reduce(hi, maxOp<vector>());
-    // The nodes of the cells it lies in: a sample's corners are the nodes
-    // below and above it in each direction
+    // The nodes of the cells it lies in: a sample's corners are its cell's
+    // (axisCell, as multilinearWeights finds them)
     const ::dropletFiber::GridSpec& spec = gridSettings_.spec;
     ::dropletFiber::IndexBox box;
     for (direction d = 0; d < 3; ++d)
@@ -121,16 +122,15 @@ Foam::functionObjects::dropletFiberCollision::fiberNodes() const
             box.lo[d] = box.hi[d] = 0;
             continue;
         }
-        const scalar h = spec.spacing(d);
-        const scalar last = spec.nodes[d] - 1;
-        const scalar a = std::floor((lo[d] - spec.lower[d])/h);
-        const scalar b = std::floor((hi[d] - spec.lower[d])/h) + 1;
-        box.lo[d] = label(std::min(std::max(a, scalar(0)), last));
-        box.hi[d] = label(std::min(std::max(b, scalar(0)), last));
-        if (b < 0 || a > last)
+        if (hi[d] < spec.lower[d] || lo[d] > spec.upper[d])
         {
             return ::dropletFiber::IndexBox();
         }
+        const scalar h = spec.spacing(d);
+        box.lo[d] =
+            ::dropletFiber::axisCell(lo[d], spec.lower[d], h, spec.nodes[d]).cell;
+        box.hi[d] =
+            ::dropletFiber::axisCell(hi[d], spec.lower[d], h, spec.nodes[d]).cell + 1;
     }
     return box;
 }
