@@ -111,21 +111,26 @@ Exit codes: 0 success, 2 bad input (the message names the flag, or the file, lin
 )";
 }
 
-Options parseCommandLine(int argc, char** argv)
+namespace
 {
-    Options options;
-    std::map<std::string, std::string> values;
+
+using Values = std::map<std::string, std::string>;
+
+// The flags given, each with its value (--flag VALUE or --flag=VALUE); help: --help seen.
+Values readFlags(int argc, char** argv, bool& help)
+{
     static const char* known[]
         = {"--parcels",         "--lower",          "--upper",    "--nodes",     "--dt",
            "--output",          "--beta",           "--rmax-cap", "--dimension", "--segments",
            "--segments-output", "--radius-average", "--samples"};
+    Values values;
     for (int a = 1; a < argc; ++a)
     {
         std::string flag = argv[a];
         if (flag == "--help" || flag == "-h")
         {
-            options.help = true;
-            return options;
+            help = true;
+            return values;
         }
         std::string value;
         const std::size_t equals = flag.find('=');
@@ -153,16 +158,14 @@ Options parseCommandLine(int argc, char** argv)
         }
         values[flag] = value;
     }
-    for (const char* required : {"--parcels", "--lower", "--upper", "--nodes", "--dt"})
-    {
-        if (values.count(required) == 0)
-        {
-            throw InputError(std::string(required) + ": required (see --help)");
-        }
-    }
-    options.parcelsFile = values["--parcels"];
-    options.grid.lower = parseVector("--lower", values["--lower"]);
-    options.grid.upper = parseVector("--upper", values["--upper"]);
+    return values;
+}
+
+GridSpec parseGrid(Values& values)
+{
+    GridSpec grid;
+    grid.lower = parseVector("--lower", values["--lower"]);
+    grid.upper = parseVector("--upper", values["--upper"]);
     const std::vector<std::string> nodes = splitCommas(values["--nodes"]);
     if (nodes.size() != 3)
     {
@@ -171,38 +174,35 @@ Options parseCommandLine(int argc, char** argv)
     }
     for (int d = 0; d < 3; ++d)
     {
-        options.grid.nodes[static_cast<std::size_t>(d)]
+        grid.nodes[static_cast<std::size_t>(d)]
             = parseCount("--nodes", nodes[static_cast<std::size_t>(d)], 1);
     }
     try
     {
-        options.grid.validate();
+        grid.validate();
     }
     catch (const std::invalid_argument& e)
     {
         throw InputError(std::string("--lower/--upper/--nodes: ") + e.what());
     }
-    options.dt = parseNumber("--dt", values["--dt"]);
-    if (!(options.dt > 0.0))
-    {
-        throw InputError("--dt: must be > 0, got '" + values["--dt"] + "'");
-    }
-    if (values.count("--output"))
-    {
-        options.nodesOutput = values["--output"];
-    }
+    return grid;
+}
+
+KernelSettings parseKernel(Values& values)
+{
+    KernelSettings kernel;
     if (values.count("--beta"))
     {
-        options.kernel.beta = parseNumber("--beta", values["--beta"]);
-        if (!(options.kernel.beta > 0.0 && options.kernel.beta <= 1.0))
+        kernel.beta = parseNumber("--beta", values["--beta"]);
+        if (!(kernel.beta > 0.0 && kernel.beta <= 1.0))
         {
             throw InputError("--beta: must lie in (0, 1], got '" + values["--beta"] + "'");
         }
     }
     if (values.count("--rmax-cap"))
     {
-        options.kernel.rMaxCap = parseNumber("--rmax-cap", values["--rmax-cap"]);
-        if (!(options.kernel.rMaxCap > 0.0))
+        kernel.rMaxCap = parseNumber("--rmax-cap", values["--rmax-cap"]);
+        if (!(kernel.rMaxCap > 0.0))
         {
             throw InputError("--rmax-cap: must be > 0, got '" + values["--rmax-cap"] + "'");
         }
@@ -212,39 +212,37 @@ Options parseCommandLine(int argc, char** argv)
         const std::string& d = values["--dimension"];
         if (d == "auto")
         {
-            options.kernel.dimension = KernelDimension::Automatic;
+            kernel.dimension = KernelDimension::Automatic;
         }
         else if (d == "2")
         {
-            options.kernel.dimension = KernelDimension::TwoD;
+            kernel.dimension = KernelDimension::TwoD;
         }
         else if (d == "3")
         {
-            options.kernel.dimension = KernelDimension::ThreeD;
+            kernel.dimension = KernelDimension::ThreeD;
         }
         else
         {
             throw InputError("--dimension: expected auto, 2 or 3, got '" + d + "'");
         }
     }
-    if (values.count("--segments"))
-    {
-        options.segmentsFile = values["--segments"];
-    }
-    if (values.count("--segments-output"))
-    {
-        options.segmentsOutput = values["--segments-output"];
-    }
+    return kernel;
+}
+
+CollisionOptions parseCollision(Values& values)
+{
+    CollisionOptions collision;
     if (values.count("--radius-average"))
     {
         const std::string& r = values["--radius-average"];
         if (r == "mass")
         {
-            options.collision.radiusAverage = RadiusAverage::Mass;
+            collision.radiusAverage = RadiusAverage::Mass;
         }
         else if (r == "number")
         {
-            options.collision.radiusAverage = RadiusAverage::Number;
+            collision.radiusAverage = RadiusAverage::Number;
         }
         else
         {
@@ -253,8 +251,40 @@ Options parseCommandLine(int argc, char** argv)
     }
     if (values.count("--samples"))
     {
-        options.collision.samples = parseCount("--samples", values["--samples"], 0);
+        collision.samples = parseCount("--samples", values["--samples"], 0);
     }
+    return collision;
+}
+
+} // namespace
+
+Options parseCommandLine(int argc, char** argv)
+{
+    Options options;
+    Values values = readFlags(argc, argv, options.help);
+    if (options.help)
+    {
+        return options;
+    }
+    for (const char* required : {"--parcels", "--lower", "--upper", "--nodes", "--dt"})
+    {
+        if (values.count(required) == 0)
+        {
+            throw InputError(std::string(required) + ": required (see --help)");
+        }
+    }
+    options.parcelsFile = values["--parcels"];
+    options.grid = parseGrid(values);
+    options.dt = parseNumber("--dt", values["--dt"]);
+    if (!(options.dt > 0.0))
+    {
+        throw InputError("--dt: must be > 0, got '" + values["--dt"] + "'");
+    }
+    options.nodesOutput = values.count("--output") ? values["--output"] : "";
+    options.kernel = parseKernel(values);
+    options.segmentsFile = values.count("--segments") ? values["--segments"] : "";
+    options.segmentsOutput = values.count("--segments-output") ? values["--segments-output"] : "";
+    options.collision = parseCollision(values);
     return options;
 }
 
