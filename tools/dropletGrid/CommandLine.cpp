@@ -60,6 +60,57 @@ int parseCount(const std::string& flag, const std::string& text, int minimum)
     return static_cast<int>(value);
 }
 
+// The checks below give the function object's verdict on the same value of the same
+// entry (src/openfoam/settings/gridSettings.C, dictionaryChecks.H), so that a value a run
+// accepts is accepted here and one it stops on stops the tool, with the same allowed list.
+
+// A finite number with allowed(value), else an error naming the flag, the value and what
+// is allowed.
+template <class Allowed>
+double parseAllowed(const std::string& flag, const std::string& text, Allowed allowed,
+                    const char* allowedText)
+{
+    char* end = nullptr;
+    const double value = std::strtod(text.c_str(), &end);
+    if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value) || !allowed(value))
+    {
+        throw InputError(flag + ": got '" + text + "'; allowed are finite numbers " + allowedText);
+    }
+    return value;
+}
+
+// One of the words in allowed (case-sensitive, as a dictionary's words).
+std::string parseChoice(const std::string& flag, const std::string& text,
+                        const std::vector<std::string>& allowed)
+{
+    std::string list;
+    for (const std::string& word : allowed)
+    {
+        if (word == text)
+        {
+            return text;
+        }
+        list += (list.empty() ? "" : (&word == &allowed.back() ? " or " : ", ")) + word;
+    }
+    throw InputError(flag + ": got '" + text + "'; allowed are " + list);
+}
+
+// The words OpenFOAM's Switch reads (getSwitch in dictionaryChecks.H: Switch's words and
+// its one-letter forms, and the integers 1 and 0).
+bool parseSwitch(const std::string& flag, const std::string& text)
+{
+    static const std::map<std::string, bool> words{
+        {"true", true}, {"false", false}, {"on", true}, {"off", false}, {"yes", true},
+        {"no", false},  {"t", true},      {"f", false}, {"y", true},    {"n", false},
+        {"any", true},  {"none", false},  {"1", true},  {"0", false}};
+    const auto found = words.find(text);
+    if (found == words.end())
+    {
+        throw InputError(flag + ": got '" + text + "'; allowed are true or false (also on/off, yes/no, 1/0)");
+    }
+    return found->second;
+}
+
 } // namespace
 
 std::string usage()
@@ -87,11 +138,6 @@ Options:
   --output FILE         write the node fields as CSV:
                         i,j,k,x,y,z,rho,rMeanNumber,rMeanMass,ux,uy,uz
                         (rho in kg/m^3, radii in m, mean droplet velocity in m/s)
-  --beta B              kernel inflection parameter of eq. 17/18, 0 < B <= 1 (default 0.025)
-  --rmax-cap R          cap on the influence radius, m (default: none). Parcels whose
-                        r_max = r_p n exceeds it are counted and reported.
-  --dimension D         packing formula for r_min: auto, 2 or 3 (default auto: 3 on a grid
-                        with three non-flat directions, else 2)
   --segments FILE       fiber segments CSV with the columns
                         ax,ay,az,bx,by,bz,fiberRadius,ux,uy,uz
                         (end points a and b in m, fiber radius in m, segment velocity in m/s);
@@ -103,29 +149,66 @@ Options:
                         polydisperse spray) or number (the paper's eq. 10)
   --samples N           sample points along each segment: N >= 1, or 0 = one per node
                         spacing spanned (default 1: the midpoint)
+
+Deposit options: the deposit entries of the function object's grid dictionary, with the
+same names (--rmax-cap also as --rMaxCap), allowed values and defaults, so that the
+deposit of a run can be repeated here (README, Dictionary entries):
+  --beta B              kernel shape: inflection point between r_min (0) and r_max (1),
+                        eq. 17/18; 0 < B <= 1 (default 0.025, the paper's)
+  --rmax-cap R, --rMaxCap R
+                        cap on the influence radius, m; R >= 0, 0: no cap (default 0).
+                        Parcels whose r_max = r_p n exceeds it are counted and reported.
+  --dimension D         packing formula for r_min: automatic (also auto), 2 or 3 (default
+                        automatic: 3 on a grid with three non-flat directions, else 2)
+  --cloudInCellBelow C  parcels whose kernel width r_max / sqrt(2 alpha) is below C times
+                        the largest node spacing are deposited with cloud-in-cell
+                        (multilinear) weights along their path, which keeps the centre of
+                        mass of kernels the grid cannot resolve; C >= 0, 0: always the
+                        paper's kernel (default 0.5)
+  --negligibleWeight E  nodes whose weight would be below E times the parcel's largest are
+                        not evaluated (the weights are normalised over the kept nodes: the
+                        mass stays on the grid; docs/model.md P10); 0 <= E <= 1e-6, 0: every
+                        node within reach (default 1e-8)
+  --depositMethod M     automatic: parcels whose kernel reaches at least 3 node spacings get
+                        their weights from per-axis tables where a proven bound keeps every
+                        weight within 1e-7 of the parcel's largest (docs/model.md P16);
+                        exact: the per-node path integral (eq. 23) for every parcel
+                        (default automatic)
+  --vectorised S        true: node weights four at a time (AVX2 + FMA) where the CPU has
+                        them; false: node by node, the same results to the bit on every
+                        CPU (the two agree to ~1e-14 of the largest node value); true or
+                        false, also on/off, yes/no, 1/0 (default true)
+
   --help                this text
 
-Output: number of parcels, total mass in, mass on the grid (sum over the nodes), mass
-outside the grid box, parcels capped / with fallback weights, and the time taken.
+Output: number of parcels, the deposit settings in force, total mass in, mass on the grid
+(sum over the nodes), mass outside the grid box, parcels capped / with fallback weights /
+with cloud-in-cell weights / with separable weights, nodes visited, and the time taken.
 Exit codes: 0 success, 2 bad input (the message names the flag, or the file, line and field).
 )";
 }
 
-Options parseCommandLine(int argc, char** argv)
+namespace
 {
-    Options options;
-    std::map<std::string, std::string> values;
+
+using Values = std::map<std::string, std::string>;
+
+// The flags given, each with its value (--flag VALUE or --flag=VALUE); help: --help seen.
+Values readFlags(int argc, char** argv, bool& help)
+{
     static const char* known[]
-        = {"--parcels",         "--lower",          "--upper",    "--nodes",     "--dt",
-           "--output",          "--beta",           "--rmax-cap", "--dimension", "--segments",
-           "--segments-output", "--radius-average", "--samples"};
+        = {"--parcels",          "--lower",          "--upper",        "--nodes",     "--dt",
+           "--output",           "--beta",           "--rmax-cap",     "--dimension", "--segments",
+           "--segments-output",  "--radius-average", "--samples",      "--rMaxCap",   "--cloudInCellBelow",
+           "--negligibleWeight", "--vectorised",     "--depositMethod"};
+    Values values;
     for (int a = 1; a < argc; ++a)
     {
         std::string flag = argv[a];
         if (flag == "--help" || flag == "-h")
         {
-            options.help = true;
-            return options;
+            help = true;
+            return values;
         }
         std::string value;
         const std::size_t equals = flag.find('=');
@@ -151,7 +234,147 @@ Options parseCommandLine(int argc, char** argv)
         {
             throw InputError(flag + ": unknown option (see --help)");
         }
-        values[flag] = value;
+        if (!values.emplace(flag, value).second)
+        {
+            throw InputError(flag + ": given twice, give it once");
+        }
+    }
+    return values;
+}
+
+GridSpec parseGrid(Values& values)
+{
+    GridSpec grid;
+    grid.lower = parseVector("--lower", values["--lower"]);
+    grid.upper = parseVector("--upper", values["--upper"]);
+    const std::vector<std::string> nodes = splitCommas(values["--nodes"]);
+    if (nodes.size() != 3)
+    {
+        throw InputError("--nodes: expected three comma-separated counts NX,NY,NZ, got '" + values["--nodes"]
+                         + "'");
+    }
+    for (int d = 0; d < 3; ++d)
+    {
+        grid.nodes[static_cast<std::size_t>(d)]
+            = parseCount("--nodes", nodes[static_cast<std::size_t>(d)], 1);
+    }
+    try
+    {
+        grid.validate();
+    }
+    catch (const std::invalid_argument& e)
+    {
+        throw InputError(std::string("--lower/--upper/--nodes: ") + e.what());
+    }
+    return grid;
+}
+
+// The function object's default (gridSettings.C; KernelSettings' own is 0, the paper's
+// kernel always), so that the tool's defaults deposit as a run with the default dictionary.
+constexpr double defaultCloudInCellBelow = 0.5;
+
+// The flag given of a deposit entry that has two spellings (the tool's older one and the
+// dictionary's), or nullptr; both given is an error.
+const char* givenFlag(const Values& values, const char* toolName, const char* dictionaryName)
+{
+    const bool tool = values.count(toolName) != 0;
+    const bool dictionary = values.count(dictionaryName) != 0;
+    if (tool && dictionary)
+    {
+        throw InputError(std::string(toolName) + " and " + dictionaryName
+                         + ": the same option twice, give one");
+    }
+    return tool ? toolName : dictionary ? dictionaryName : nullptr;
+}
+
+// The deposit's entries of the function object's grid dictionary (gridSettings.C,
+// readKernelSettings): the same names, allowed values and defaults.
+KernelSettings parseKernel(Values& values)
+{
+    KernelSettings kernel;
+    kernel.cloudInCellBelow = defaultCloudInCellBelow;
+    if (values.count("--beta"))
+    {
+        kernel.beta = parseAllowed(
+            "--beta", values["--beta"], [](double b) { return b > 0.0 && b <= 1.0; },
+            "in (0, 1] (eq. 18; the paper uses 0.025)");
+    }
+    if (const char* flag = givenFlag(values, "--rmax-cap", "--rMaxCap"))
+    {
+        kernel.rMaxCap = parseAllowed(
+            flag, values[flag], [](double r) { return r >= 0.0; }, ">= 0 (0: no cap)");
+    }
+    if (values.count("--dimension"))
+    {
+        // "auto": the tool's spelling before it took the dictionary's "automatic"
+        const std::string d
+            = parseChoice("--dimension", values["--dimension"], {"automatic", "auto", "2", "3"});
+        kernel.dimension = d == "2" ? KernelDimension::TwoD
+            : d == "3"              ? KernelDimension::ThreeD
+                                    : KernelDimension::Automatic;
+    }
+    if (values.count("--cloudInCellBelow"))
+    {
+        kernel.cloudInCellBelow = parseAllowed(
+            "--cloudInCellBelow", values["--cloudInCellBelow"], [](double c) { return c >= 0.0; },
+            ">= 0 (0: always the paper's kernel)");
+    }
+    if (values.count("--negligibleWeight"))
+    {
+        kernel.negligibleWeight = parseAllowed(
+            "--negligibleWeight", values["--negligibleWeight"],
+            [](double e) { return e >= 0.0 && e <= 1e-6; },
+            "in [0, 1e-6] (0: every node within reach is evaluated)");
+    }
+    if (values.count("--vectorised"))
+    {
+        kernel.vectorised = parseSwitch("--vectorised", values["--vectorised"]);
+    }
+    if (values.count("--depositMethod"))
+    {
+        kernel.method
+            = parseChoice("--depositMethod", values["--depositMethod"], {"automatic", "exact"}) == "exact"
+            ? DepositMethod::Exact
+            : DepositMethod::Automatic;
+    }
+    return kernel;
+}
+
+CollisionOptions parseCollision(Values& values)
+{
+    CollisionOptions collision;
+    if (values.count("--radius-average"))
+    {
+        const std::string& r = values["--radius-average"];
+        if (r == "mass")
+        {
+            collision.radiusAverage = RadiusAverage::Mass;
+        }
+        else if (r == "number")
+        {
+            collision.radiusAverage = RadiusAverage::Number;
+        }
+        else
+        {
+            throw InputError("--radius-average: expected mass or number, got '" + r + "'");
+        }
+    }
+    if (values.count("--samples"))
+    {
+        collision.samples = parseCount("--samples", values["--samples"], 0);
+    }
+    return collision;
+}
+
+} // namespace
+
+Options parseCommandLine(int argc, char** argv)
+{
+    Options options;
+    Values values = readFlags(argc, argv, options.help);
+    if (options.help)
+    {
+        return options;
     }
     for (const char* required : {"--parcels", "--lower", "--upper", "--nodes", "--dt"})
     {
@@ -161,100 +384,17 @@ Options parseCommandLine(int argc, char** argv)
         }
     }
     options.parcelsFile = values["--parcels"];
-    options.grid.lower = parseVector("--lower", values["--lower"]);
-    options.grid.upper = parseVector("--upper", values["--upper"]);
-    const std::vector<std::string> nodes = splitCommas(values["--nodes"]);
-    if (nodes.size() != 3)
-    {
-        throw InputError("--nodes: expected three comma-separated counts NX,NY,NZ, got '" + values["--nodes"]
-                         + "'");
-    }
-    for (int d = 0; d < 3; ++d)
-    {
-        options.grid.nodes[static_cast<std::size_t>(d)]
-            = parseCount("--nodes", nodes[static_cast<std::size_t>(d)], 1);
-    }
-    try
-    {
-        options.grid.validate();
-    }
-    catch (const std::invalid_argument& e)
-    {
-        throw InputError(std::string("--lower/--upper/--nodes: ") + e.what());
-    }
+    options.grid = parseGrid(values);
     options.dt = parseNumber("--dt", values["--dt"]);
     if (!(options.dt > 0.0))
     {
         throw InputError("--dt: must be > 0, got '" + values["--dt"] + "'");
     }
-    if (values.count("--output"))
-    {
-        options.nodesOutput = values["--output"];
-    }
-    if (values.count("--beta"))
-    {
-        options.kernel.beta = parseNumber("--beta", values["--beta"]);
-        if (!(options.kernel.beta > 0.0 && options.kernel.beta <= 1.0))
-        {
-            throw InputError("--beta: must lie in (0, 1], got '" + values["--beta"] + "'");
-        }
-    }
-    if (values.count("--rmax-cap"))
-    {
-        options.kernel.rMaxCap = parseNumber("--rmax-cap", values["--rmax-cap"]);
-        if (!(options.kernel.rMaxCap > 0.0))
-        {
-            throw InputError("--rmax-cap: must be > 0, got '" + values["--rmax-cap"] + "'");
-        }
-    }
-    if (values.count("--dimension"))
-    {
-        const std::string& d = values["--dimension"];
-        if (d == "auto")
-        {
-            options.kernel.dimension = KernelDimension::Automatic;
-        }
-        else if (d == "2")
-        {
-            options.kernel.dimension = KernelDimension::TwoD;
-        }
-        else if (d == "3")
-        {
-            options.kernel.dimension = KernelDimension::ThreeD;
-        }
-        else
-        {
-            throw InputError("--dimension: expected auto, 2 or 3, got '" + d + "'");
-        }
-    }
-    if (values.count("--segments"))
-    {
-        options.segmentsFile = values["--segments"];
-    }
-    if (values.count("--segments-output"))
-    {
-        options.segmentsOutput = values["--segments-output"];
-    }
-    if (values.count("--radius-average"))
-    {
-        const std::string& r = values["--radius-average"];
-        if (r == "mass")
-        {
-            options.collision.radiusAverage = RadiusAverage::Mass;
-        }
-        else if (r == "number")
-        {
-            options.collision.radiusAverage = RadiusAverage::Number;
-        }
-        else
-        {
-            throw InputError("--radius-average: expected mass or number, got '" + r + "'");
-        }
-    }
-    if (values.count("--samples"))
-    {
-        options.collision.samples = parseCount("--samples", values["--samples"], 0);
-    }
+    options.nodesOutput = values.count("--output") ? values["--output"] : "";
+    options.kernel = parseKernel(values);
+    options.segmentsFile = values.count("--segments") ? values["--segments"] : "";
+    options.segmentsOutput = values.count("--segments-output") ? values["--segments-output"] : "";
+    options.collision = parseCollision(values);
     return options;
 }
 

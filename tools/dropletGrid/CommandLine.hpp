@@ -20,7 +20,7 @@ struct Options
     std::string segmentsFile;   // fiber segments CSV; empty: no collision evaluation
     std::string segmentsOutput; // per-segment results CSV; empty: standard output
     GridSpec grid;
-    KernelSettings kernel;
+    KernelSettings kernel; // as parsed: the function object's defaults (cloudInCellBelow 0.5)
     CollisionOptions collision;
     double dt = 0.0;
 };

@@ -123,6 +123,43 @@ void evaluateSegments(const DensityGrid& grid, const Options& options)
                 options.segmentsOutput.empty() ? "" : (" (" + options.segmentsOutput + ")").c_str());
 }
 
+const char* dimensionName(KernelDimension d)
+{
+    return d == KernelDimension::TwoD ? "2" : d == KernelDimension::ThreeD ? "3" : "automatic";
+}
+
+// The deposit settings in force, in the dictionary's words (to set up the same deposit in
+// a run, or to see which defaults applied).
+void printKernel(const DensityGrid& grid, const KernelSettings& k)
+{
+    std::printf("  deposit settings:      beta %.15g, rMaxCap %.15g, dimension %s, cloudInCellBelow %.15g,\n"
+                "                         negligibleWeight %.15g, depositMethod %s,\n"
+                "                         vectorised %s (%s)\n",
+                k.beta, k.rMaxCap, dimensionName(k.dimension), k.cloudInCellBelow, k.negligibleWeight,
+                k.method == DepositMethod::Exact ? "exact" : "automatic", k.vectorised ? "true" : "false",
+                grid.batchedKernel() ? "AVX2 + FMA loops in use"
+                    : k.vectorised   ? "node by node: this CPU has no AVX2 + FMA"
+                                     : "node by node");
+}
+
+void printStatistics(const DensityGrid& grid, std::size_t parcels)
+{
+    const StepStatistics& s = grid.lastStepStatistics();
+    const auto count = [](std::int64_t n) { return static_cast<long long>(n); };
+    std::printf("  mass in:               %.12e kg\n", s.massIn);
+    std::printf("  mass on the grid:      %.12e kg (sum over the nodes)\n", grid.windowMassPerStep());
+    std::printf("  mass outside:          %.12e kg (%lld parcels outside, %lld partly outside the box)\n",
+                s.massOutside, count(s.parcelsOutside), count(s.parcelsPartlyOutside));
+    std::printf("  kernel cap bound:      %lld parcels\n", count(s.parcelsCapped));
+    std::printf("  no node in reach:      %lld parcels (multilinear fallback)\n", count(s.parcelsFallback));
+    std::printf("  cloud-in-cell:         %lld parcels (kernel narrower than cloudInCellBelow spacings)\n",
+                count(s.parcelsCloudInCell));
+    std::printf("  separable weights:     %lld parcels (wide kernels, depositMethod automatic)\n",
+                count(s.parcelsSeparable));
+    std::printf("  nodes visited:         %lld (%.1f per parcel)\n", count(s.nodesVisited),
+                parcels == 0 ? 0.0 : static_cast<double>(s.nodesVisited) / static_cast<double>(parcels));
+}
+
 int run(int argc, char** argv)
 {
     const Clock::time_point start = Clock::now();
@@ -145,22 +182,12 @@ int run(int argc, char** argv)
     }
     grid.commitStep();
     const double depositTime = seconds(phase);
-    const StepStatistics& s = grid.lastStepStatistics();
 
     std::printf("dropletGrid: %zu parcels from %s, grid %dx%dx%d nodes, dt %g s\n", parcels.size(),
                 options.parcelsFile.c_str(), options.grid.nodes[0], options.grid.nodes[1],
                 options.grid.nodes[2], options.dt);
-    std::printf("  mass in:               %.12e kg\n", s.massIn);
-    std::printf("  mass on the grid:      %.12e kg (sum over the nodes)\n", grid.windowMassPerStep());
-    std::printf("  mass outside:          %.12e kg (%lld parcels outside, %lld partly outside the box)\n",
-                s.massOutside, static_cast<long long>(s.parcelsOutside),
-                static_cast<long long>(s.parcelsPartlyOutside));
-    std::printf("  kernel cap bound:      %lld parcels\n", static_cast<long long>(s.parcelsCapped));
-    std::printf("  no node in reach:      %lld parcels (multilinear fallback)\n",
-                static_cast<long long>(s.parcelsFallback));
-    std::printf("  nodes visited:         %lld (%.1f per parcel)\n", static_cast<long long>(s.nodesVisited),
-                parcels.empty() ? 0.0
-                                : static_cast<double>(s.nodesVisited) / static_cast<double>(parcels.size()));
+    printKernel(grid, options.kernel);
+    printStatistics(grid, parcels.size());
 
     double writeTime = 0.0;
     if (!options.nodesOutput.empty())
