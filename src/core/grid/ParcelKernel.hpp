@@ -61,7 +61,7 @@ struct KernelSettings
     // bitwise comparisons across machines, may want the portable per-node results.
     bool vectorised = true;
     // Automatic: a parcel whose kernel (after the negligible-weight cut) reaches at least
-    // DensityGrid::separableFromSpacings node spacings gets its weights from per-axis
+    // ParcelWeights::separableFromSpacings node spacings gets its weights from per-axis
     // tables of the Gaussian (SeparableWeight; docs/model.md P16) when the proven bound
     // keeps them within 1e-7 of its largest weight of eqs. 23-24, else the exact code.
     // Why: the exact code costs one erf-type evaluation per node, (reach / h)^D nodes per
