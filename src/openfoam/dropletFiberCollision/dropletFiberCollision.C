@@ -982,14 +982,45 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
         return true;
     }
     lastTimeIndex_ = time_.timeIndex();
-    const scalar t = time_.value();
     const scalar dt = time_.deltaTValue();
     stepSummary step;
     parallelStatistics_.startStep();
 
+    // 1.-2. The parcels of this step, onto the grid, averaged over the window
+    clockValue depositionStart(true);
+    gatherAndDeposit(dt, step);
+    step.depositionTime = depositionStart.elapsed();
+    depositReport_->record(step.deposit, step.depositionTime, time_.timeName());
+
+    // 3. New fibers
+    clockValue fiberStart(true);
+    coreCall("injecting fibers", [&]() { injectFibers(time_.value()); });
+
+    // 4. Collision mass of every segment; with depletion taken from the parcels
+    ::dropletFiber::CaptureSources capture = collideAndDeplete(dt);
+
+    // 5. Advance the fibers: capture, air drag, bending, inextensibility
+    advanceAndCount(dt, capture, step);
+
+    // 6. Fibers that left; the others to the processor now holding their
+    //    first point
+    passFibersOn();
+    step.fiberTime = fiberStart.elapsed();
+
+    // 7. Report; at write times the restart state and the mass balances
+    reportAndWriteState(step);
+    return true;
+}
+
+
+void Foam::functionObjects::dropletFiberCollision::gatherAndDeposit
+(
+    const scalar dt,
+    stepSummary& step
+)
+{
     // 1. The parcels of this step, on this processor (after a restart, with
     //    the removal of the step restarted from)
-    clockValue depositionStart(true);
     if (removalRestored_)
     {
         coreCall
@@ -1008,13 +1039,12 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
     totals_.parcelMass += step.deposit.massIn;
     totals_.deposited += step.deposit.massDeposited;
     totals_.outside += step.deposit.massOutside;
-    step.depositionTime = depositionStart.elapsed();
-    depositReport_->record(step.deposit, step.depositionTime, time_.timeName());
+}
 
-    // 3. New fibers
-    clockValue fiberStart(true);
-    coreCall("injecting fibers", [&]() { injectFibers(t); });
 
+::dropletFiber::CaptureSources
+Foam::functionObjects::dropletFiberCollision::collideAndDeplete(const scalar dt)
+{
     // 4. Stochastic collision mass of every segment, from the grid (in
     //    parallel: of the fibers this processor holds)
     ::dropletFiber::CaptureSources capture =
@@ -1029,8 +1059,17 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
             [&]() { depleteParcels(dt); }
         );
     }
+    return capture;
+}
 
-    // 5. Advance the fibers: capture, air drag, bending, inextensibility
+
+void Foam::functionObjects::dropletFiberCollision::advanceAndCount
+(
+    const scalar dt,
+    ::dropletFiber::CaptureSources& capture,
+    stepSummary& step
+)
+{
     const ::dropletFiber::StepReport report =
         coreCall
         (
@@ -1049,18 +1088,25 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
         ++depletionSteps_;
         limitedSteps_ += depletionStep_.nodesLimited > 0 ? 1 : 0;
     }
+}
 
-    // 6. Fibers that left; the others to the processor now holding their
-    //    first point
+
+void Foam::functionObjects::dropletFiberCollision::passFibersOn()
+{
     removeLostFibers();
     if (mesh_.moving())
     {
         boxes_->update();
     }
     dropletFiber::fiberOwnership::passOn(*boxes_, held_, parallelStatistics_);
-    step.fiberTime = fiberStart.elapsed();
+}
 
-    // 7. Report; at write times the restart state and the mass balances
+
+void Foam::functionObjects::dropletFiberCollision::reportAndWriteState
+(
+    const stepSummary& step
+)
+{
     reportStep(step);
     writeParallelStatistics();
     if (time_.writeTime())
@@ -1070,7 +1116,6 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
         reportBinderBalance();
         depositReport_->reportAtWrite(time_.timeName());
     }
-    return true;
 }
 
 

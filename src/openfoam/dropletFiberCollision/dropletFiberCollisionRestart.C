@@ -220,32 +220,7 @@ Foam::dictionary Foam::functionObjects::dropletFiberCollision::stateDict
         state.add("processor", Pstream::myProcNo());
     }
 
-    dictionary fibers;
-    for (std::size_t f = 0; f < held_.size(); ++f)
-    {
-        dictionary d = dropletFiber::fiberStateDict(held_.fibers[f].state());
-        d.add("origin", held_.origin[f]);
-        fibers.add(word("fiber" + Foam::name(held_.id[f])), d);
-    }
-    state.add("fibers", fibers);
-
-    dictionary injectors;
-    for (const auto& injector : injectors_)
-    {
-        injectors.add(word(injector.spec().name), label(injector.injectedCount()));
-    }
-    state.add("injectors", injectors);
-
-    dictionary totals;
-    totals.add("parcelMass", totals_.parcelMass);
-    totals.add("deposited", totals_.deposited);
-    totals.add("outside", totals_.outside);
-    totals.add("captured", totals_.captured);
-    totals.add("fiberMassAdded", totals_.fiberMassAdded);
-    totals.add("fiberMassRemoved", totals_.fiberMassRemoved);
-    totals.add("fibersRemoved", totals_.fibersRemoved);
-    totals.add("parcelsCapped", totals_.parcelsCapped);
-    state.add("totals", totals);
+    addFibersAndTotals(state);
 
     // Depletion: the last step's removal, which the clouds' files of this
     // time do not hold yet
@@ -284,6 +259,40 @@ Foam::dictionary Foam::functionObjects::dropletFiberCollision::stateDict
 
     IOstream::defaultPrecision(oldPrecision);
     return state;
+}
+
+
+void Foam::functionObjects::dropletFiberCollision::addFibersAndTotals
+(
+    dictionary& state
+) const
+{
+    dictionary fibers;
+    for (std::size_t f = 0; f < held_.size(); ++f)
+    {
+        dictionary d = dropletFiber::fiberStateDict(held_.fibers[f].state());
+        d.add("origin", held_.origin[f]);
+        fibers.add(word("fiber" + Foam::name(held_.id[f])), d);
+    }
+    state.add("fibers", fibers);
+
+    dictionary injectors;
+    for (const auto& injector : injectors_)
+    {
+        injectors.add(word(injector.spec().name), label(injector.injectedCount()));
+    }
+    state.add("injectors", injectors);
+
+    dictionary totals;
+    totals.add("parcelMass", totals_.parcelMass);
+    totals.add("deposited", totals_.deposited);
+    totals.add("outside", totals_.outside);
+    totals.add("captured", totals_.captured);
+    totals.add("fiberMassAdded", totals_.fiberMassAdded);
+    totals.add("fiberMassRemoved", totals_.fiberMassRemoved);
+    totals.add("fibersRemoved", totals_.fibersRemoved);
+    totals.add("parcelsCapped", totals_.parcelsCapped);
+    state.add("totals", totals);
 }
 
 
