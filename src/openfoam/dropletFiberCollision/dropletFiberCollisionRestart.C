@@ -388,6 +388,55 @@ void Foam::functionObjects::dropletFiberCollision::stopIfStateMissing
 }
 
 
+void Foam::functionObjects::dropletFiberCollision::stopIfRestartWithoutState
+(
+    const fileName& path
+) const
+{
+    // A restart: the start time was written by a run (its uniform/time holds
+    // the time index), or the case holds earlier times. Starting anew there
+    // would lose the fibers and the captured mass without a word; a new
+    // function object in a running case says so with 'restart fresh;'
+    const scalar start = time_.startTime().value();
+    const scalar tolerance = 0.5*time_.deltaTValue();
+    DynamicList<word> earlier;
+    for (const instant& t : time_.times())
+    {
+        // (findTimes lists 'constant' too, at time 0)
+        if (t.value() < start - tolerance && t.name() != time_.constant())
+        {
+            earlier.append(t.name());
+        }
+    }
+    if (time_.startTimeIndex() <= 0 && earlier.empty())
+    {
+        return;
+    }
+    OStringStream why;
+    if (time_.startTimeIndex() > 0)
+    {
+        why << "time index " << time_.startTimeIndex() << ", written by a run";
+    }
+    if (!earlier.empty())
+    {
+        why << (time_.startTimeIndex() > 0 ? "; " : "") << "the case holds "
+            << earlier.size() << " earlier time(s), the first "
+            << earlier.first() << ", the last " << earlier.last();
+    }
+    FatalIOErrorInFunction(path)
+        << "Restart state " << path << " is missing: this run restarts at"
+        << " time " << time_.timeName() << " (" << why.str().c_str()
+        << "), and without its state " << type() << " '" << name() << "'"
+        << " would start anew: the fibers, their captured mass and the"
+        << " averaging window would be lost." << nl
+        << "    Copy " << path.path() << " from the run that wrote time "
+        << time_.timeName() << ", restart from a time that has it, or set"
+        << " 'restart fresh;' in the function object to start anew on"
+        << " purpose (as when adding it to a running case)."
+        << exit(FatalIOError);
+}
+
+
 bool Foam::functionObjects::dropletFiberCollision::readState()
 {
     const fileName path = statePath(time_.timeName());
@@ -405,11 +454,10 @@ bool Foam::functionObjects::dropletFiberCollision::readState()
     if (!isFile(path))
     {
         stopIfStateMissing(path);
+        stopIfRestartWithoutState(path);
         Info<< type() << " " << name() << ": no restart state " << path
-            << nl << "    "
-            << (time_.value() > 0 ? "restart without state: " : "")
-            << "starting fresh (fibers from the dictionary, empty grid window)"
-            << nl;
+            << " at the case's first time: starting from the dictionary's"
+            << " fibers and an empty grid window" << nl;
         return false;
     }
 
