@@ -267,6 +267,9 @@ void Foam::functionObjects::dropletFiberCollision::addFibersAndTotals
     dictionary& state
 ) const
 {
+    // The count of the fibers written here: a restart checks the state's
+    // fibers against it
+    state.add("fiberCount", label(held_.size()));
     dictionary fibers;
     for (std::size_t f = 0; f < held_.size(); ++f)
     {
@@ -464,7 +467,9 @@ bool Foam::functionObjects::dropletFiberCollision::readState()
     IFstream is(path);
     const dictionary state(is);
     checkStateProcessors(state, path);
+    checkStateTime(state, path);
     restoreFibers(state.subDict("fibers"));
+    checkFiberCount(state, path);
     restoreInjectorCounts(state.subDict("injectors"));
     restoreTotals(state.subDict("totals"));
     if (state.found("depletionRemoval"))
@@ -561,6 +566,62 @@ void Foam::functionObjects::dropletFiberCollision::checkStateProcessors
 }
 
 
+void Foam::functionObjects::dropletFiberCollision::checkStateTime
+(
+    const dictionary& state,
+    const fileName& path
+) const
+{
+    // OpenFOAM's time and time index come from <time>/uniform/time: a state
+    // of another time (copied from another folder, or another run's) would
+    // put its fibers and window at the wrong time
+    const scalar t = state.get<scalar>("time");
+    const label index = state.get<label>("timeIndex");
+    const scalar tolerance = 1e-3*time_.deltaTValue();
+    if (!std::isfinite(t) || mag(t - time_.value()) > tolerance)
+    {
+        FatalIOErrorInFunction(state)
+            << "Restart state " << path << ": entry 'time' is " << t
+            << ", the run restarts at time " << time_.value() << " ("
+            << time_.timeName() << "/uniform/time): the state belongs to"
+            << " another time." << nl
+            << "    Restart from the time the state was written at, or set"
+            << " 'restart fresh;'." << exit(FatalIOError);
+    }
+    if (index != time_.timeIndex())
+    {
+        FatalIOErrorInFunction(state)
+            << "Restart state " << path << ": entry 'timeIndex' is " << index
+            << ", the run restarts at time index " << time_.timeIndex()
+            << " (" << time_.timeName() << "/uniform/time, 0 without it):"
+            << " the state was written by another run or at another step."
+            << nl << "    Restart from the time folder as the run wrote it"
+            << " (uniform/time included), or set 'restart fresh;'."
+            << exit(FatalIOError);
+    }
+}
+
+
+void Foam::functionObjects::dropletFiberCollision::checkFiberCount
+(
+    const dictionary& state,
+    const fileName& path
+) const
+{
+    // States of earlier versions have no count
+    const label count = state.lookupOrDefault<label>("fiberCount", -1);
+    if (count >= 0 && count != label(held_.size()))
+    {
+        FatalIOErrorInFunction(state)
+            << "Restart state " << path << ": entry 'fiberCount' is " << count
+            << ", its dictionary 'fibers' holds " << label(held_.size())
+            << " fibers: the state is incomplete or was edited." << nl
+            << "    Restart from an earlier time, or set 'restart fresh;'."
+            << exit(FatalIOError);
+    }
+}
+
+
 Foam::label
 Foam::functionObjects::dropletFiberCollision::nextFiberIdAfterRestart
 (
@@ -626,14 +687,31 @@ void Foam::functionObjects::dropletFiberCollision::restoreInjectorCounts
     const dictionary& injectors
 )
 {
-    // An injector new to this run has injected none yet
+    // An injector new to this run has injected none yet; none has injected
+    // more than its rate gives by the state's time (checked against the run's)
     for (auto& injector : injectors_)
     {
         const word key(injector.spec().name);
-        injector.setInjectedCount
+        const label count =
+            dropletFiber::getLabelInRange(injectors, key, 0, 0, labelMax);
+        const label born = dropletFiber::checkedCoreCall
         (
-            dropletFiber::getLabelInRange(injectors, key, 0, 0, labelMax)
+            injectors,
+            [&]() { return label(injector.bornBy(time_.value())); }
         );
+        if (count > born)
+        {
+            const auto& spec = injector.spec();
+            FatalIOErrorInFunction(injectors)
+                << "Entry '" << key << "' is " << count << ": injector '"
+                << key << "' (rate " << spec.rate << ", startTime "
+                << spec.startTime << ", endTime " << spec.endTime << ") has"
+                << " given at most " << born << " fibers by time "
+                << time_.timeName() << "." << nl
+                << "    Restart from a state its run wrote, or set 'restart"
+                << " fresh;'." << exit(FatalIOError);
+        }
+        injector.setInjectedCount(count);
     }
 }
 
