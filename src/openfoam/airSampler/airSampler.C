@@ -19,6 +19,19 @@
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
+Foam::string Foam::dropletFiber::airSampler::whatIs(const word& name) const
+{
+    // The object of that name in the mesh's registry, whatever its type
+    const regIOobject* object = mesh_.cfindObject<regIOobject>(name);
+    if (!object)
+    {
+        return "does not exist";
+    }
+    return "is a " + object->type();
+}
+
+
+
 Foam::dropletFiber::airSampler::source
 Foam::dropletFiber::airSampler::readSource
 (
@@ -80,7 +93,8 @@ Foam::dropletFiber::airSampler::readSource
     {
         FatalIOErrorInFunction(dict)
             << "Entry '" << key << "' names field '" << s.fieldName
-            << "', which does not exist." << nl
+            << "', which " << whatIs(s.fieldName).c_str() << ": '" << key
+            << "' needs a volScalarField." << nl
             << "    Scalar fields: " << mesh_.sortedNames<volScalarField>() << nl
             << "    Allowed are a value > 0, a field name, or transportProperties."
             << exit(FatalIOError);
@@ -255,10 +269,10 @@ void Foam::dropletFiber::airSampler::read(const dictionary& airDict)
     if (!mesh_.foundObject<volVectorField>(UName_))
     {
         FatalIOErrorInFunction(airDict)
-            << "Entry 'U' names velocity field '" << UName_
-            << "', which does not exist." << nl
-            << "    Vector fields: " << mesh_.sortedNames<volVectorField>()
-            << exit(FatalIOError);
+            << "Entry 'U' names field '" << UName_ << "', which "
+            << whatIs(UName_).c_str() << ": U needs a volVectorField."
+            << nl << "    Vector fields: "
+            << mesh_.sortedNames<volVectorField>() << exit(FatalIOError);
     }
     rho_ = readSource(airDict, "rho");
     mu_ = readSource(airDict, "mu");

@@ -235,7 +235,9 @@ void Foam::functionObjects::dropletFiberCollision::reportSettings() const
     Info<< (
                gatherWriteObjects_
              ? " (gather writeObjects: every cloud through cloud::writeObjects)"
-             : " (gather direct: kinematic parcel types read directly)"
+             : " (gather direct: kinematic, colliding and MPPIC clouds read"
+               " parcel by parcel, others through cloud::writeObjects; each"
+               " cloud's route is logged when first read)"
            ) << nl;
     Info<< "    grid: (" << g.lower.x() << ' ' << g.lower.y() << ' ' << g.lower.z()
         << ") to (" << g.upper.x() << ' ' << g.upper.y() << ' ' << g.upper.z()
@@ -458,11 +460,40 @@ void Foam::functionObjects::dropletFiberCollision::gatherParcels()
     {
         stepClouds_.append(cloudName);
         cloudStarts_.append(parcels_.size());
-        parcels_.append
-        (
-            mesh_.lookupObject<cloud>(cloudName), dict_, gatherWriteObjects_
-        );
+        const cloud& c = mesh_.lookupObject<cloud>(cloudName);
+        logCloudRoute(c);
+        parcels_.append(c, dict_, gatherWriteObjects_);
     }
+}
+
+
+void Foam::functionObjects::dropletFiberCollision::logCloudRoute
+(
+    const cloud& c
+)
+{
+    if (!loggedClouds_.insert(c.name()))
+    {
+        return;
+    }
+    const bool direct =
+        !gatherWriteObjects_ && dropletFiber::cloudParcels::isKinematic(c);
+    Info<< type() << " " << name() << ": cloud '" << c.name() << "' (type "
+        << c.type() << ") read "
+        << (
+               direct
+             ? "parcel by parcel (a kinematic, colliding or MPPIC cloud)"
+             : gatherWriteObjects_
+             ? "through cloud::writeObjects (entry gather writeObjects)"
+             : "through cloud::writeObjects (gather direct reads kinematic,"
+               " colliding and MPPIC clouds only)"
+           );
+    if (depletion_ && !dropletFiber::cloudParcels::isKinematic(c))
+    {
+        Info<< "; the droplets the fibers capture cannot be removed from"
+            << " its parcels";
+    }
+    Info<< nl;
 }
 
 
@@ -995,17 +1026,21 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
     // 3. New fibers
     clockValue fiberStart(true);
     coreCall("injecting fibers", [&]() { injectFibers(time_.value()); });
+    step.fiberTime = fiberStart.elapsed();
 
     // 4. Collision mass of every segment; with depletion taken from the parcels
+    clockValue collisionStart(true);
     ::dropletFiber::CaptureSources capture = collideAndDeplete(dt);
+    step.collisionTime = collisionStart.elapsed();
 
     // 5. Advance the fibers: capture, air drag, bending, inextensibility
+    fiberStart.update();
     advanceAndCount(dt, capture, step);
 
     // 6. Fibers that left; the others to the processor now holding their
     //    first point
     passFibersOn();
-    step.fiberTime = fiberStart.elapsed();
+    step.fiberTime += scalar(fiberStart.elapsed());
 
     // 7. Report; at write times the restart state and the mass balances
     reportAndWriteState(step);
