@@ -30,6 +30,7 @@ Description
 #include "fiberStateIO.H"
 #include "dictionaryChecks.H"
 #include "restartStateMarker.H"
+#include "restartSources.H"
 #include "Time.H"
 #include "OFstream.H"
 #include "IFstream.H"
@@ -221,6 +222,12 @@ Foam::dictionary Foam::functionObjects::dropletFiberCollision::stateDict
     }
 
     addFibersAndTotals(state);
+    // The dictionary's geometry, for a restart to say what its own changes
+    state.add
+    (
+        "sources",
+        dropletFiber::restartSources(dict_.subOrEmptyDict("fibers"), gridSettings_)
+    );
 
     // Depletion: the last step's removal, which the clouds' files of this
     // time do not hold yet
@@ -470,13 +477,22 @@ bool Foam::functionObjects::dropletFiberCollision::readState()
     checkStateTime(state, path);
     restoreFibers(state.subDict("fibers"));
     checkFiberCount(state, path);
-    restoreInjectorCounts(state.subDict("injectors"));
+    restoreInjectorCounts(state.subDict("injectors"), state.subOrEmptyDict("sources"));
     restoreTotals(state.subDict("totals"));
     if (state.found("depletionRemoval"))
     {
         restoreRemoval(state.subDict("depletionRemoval"));
     }
     restoreWindow(state, path);
+    // States of earlier versions have no sources to compare with
+    if (state.found("sources"))
+    {
+        dropletFiber::warnSourcesDiffer
+        (
+            type() + " '" + name() + "'", state.subDict("sources"), path,
+            dict_.subOrEmptyDict("fibers"), gridSettings_
+        );
+    }
 
     Info<< type() << " " << name() << ": restarted from " << path
         << ": captured mass so far " << totals_.captured << " kg" << nl;
@@ -684,16 +700,30 @@ void Foam::functionObjects::dropletFiberCollision::restoreFibers
 
 void Foam::functionObjects::dropletFiberCollision::restoreInjectorCounts
 (
-    const dictionary& injectors
+    const dictionary& injectors,
+    const dictionary& sources
 )
 {
     // An injector new to this run has injected none yet; none has injected
-    // more than its rate gives by the state's time (checked against the run's)
+    // more than its rate gives by the state's time, where the state says
+    // that the rate was the dictionary's (an injector edited since is
+    // warned about: warnSourcesDiffer)
     for (auto& injector : injectors_)
     {
         const word key(injector.spec().name);
         const label count =
             dropletFiber::getLabelInRange(injectors, key, 0, 0, labelMax);
+        const bool edited =
+            !sources.empty()
+         && !dropletFiber::sameSource
+            (
+                sources, dict_.subOrEmptyDict("fibers"), "injectors", key
+            );
+        if (edited)
+        {
+            injector.setInjectedCount(count);
+            continue;
+        }
         const label born = dropletFiber::checkedCoreCall
         (
             injectors,
