@@ -15,6 +15,7 @@ Description
 #include "dictionaryChecks.H"
 #include "dictionaryKeys.H"
 #include "collisionSettings.H"
+#include "plausibility.H"
 #include "fiberStateIO.H"
 #include "fiberOwnership.H"
 #include "cloud.H"
@@ -467,6 +468,41 @@ void Foam::functionObjects::dropletFiberCollision::gatherParcels()
 }
 
 
+void Foam::functionObjects::dropletFiberCollision::warnImplausibleDroplets()
+{
+    // At the first step with parcels (on any processor), once
+    if (checkedDroplets_)
+    {
+        return;
+    }
+    scalar lo = VGREAT;
+    scalar hi = -VGREAT;
+    for (const scalar rho : parcels_.rho)
+    {
+        lo = min(lo, rho);
+        hi = max(hi, rho);
+    }
+    reduce(lo, minOp<scalar>());
+    reduce(hi, maxOp<scalar>());
+    if (lo > hi)
+    {
+        return;
+    }
+    checkedDroplets_ = true;
+    const auto& range = dropletFiber::dropletDensityRange;
+    const string text =
+        dropletFiber::implausible(lo < range.lo ? lo : hi, range);
+    if (!text.empty())
+    {
+        WarningInFunction
+            << type() << " " << name() << ": the droplet density (the"
+            << " parcels' rho: the clouds' constantProperties rho0 or their"
+            << " injection data) "
+            << text.c_str() << endl;
+    }
+}
+
+
 void Foam::functionObjects::dropletFiberCollision::logCloudRoute
 (
     const cloud& c
@@ -885,6 +921,7 @@ Foam::functionObjects::dropletFiberCollision::dropletFiberCollision
     limitedSteps_(0),
     removalRestored_(false),
     loggedLimit_(false),
+    checkedDroplets_(false),
     warnedSamplesOutside_(false),
     nextFiberId_(0),
     stateProcessors_(0),
@@ -1000,6 +1037,13 @@ bool Foam::functionObjects::dropletFiberCollision::read(const dictionary& dict)
         gridSettings_ = grid;
         dict_ = dict;
         buildStatefulParts(dict);
+        // Unit slips run, warned once at the start
+        dropletFiber::warnImplausibleFibers(dict.subOrEmptyDict("fibers"));
+        dropletFiber::warnImplausibleAir(dict.subOrEmptyDict("air"));
+        dropletFiber::warnImplausibleSpacing
+        (
+            dict.subOrEmptyDict("grid"), gridSettings_, mesh_
+        );
     }
     return true;
 }
@@ -1065,6 +1109,7 @@ void Foam::functionObjects::dropletFiberCollision::gatherAndDeposit
         );
     }
     gatherParcels();
+    warnImplausibleDroplets();
     step.parcels = returnReduce(parcels_.size(), sumOp<label>());
     step.droplets = returnReduce(parcels_.nDroplets(), sumOp<scalar>());
 
