@@ -3,7 +3,8 @@
 # fibers and the captured mass would be lost): the time folder written by a run
 # without uniform/dropletFiber, a time folder copied into a case without its uniform/
 # (the case's earlier times say it is a restart), and on 2 ranks; 'restart fresh;'
-# starts anew on purpose, saying so. Usage: checkRestartWithoutState.sh CASE_DIR WORK_DIR
+# starts anew on purpose, saying so, as does a restart before the function object's
+# timeStart. Usage: checkRestartWithoutState.sh CASE_DIR WORK_DIR
 # (fiberStream: writes at 0.1)
 set -uo pipefail
 # shellcheck disable=SC1091
@@ -27,8 +28,12 @@ expectStop uniformRemoved "this run restarts at time 0.1 \(the case holds 1 earl
 restartCopy fresh "rm -rf $state; foamDictionary system/controlDict -entry functions/dropletFiber/restart -add fresh > /dev/null" 0.11
 expectRuns fresh "restart fresh: starting from the dictionary's fibers"
 
+# Before the function object's timeStart it has not run: nothing to lose, it starts
+restartCopy beforeTimeStart "rm -rf $state; foamDictionary system/controlDict -entry functions/dropletFiber/timeStart -add 0.105 > /dev/null" 0.11
+expectRuns beforeTimeStart "no restart state .*0.1/uniform/dropletFiber/dropletFiber"
+
 # The first time of a case: starts, without a word of a restart
-check "grep -q \"no restart state .* at the case's first time\" '$work/good/log.icoUncoupledKinematicParcelFoam'" \
+check "grep -q \"no restart state .* (the case's first time\" '$work/good/log.icoUncoupledKinematicParcelFoam'" \
     "the first run does not say that it starts from the dictionary"
 
 # 2 ranks: processor1's state missing, every rank stops naming it

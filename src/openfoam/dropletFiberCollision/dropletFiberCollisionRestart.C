@@ -418,7 +418,16 @@ void Foam::functionObjects::dropletFiberCollision::stopIfRestartWithoutState
             earlier.append(t.name());
         }
     }
-    if (time_.startTimeIndex() <= 0 && earlier.empty())
+    // Before the function object's timeStart it has not run: nothing to lose
+    const scalar timeStart = time_.userTimeToTime
+    (
+        dict_.lookupOrDefault<scalar>("timeStart", -VGREAT)
+    );
+    if
+    (
+        (time_.startTimeIndex() <= 0 && earlier.empty())
+     || time_.value() <= timeStart + tolerance
+    )
     {
         return;
     }
@@ -466,8 +475,9 @@ bool Foam::functionObjects::dropletFiberCollision::readState()
         stopIfStateMissing(path);
         stopIfRestartWithoutState(path);
         Info<< type() << " " << name() << ": no restart state " << path
-            << " at the case's first time: starting from the dictionary's"
-            << " fibers and an empty grid window" << nl;
+            << " (the case's first time, or not after the function object's"
+            << " timeStart): starting from the dictionary's fibers and an"
+            << " empty grid window" << nl;
         return false;
     }
 
