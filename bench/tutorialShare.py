@@ -7,10 +7,12 @@ Reads, from a case directory that has been run:
     time steps ("Time = ..." lines);
   - the function object's per-step table
     postProcessing/<name>/<startTime>/<name>.dat (all start times, e.g. after a
-    restart): the columns wallTimeDeposition and wallTimeFibers (seconds of wall
-    time per step, measured by the function object on the master rank: gathering
-    and depositing the parcels with the cross-rank grid sum, and collision +
-    fiber step + bookkeeping).
+    restart): the columns wallTimeDeposition, wallTimeCollision (tables written
+    before it existed: counted in wallTimeFibers) and wallTimeFibers (seconds of
+    wall time per step, measured by the function object on the master rank:
+    gathering and depositing the parcels with the cross-rank grid sum; the
+    collision and depletion's removal; the fibers' injection, step and
+    hand-over).
 It prints the function object's total time, its share of the solver's
 ExecutionTime (CPU time of the master process) and of its ClockTime (wall time,
 1 s resolution), and per-step figures. The VTK files that the function object
@@ -101,8 +103,9 @@ def main():
         return 1
 
     deposition = sum(r["wallTimeDeposition"] for r in rows)
+    collision = sum(r.get("wallTimeCollision", 0.0) for r in rows)
     fibers = sum(r["wallTimeFibers"] for r in rows)
-    total = deposition + fibers
+    total = deposition + collision + fibers
     n = len(rows)
     parcels = sum(r.get("parcels", 0.0) for r in rows) / n
     fiber_count = sum(r.get("fibers", 0.0) for r in rows) / n
@@ -120,7 +123,8 @@ def main():
     print(f"  function object table: {n} rows from {len(tables)} file(s); mean parcels {parcels:.0f}, "
           f"mean fibers {fiber_count:.1f}")
     print(f"  deposition (gather + grid + cross-rank sum): {deposition:.3f} s = {1e3 * deposition / n:.3f} ms/step")
-    print(f"  fibers (collision + fiber step + bookkeeping): {fibers:.3f} s = {1e3 * fibers / n:.3f} ms/step")
+    print(f"  collision (+ depletion's removal): {collision:.3f} s = {1e3 * collision / n:.3f} ms/step")
+    print(f"  fibers (injection + fiber step + hand-over): {fibers:.3f} s = {1e3 * fibers / n:.3f} ms/step")
     print(f"  function object total {total:.3f} s = {share_exec:.2f} % of ExecutionTime, "
           f"{share_clock:.2f} % of ClockTime")
     return 0

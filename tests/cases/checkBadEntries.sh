@@ -61,7 +61,10 @@ expectError fibers/drag stokes "Entry 'drag' is 'stokes': allowed are"
 expectError collision "{ sampling everywhere; }" "Entry 'sampling' is 'everywhere'"
 expectError collision "{ depletion maybe; }" "Entry 'depletion' is 'maybe': allowed are true or false"
 expectError air "{ rho -1.2; }" "Entry 'rho' is -1.2"
-expectError air "{ mu noSuchField; }" "Entry 'mu' names field 'noSuchField'"
+expectError air "{ mu noSuchField; }" "Entry 'mu' names field 'noSuchField', which does not exist"
+# A field of the wrong kind is named as such
+expectError air "{ U p; }" "Entry 'U' names field 'p', which is a volScalarField: U needs a volVectorField"
+expectError air "{ rho U; }" "Entry 'rho' names field 'U', which is a volVectorField: 'rho' needs a volScalarField"
 expectError fibers/fixed/across/points "((0.05 0.01 0.005))" "Entry 'points' has 1 points"
 expectError fibers/fixed/across/hold glued "Entry 'hold' is 'glued'"
 

@@ -40,12 +40,16 @@ void appendNumber(std::string& out, double v)
     out.append(buffer, written.ptr);
 }
 
+// The time as the shortest decimal that reads back as it: a time given as its folder's
+// name (0.3) is written as that, not as 0.29999999999999999
 void writeTimeFieldData(std::ostream& os, double time)
 {
+    std::string text;
+    appendNumber(text, time);
     os << "    <FieldData>\n"
        << "      <DataArray type=\"Float64\" Name=\"TimeValue\" NumberOfTuples=\"1\""
           " format=\"ascii\">"
-       << time << "</DataArray>\n"
+       << text << "</DataArray>\n"
        << "    </FieldData>\n";
 }
 
@@ -376,7 +380,9 @@ void SeriesFile::write() const
     os << "{\n  \"file-series-version\" : \"1.0\",\n  \"files\" : [\n";
     for (std::size_t i = 0; i < entries_.size(); ++i)
     {
-        os << "    { \"name\" : \"" << entries_[i].name << "\", \"time\" : " << entries_[i].time << " }"
+        std::string time;
+        appendNumber(time, entries_[i].time);
+        os << "    { \"name\" : \"" << entries_[i].name << "\", \"time\" : " << time << " }"
            << (i + 1 < entries_.size() ? "," : "") << '\n';
     }
     os << "  ]\n}\n";

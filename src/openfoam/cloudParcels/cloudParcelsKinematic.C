@@ -207,6 +207,15 @@ bool Foam::dropletFiber::cloudParcels::appendKinematic(const cloud& c)
 }
 
 
+bool Foam::dropletFiber::cloudParcels::isKinematic(const cloud& c)
+{
+    return
+        isA<Cloud<basicKinematicCollidingParcel>>(c)
+     || isA<Cloud<basicKinematicParcel>>(c)
+     || isA<Cloud<basicKinematicMPPICParcel>>(c);
+}
+
+
 bool Foam::dropletFiber::cloudParcels::depleteKinematic
 (
     cloud& c,

@@ -85,7 +85,8 @@ void Foam::dropletFiber::depositReport::record
         since_.stepTime > 0 ? since_.depositTime/since_.stepTime : 0;
     const bool large =
         returnReduce(share, maxOp<scalar>()) > largeShare
-     && since_.steps >= minSteps;
+     && since_.steps >= minSteps
+     && since_.stepTime >= minWallTime;
     if (warned_ || !large)
     {
         return;
@@ -195,11 +196,25 @@ void Foam::dropletFiber::depositReport::writeAdvice
 {
     // Nodes per parcel ~ (2 reach / h)^D: what each setting does to them
     const scalar D = scalar(activeDimensions_);
+    if (!(all.widestWidth > 0))
+    {
+        // Cloud-in-cell: 2^D corners per point of a parcel's path, whatever
+        // the kernel entries; only fewer parcels or points cost less
+        os  << "    every parcel was deposited cloud-in-cell (its kernel"
+            << " narrower than grid.cloudInCellBelow " << kernel_.cloudInCellBelow
+            << " node spacings): " << std::pow(2.0, D) << " corners per point"
+            << " of its path; the kernel entries (rMaxCap, negligibleWeight,"
+            << " cloudInCellBelow) cannot lower that cost, and a coarser"
+            << " grid.spacing only shortens the paths in node spacings. The"
+            << " cost follows the number of parcels (the clouds' injection)."
+            << nl;
+        return;
+    }
     os  << "    settings that would help (docs/model.md sec. 4, cost of wide"
         << " kernels):" << nl
         << "      grid.spacing " << 2*spacing_ << " (twice the present): about "
-        << std::pow(2.0, D) << "x fewer nodes per parcel; a coarser density"
-        << " field for the collision" << nl;
+        << std::pow(2.0, D) << "x fewer nodes per kernel-deposited parcel; a"
+        << " coarser density field for the collision" << nl;
     const scalar epsilon = kernel_.negligibleWeight;
     if (epsilon > 0 && epsilon < 1e-8)
     {
@@ -211,22 +226,39 @@ void Foam::dropletFiber::depositReport::writeAdvice
             << "x fewer nodes; node weights below 1e-8 of a parcel's largest"
             << " left out (mass kept)" << nl;
     }
-    if (!(kernel_.rMaxCap > 0))
+    writeCapAndCloudInCellAdvice(os, all);
+}
+
+
+void Foam::dropletFiber::depositReport::writeCapAndCloudInCellAdvice
+(
+    Ostream& os,
+    const interval& all
+) const
+{
+    const scalar D = scalar(activeDimensions_);
+    const scalar capReach = 3*all.widestWidth;
+    if (!(kernel_.rMaxCap > 0) && all.widestReach > capReach)
     {
-        os  << "      grid.rMaxCap " << 3*all.widestWidth*spacing_
+        os  << "      grid.rMaxCap " << capReach*spacing_
             << " (3 widths of the widest kernel): about "
-            << std::pow(all.widestReach/max(3*all.widestWidth, 1e-300), D)
+            << std::pow(all.widestReach/capReach, D)
             << "x fewer nodes for it; but it cuts the kernel's support and"
             << " moves its mass inwards: density +10 % at the centre, a fiber"
             << " passing at 3 widths captures 58-95 % less (docs/model.md"
             << " sec. 4)" << nl;
     }
-    if (all.widestWidth < 2)
+    if (all.widestWidth < 2 && all.widestWidth >= kernel_.cloudInCellBelow)
     {
-        os  << "      grid.cloudInCellBelow " << all.widestWidth
-            << ": every parcel to its cell corners (2^D nodes per point of"
-            << " its path); kernels of width up to that are then not resolved"
-            << nl;
+        // cloudInCellBelow c: kernels narrower than c spacings go to their
+        // cell corners; 0 keeps the paper's kernel for every parcel
+        const scalar above = 1.01*all.widestWidth;
+        os  << "      grid.cloudInCellBelow " << above << " (now "
+            << kernel_.cloudInCellBelow << "; 0 = the paper's kernel for"
+            << " every parcel): the parcels whose kernel is narrower than "
+            << above << " node spacings, the widest of this run included,"
+            << " go to their cell corners (2^D nodes per point of the path);"
+            << " kernels of that width are then not resolved" << nl;
     }
 }
 

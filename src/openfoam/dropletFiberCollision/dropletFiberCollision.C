@@ -15,6 +15,7 @@ Description
 #include "dictionaryChecks.H"
 #include "dictionaryKeys.H"
 #include "collisionSettings.H"
+#include "plausibility.H"
 #include "fiberStateIO.H"
 #include "fiberOwnership.H"
 #include "cloud.H"
@@ -235,7 +236,9 @@ void Foam::functionObjects::dropletFiberCollision::reportSettings() const
     Info<< (
                gatherWriteObjects_
              ? " (gather writeObjects: every cloud through cloud::writeObjects)"
-             : " (gather direct: kinematic parcel types read directly)"
+             : " (gather direct: kinematic, colliding and MPPIC clouds read"
+               " parcel by parcel, others through cloud::writeObjects; each"
+               " cloud's route is logged when first read)"
            ) << nl;
     Info<< "    grid: (" << g.lower.x() << ' ' << g.lower.y() << ' ' << g.lower.z()
         << ") to (" << g.upper.x() << ' ' << g.upper.y() << ' ' << g.upper.z()
@@ -458,11 +461,75 @@ void Foam::functionObjects::dropletFiberCollision::gatherParcels()
     {
         stepClouds_.append(cloudName);
         cloudStarts_.append(parcels_.size());
-        parcels_.append
-        (
-            mesh_.lookupObject<cloud>(cloudName), dict_, gatherWriteObjects_
-        );
+        const cloud& c = mesh_.lookupObject<cloud>(cloudName);
+        logCloudRoute(c);
+        parcels_.append(c, dict_, gatherWriteObjects_);
     }
+}
+
+
+void Foam::functionObjects::dropletFiberCollision::warnImplausibleDroplets()
+{
+    // At the first step with parcels (on any processor), once
+    if (checkedDroplets_)
+    {
+        return;
+    }
+    scalar lo = VGREAT;
+    scalar hi = -VGREAT;
+    for (const scalar rho : parcels_.rho)
+    {
+        lo = min(lo, rho);
+        hi = max(hi, rho);
+    }
+    reduce(lo, minOp<scalar>());
+    reduce(hi, maxOp<scalar>());
+    if (lo > hi)
+    {
+        return;
+    }
+    checkedDroplets_ = true;
+    const auto& range = dropletFiber::dropletDensityRange;
+    const string text =
+        dropletFiber::implausible(lo < range.lo ? lo : hi, range);
+    if (!text.empty())
+    {
+        WarningInFunction
+            << type() << " " << name() << ": the droplet density (the"
+            << " parcels' rho: the clouds' constantProperties rho0 or their"
+            << " injection data) "
+            << text.c_str() << endl;
+    }
+}
+
+
+void Foam::functionObjects::dropletFiberCollision::logCloudRoute
+(
+    const cloud& c
+)
+{
+    if (!loggedClouds_.insert(c.name()))
+    {
+        return;
+    }
+    const bool direct =
+        !gatherWriteObjects_ && dropletFiber::cloudParcels::isKinematic(c);
+    Info<< type() << " " << name() << ": cloud '" << c.name() << "' (type "
+        << c.type() << ") read "
+        << (
+               direct
+             ? "parcel by parcel (a kinematic, colliding or MPPIC cloud)"
+             : gatherWriteObjects_
+             ? "through cloud::writeObjects (entry gather writeObjects)"
+             : "through cloud::writeObjects (gather direct reads kinematic,"
+               " colliding and MPPIC clouds only)"
+           );
+    if (depletion_ && !dropletFiber::cloudParcels::isKinematic(c))
+    {
+        Info<< "; the droplets the fibers capture cannot be removed from"
+            << " its parcels";
+    }
+    Info<< nl;
 }
 
 
@@ -854,6 +921,7 @@ Foam::functionObjects::dropletFiberCollision::dropletFiberCollision
     limitedSteps_(0),
     removalRestored_(false),
     loggedLimit_(false),
+    checkedDroplets_(false),
     warnedSamplesOutside_(false),
     nextFiberId_(0),
     stateProcessors_(0),
@@ -969,6 +1037,13 @@ bool Foam::functionObjects::dropletFiberCollision::read(const dictionary& dict)
         gridSettings_ = grid;
         dict_ = dict;
         buildStatefulParts(dict);
+        // Unit slips run, warned once at the start
+        dropletFiber::warnImplausibleFibers(dict.subOrEmptyDict("fibers"));
+        dropletFiber::warnImplausibleAir(dict.subOrEmptyDict("air"));
+        dropletFiber::warnImplausibleSpacing
+        (
+            dict.subOrEmptyDict("grid"), gridSettings_, mesh_
+        );
     }
     return true;
 }
@@ -982,14 +1057,49 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
         return true;
     }
     lastTimeIndex_ = time_.timeIndex();
-    const scalar t = time_.value();
     const scalar dt = time_.deltaTValue();
     stepSummary step;
     parallelStatistics_.startStep();
 
+    // 1.-2. The parcels of this step, onto the grid, averaged over the window
+    clockValue depositionStart(true);
+    gatherAndDeposit(dt, step);
+    step.depositionTime = depositionStart.elapsed();
+    depositReport_->record(step.deposit, step.depositionTime, time_.timeName());
+
+    // 3. New fibers
+    clockValue fiberStart(true);
+    coreCall("injecting fibers", [&]() { injectFibers(time_.value()); });
+    step.fiberTime = fiberStart.elapsed();
+
+    // 4. Collision mass of every segment; with depletion taken from the parcels
+    clockValue collisionStart(true);
+    ::dropletFiber::CaptureSources capture = collideAndDeplete(dt);
+    step.collisionTime = collisionStart.elapsed();
+
+    // 5. Advance the fibers: capture, air drag, bending, inextensibility
+    fiberStart.update();
+    advanceAndCount(dt, capture, step);
+
+    // 6. Fibers that left; the others to the processor now holding their
+    //    first point
+    passFibersOn();
+    step.fiberTime += scalar(fiberStart.elapsed());
+
+    // 7. Report; at write times the restart state and the mass balances
+    reportAndWriteState(step);
+    return true;
+}
+
+
+void Foam::functionObjects::dropletFiberCollision::gatherAndDeposit
+(
+    const scalar dt,
+    stepSummary& step
+)
+{
     // 1. The parcels of this step, on this processor (after a restart, with
     //    the removal of the step restarted from)
-    clockValue depositionStart(true);
     if (removalRestored_)
     {
         coreCall
@@ -999,6 +1109,7 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
         );
     }
     gatherParcels();
+    warnImplausibleDroplets();
     step.parcels = returnReduce(parcels_.size(), sumOp<label>());
     step.droplets = returnReduce(parcels_.nDroplets(), sumOp<scalar>());
 
@@ -1008,13 +1119,12 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
     totals_.parcelMass += step.deposit.massIn;
     totals_.deposited += step.deposit.massDeposited;
     totals_.outside += step.deposit.massOutside;
-    step.depositionTime = depositionStart.elapsed();
-    depositReport_->record(step.deposit, step.depositionTime, time_.timeName());
+}
 
-    // 3. New fibers
-    clockValue fiberStart(true);
-    coreCall("injecting fibers", [&]() { injectFibers(t); });
 
+::dropletFiber::CaptureSources
+Foam::functionObjects::dropletFiberCollision::collideAndDeplete(const scalar dt)
+{
     // 4. Stochastic collision mass of every segment, from the grid (in
     //    parallel: of the fibers this processor holds)
     ::dropletFiber::CaptureSources capture =
@@ -1029,8 +1139,17 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
             [&]() { depleteParcels(dt); }
         );
     }
+    return capture;
+}
 
-    // 5. Advance the fibers: capture, air drag, bending, inextensibility
+
+void Foam::functionObjects::dropletFiberCollision::advanceAndCount
+(
+    const scalar dt,
+    ::dropletFiber::CaptureSources& capture,
+    stepSummary& step
+)
+{
     const ::dropletFiber::StepReport report =
         coreCall
         (
@@ -1049,18 +1168,25 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
         ++depletionSteps_;
         limitedSteps_ += depletionStep_.nodesLimited > 0 ? 1 : 0;
     }
+}
 
-    // 6. Fibers that left; the others to the processor now holding their
-    //    first point
+
+void Foam::functionObjects::dropletFiberCollision::passFibersOn()
+{
     removeLostFibers();
     if (mesh_.moving())
     {
         boxes_->update();
     }
     dropletFiber::fiberOwnership::passOn(*boxes_, held_, parallelStatistics_);
-    step.fiberTime = fiberStart.elapsed();
+}
 
-    // 7. Report; at write times the restart state and the mass balances
+
+void Foam::functionObjects::dropletFiberCollision::reportAndWriteState
+(
+    const stepSummary& step
+)
+{
     reportStep(step);
     writeParallelStatistics();
     if (time_.writeTime())
@@ -1070,7 +1196,6 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
         reportBinderBalance();
         depositReport_->reportAtWrite(time_.timeName());
     }
-    return true;
 }
 
 

@@ -146,10 +146,11 @@ void Foam::functionObjects::dropletFiberCollision::depleteParcels
         (
             *grid_, captureLimit_, stepParcels_, dt, parallelStatistics_
         );
-    writeBackToClouds(fraction);
+    const scalar kept = writeBackToClouds(fraction);
     keepRemoval(fraction);
     // What left the parcels written back, and what flies on
-    List<scalar> sums(5, Zero);
+    List<scalar> sums(6, Zero);
+    sums[5] = kept;
     for (std::size_t p = 0; p < stepParcels_.size(); ++p)
     {
         const scalar m = ::dropletFiber::parcelMass(stepParcels_[p]);
@@ -166,15 +167,17 @@ void Foam::functionObjects::dropletFiberCollision::depleteParcels
     depletionStep_.demanded = sums[2];
     depletionStep_.nodesLimited = label(sums[3]);
     depletionStep_.limitedDemand = sums[4];
+    depletionStep_.kept = sums[5];
     logLimitOnce();
 }
 
 
-void Foam::functionObjects::dropletFiberCollision::writeBackToClouds
+Foam::scalar Foam::functionObjects::dropletFiberCollision::writeBackToClouds
 (
     std::vector<double>& fraction
 )
 {
+    scalar kept = 0;
     forAll(stepClouds_, k)
     {
         const label start = cloudStarts_[k];
@@ -220,8 +223,13 @@ void Foam::functionObjects::dropletFiberCollision::writeBackToClouds
                 << " (warned once per cloud, at time " << time_.timeName()
                 << ")." << endl;
         }
+        for (label p = start; p < end; ++p)
+        {
+            kept += fraction[p]*::dropletFiber::parcelMass(stepParcels_[p]);
+        }
         std::fill(fraction.begin() + start, fraction.begin() + end, 0.0);
     }
+    return kept;
 }
 
 
@@ -249,13 +257,21 @@ void Foam::functionObjects::dropletFiberCollision::reportBinderBalance() const
     {
         return;
     }
+    // Captured = removed + kept in clouds that cannot be written back
     const depletionSummary& d = depletionStep_;
-    const scalar scale = max(mag(d.captured), mag(d.removed));
+    const scalar scale = max(mag(d.captured), mag(d.removed + d.kept));
     Info<< type() << " " << name() << " binder balance at time "
         << time_.timeName() << ":" << nl
         << "    this step: captured " << d.captured << " kg, removed from"
-        << " the parcels " << d.removed << " kg (relative difference "
-        << (scale > 0 ? (d.captured - d.removed)/scale : scalar(0))
+        << " the parcels " << d.removed << " kg";
+    if (d.kept > 0)
+    {
+        Info<< ", left in the parcels of clouds read through"
+            << " cloud::writeObjects " << d.kept << " kg (they cannot be"
+            << " written back)";
+    }
+    Info<< " (relative difference "
+        << (scale > 0 ? (d.captured - d.removed - d.kept)/scale : scalar(0))
         << "), eq. 9 before the limit " << d.demanded << " kg" << nl
         << "    airborne parcel mass after the removal " << d.airborne
         << " kg; captured in total " << totals_.captured << " kg" << nl

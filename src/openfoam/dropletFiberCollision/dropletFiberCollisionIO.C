@@ -75,7 +75,10 @@ void Foam::functionObjects::dropletFiberCollision::writeFileHeader
             writeTabbed(os, column);
         }
     }
+    // One stage each: gather and deposit; collision (and depletion's
+    // removal); the fibers' injection, step and hand-over
     writeTabbed(os, "wallTimeDeposition");
+    writeTabbed(os, "wallTimeCollision");
     writeTabbed(os, "wallTimeFibers");
     os  << endl;
 }
@@ -122,6 +125,7 @@ void Foam::functionObjects::dropletFiberCollision::reportStep
                 << tab << depletionStep_.airborne;
         }
         os  << tab << step.depositionTime
+            << tab << step.collisionTime
             << tab << step.fiberTime
             << endl;
     }
@@ -138,7 +142,8 @@ void Foam::functionObjects::dropletFiberCollision::writeParallelStatistics()
     );
     const dropletFiber::parallelStatistics::figures maxima =
         parallelStatistics_.maxOverProcessors();
-    if (!writeToFile())
+    // A serial run holds every node and fiber and sends nothing: no table
+    if (!Pstream::parRun() || !writeToFile())
     {
         return;
     }
@@ -202,7 +207,9 @@ void Foam::functionObjects::dropletFiberCollision::writeVtkFiles()
     {
         mkDir(dir);
     }
-    const scalar t = time_.value();
+    // The time folder's name as the files' time: 0.3, not the sum of the
+    // steps (0.30000000000000004)
+    const scalar t = readScalar(time_.timeName());
 
     // Both collective in parallel: every processor writes its piece (its
     // fibers, its block of the grid), the master the index of the pieces

@@ -30,6 +30,7 @@ Description
 #include "fiberStateIO.H"
 #include "dictionaryChecks.H"
 #include "restartStateMarker.H"
+#include "restartSources.H"
 #include "Time.H"
 #include "OFstream.H"
 #include "IFstream.H"
@@ -220,32 +221,13 @@ Foam::dictionary Foam::functionObjects::dropletFiberCollision::stateDict
         state.add("processor", Pstream::myProcNo());
     }
 
-    dictionary fibers;
-    for (std::size_t f = 0; f < held_.size(); ++f)
-    {
-        dictionary d = dropletFiber::fiberStateDict(held_.fibers[f].state());
-        d.add("origin", held_.origin[f]);
-        fibers.add(word("fiber" + Foam::name(held_.id[f])), d);
-    }
-    state.add("fibers", fibers);
-
-    dictionary injectors;
-    for (const auto& injector : injectors_)
-    {
-        injectors.add(word(injector.spec().name), label(injector.injectedCount()));
-    }
-    state.add("injectors", injectors);
-
-    dictionary totals;
-    totals.add("parcelMass", totals_.parcelMass);
-    totals.add("deposited", totals_.deposited);
-    totals.add("outside", totals_.outside);
-    totals.add("captured", totals_.captured);
-    totals.add("fiberMassAdded", totals_.fiberMassAdded);
-    totals.add("fiberMassRemoved", totals_.fiberMassRemoved);
-    totals.add("fibersRemoved", totals_.fibersRemoved);
-    totals.add("parcelsCapped", totals_.parcelsCapped);
-    state.add("totals", totals);
+    addFibersAndTotals(state);
+    // The dictionary's geometry, for a restart to say what its own changes
+    state.add
+    (
+        "sources",
+        dropletFiber::restartSources(dict_.subOrEmptyDict("fibers"), gridSettings_)
+    );
 
     // Depletion: the last step's removal, which the clouds' files of this
     // time do not hold yet
@@ -284,6 +266,43 @@ Foam::dictionary Foam::functionObjects::dropletFiberCollision::stateDict
 
     IOstream::defaultPrecision(oldPrecision);
     return state;
+}
+
+
+void Foam::functionObjects::dropletFiberCollision::addFibersAndTotals
+(
+    dictionary& state
+) const
+{
+    // The count of the fibers written here: a restart checks the state's
+    // fibers against it
+    state.add("fiberCount", label(held_.size()));
+    dictionary fibers;
+    for (std::size_t f = 0; f < held_.size(); ++f)
+    {
+        dictionary d = dropletFiber::fiberStateDict(held_.fibers[f].state());
+        d.add("origin", held_.origin[f]);
+        fibers.add(word("fiber" + Foam::name(held_.id[f])), d);
+    }
+    state.add("fibers", fibers);
+
+    dictionary injectors;
+    for (const auto& injector : injectors_)
+    {
+        injectors.add(word(injector.spec().name), label(injector.injectedCount()));
+    }
+    state.add("injectors", injectors);
+
+    dictionary totals;
+    totals.add("parcelMass", totals_.parcelMass);
+    totals.add("deposited", totals_.deposited);
+    totals.add("outside", totals_.outside);
+    totals.add("captured", totals_.captured);
+    totals.add("fiberMassAdded", totals_.fiberMassAdded);
+    totals.add("fiberMassRemoved", totals_.fiberMassRemoved);
+    totals.add("fibersRemoved", totals_.fibersRemoved);
+    totals.add("parcelsCapped", totals_.parcelsCapped);
+    state.add("totals", totals);
 }
 
 
@@ -379,6 +398,64 @@ void Foam::functionObjects::dropletFiberCollision::stopIfStateMissing
 }
 
 
+void Foam::functionObjects::dropletFiberCollision::stopIfRestartWithoutState
+(
+    const fileName& path
+) const
+{
+    // A restart: the start time was written by a run (its uniform/time holds
+    // the time index), or the case holds earlier times. Starting anew there
+    // would lose the fibers and the captured mass without a word; a new
+    // function object in a running case says so with 'restart fresh;'
+    const scalar start = time_.startTime().value();
+    const scalar tolerance = 0.5*time_.deltaTValue();
+    DynamicList<word> earlier;
+    for (const instant& t : time_.times())
+    {
+        // (findTimes lists 'constant' too, at time 0)
+        if (t.value() < start - tolerance && t.name() != time_.constant())
+        {
+            earlier.append(t.name());
+        }
+    }
+    // Before the function object's timeStart it has not run: nothing to lose
+    const scalar timeStart = time_.userTimeToTime
+    (
+        dict_.lookupOrDefault<scalar>("timeStart", -VGREAT)
+    );
+    if
+    (
+        (time_.startTimeIndex() <= 0 && earlier.empty())
+     || time_.value() <= timeStart + tolerance
+    )
+    {
+        return;
+    }
+    OStringStream why;
+    if (time_.startTimeIndex() > 0)
+    {
+        why << "time index " << time_.startTimeIndex() << ", written by a run";
+    }
+    if (!earlier.empty())
+    {
+        why << (time_.startTimeIndex() > 0 ? "; " : "") << "the case holds "
+            << earlier.size() << " earlier time(s), the first "
+            << earlier.first() << ", the last " << earlier.last();
+    }
+    FatalIOErrorInFunction(path)
+        << "Restart state " << path << " is missing: this run restarts at"
+        << " time " << time_.timeName() << " (" << why.str().c_str()
+        << "), and without its state " << type() << " '" << name() << "'"
+        << " would start anew: the fibers, their captured mass and the"
+        << " averaging window would be lost." << nl
+        << "    Copy " << path.path() << " from the run that wrote time "
+        << time_.timeName() << ", restart from a time that has it, or set"
+        << " 'restart fresh;' in the function object to start anew on"
+        << " purpose (as when adding it to a running case)."
+        << exit(FatalIOError);
+}
+
+
 bool Foam::functionObjects::dropletFiberCollision::readState()
 {
     const fileName path = statePath(time_.timeName());
@@ -396,25 +473,36 @@ bool Foam::functionObjects::dropletFiberCollision::readState()
     if (!isFile(path))
     {
         stopIfStateMissing(path);
+        stopIfRestartWithoutState(path);
         Info<< type() << " " << name() << ": no restart state " << path
-            << nl << "    "
-            << (time_.value() > 0 ? "restart without state: " : "")
-            << "starting fresh (fibers from the dictionary, empty grid window)"
-            << nl;
+            << " (the case's first time, or not after the function object's"
+            << " timeStart): starting from the dictionary's fibers and an"
+            << " empty grid window" << nl;
         return false;
     }
 
     IFstream is(path);
     const dictionary state(is);
     checkStateProcessors(state, path);
+    checkStateTime(state, path);
     restoreFibers(state.subDict("fibers"));
-    restoreInjectorCounts(state.subDict("injectors"));
+    checkFiberCount(state, path);
+    restoreInjectorCounts(state.subDict("injectors"), state.subOrEmptyDict("sources"));
     restoreTotals(state.subDict("totals"));
     if (state.found("depletionRemoval"))
     {
         restoreRemoval(state.subDict("depletionRemoval"));
     }
     restoreWindow(state, path);
+    // States of earlier versions have no sources to compare with
+    if (state.found("sources"))
+    {
+        dropletFiber::warnSourcesDiffer
+        (
+            type() + " '" + name() + "'", state.subDict("sources"), path,
+            dict_.subOrEmptyDict("fibers"), gridSettings_
+        );
+    }
 
     Info<< type() << " " << name() << ": restarted from " << path
         << ": captured mass so far " << totals_.captured << " kg" << nl;
@@ -504,6 +592,62 @@ void Foam::functionObjects::dropletFiberCollision::checkStateProcessors
 }
 
 
+void Foam::functionObjects::dropletFiberCollision::checkStateTime
+(
+    const dictionary& state,
+    const fileName& path
+) const
+{
+    // OpenFOAM's time and time index come from <time>/uniform/time: a state
+    // of another time (copied from another folder, or another run's) would
+    // put its fibers and window at the wrong time
+    const scalar t = state.get<scalar>("time");
+    const label index = state.get<label>("timeIndex");
+    const scalar tolerance = 1e-3*time_.deltaTValue();
+    if (!std::isfinite(t) || mag(t - time_.value()) > tolerance)
+    {
+        FatalIOErrorInFunction(state)
+            << "Restart state " << path << ": entry 'time' is " << t
+            << ", the run restarts at time " << time_.value() << " ("
+            << time_.timeName() << "/uniform/time): the state belongs to"
+            << " another time." << nl
+            << "    Restart from the time the state was written at, or set"
+            << " 'restart fresh;'." << exit(FatalIOError);
+    }
+    if (index != time_.timeIndex())
+    {
+        FatalIOErrorInFunction(state)
+            << "Restart state " << path << ": entry 'timeIndex' is " << index
+            << ", the run restarts at time index " << time_.timeIndex()
+            << " (" << time_.timeName() << "/uniform/time, 0 without it):"
+            << " the state was written by another run or at another step."
+            << nl << "    Restart from the time folder as the run wrote it"
+            << " (uniform/time included), or set 'restart fresh;'."
+            << exit(FatalIOError);
+    }
+}
+
+
+void Foam::functionObjects::dropletFiberCollision::checkFiberCount
+(
+    const dictionary& state,
+    const fileName& path
+) const
+{
+    // States of earlier versions have no count
+    const label count = state.lookupOrDefault<label>("fiberCount", -1);
+    if (count >= 0 && count != label(held_.size()))
+    {
+        FatalIOErrorInFunction(state)
+            << "Restart state " << path << ": entry 'fiberCount' is " << count
+            << ", its dictionary 'fibers' holds " << label(held_.size())
+            << " fibers: the state is incomplete or was edited." << nl
+            << "    Restart from an earlier time, or set 'restart fresh;'."
+            << exit(FatalIOError);
+    }
+}
+
+
 Foam::label
 Foam::functionObjects::dropletFiberCollision::nextFiberIdAfterRestart
 (
@@ -566,17 +710,48 @@ void Foam::functionObjects::dropletFiberCollision::restoreFibers
 
 void Foam::functionObjects::dropletFiberCollision::restoreInjectorCounts
 (
-    const dictionary& injectors
+    const dictionary& injectors,
+    const dictionary& sources
 )
 {
-    // An injector new to this run has injected none yet
+    // An injector new to this run has injected none yet; none has injected
+    // more than its rate gives by the state's time, where the state says
+    // that the rate was the dictionary's (an injector edited since is
+    // warned about: warnSourcesDiffer)
     for (auto& injector : injectors_)
     {
         const word key(injector.spec().name);
-        injector.setInjectedCount
+        const label count =
+            dropletFiber::getLabelInRange(injectors, key, 0, 0, labelMax);
+        const bool edited =
+            !sources.empty()
+         && !dropletFiber::sameSource
+            (
+                sources, dict_.subOrEmptyDict("fibers"), "injectors", key
+            );
+        if (edited)
+        {
+            injector.setInjectedCount(count);
+            continue;
+        }
+        const label born = dropletFiber::checkedCoreCall
         (
-            dropletFiber::getLabelInRange(injectors, key, 0, 0, labelMax)
+            injectors,
+            [&]() { return label(injector.bornBy(time_.value())); }
         );
+        if (count > born)
+        {
+            const auto& spec = injector.spec();
+            FatalIOErrorInFunction(injectors)
+                << "Entry '" << key << "' is " << count << ": injector '"
+                << key << "' (rate " << spec.rate << ", startTime "
+                << spec.startTime << ", endTime " << spec.endTime << ") has"
+                << " given at most " << born << " fibers by time "
+                << time_.timeName() << "." << nl
+                << "    Restart from a state its run wrote, or set 'restart"
+                << " fresh;'." << exit(FatalIOError);
+        }
+        injector.setInjectedCount(count);
     }
 }
 

@@ -404,6 +404,33 @@ void Foam::dropletFiber::gridBlocks::answerCornerSums
 }
 
 
+void Foam::dropletFiber::gridBlocks::addOtherOwnersSums
+(
+    const ::dropletFiber::DensityGrid& grid,
+    const std::vector<std::vector<std::size_t>>& askedFor,
+    parallelStatistics& statistics,
+    std::vector<std::array<double, ::dropletFiber::nQuantities>>& sums
+)
+{
+    const label nQ = ::dropletFiber::nQuantities;
+    const auto what = parallelStatistics::traffic::gridQueries;
+    answerCornerSums(grid, exchangeLists(statistics, what));
+    // Their shares added in processor order: the same sums on every run
+    const List<List<scalar>> answers = exchangeLists(statistics, what);
+    forAll(answers, proci)
+    {
+        for (std::size_t i = 0; i < askedFor[proci].size(); ++i)
+        {
+            auto& to = sums[askedFor[proci][i]];
+            for (label q = 0; q < nQ; ++q)
+            {
+                to[q] += answers[proci][label(i)*nQ + q];
+            }
+        }
+    }
+}
+
+
 std::vector<::dropletFiber::DropletFieldValue>
 Foam::dropletFiber::gridBlocks::sample
 (
@@ -413,7 +440,6 @@ Foam::dropletFiber::gridBlocks::sample
     std::vector<double>* massSums
 )
 {
-    const label nQ = ::dropletFiber::nQuantities;
     std::vector<std::array<double, ::dropletFiber::nQuantities>> sums
     (
         points.size()
@@ -460,21 +486,7 @@ Foam::dropletFiber::gridBlocks::sample
     }
     if (Pstream::parRun())
     {
-        const auto what = parallelStatistics::traffic::gridQueries;
-        answerCornerSums(grid, exchangeLists(statistics, what));
-        // Their shares added in processor order: the same sums on every run
-        const List<List<scalar>> answers = exchangeLists(statistics, what);
-        forAll(answers, proci)
-        {
-            for (std::size_t i = 0; i < askedFor[proci].size(); ++i)
-            {
-                auto& to = sums[askedFor[proci][i]];
-                for (label q = 0; q < nQ; ++q)
-                {
-                    to[q] += answers[proci][label(i)*nQ + q];
-                }
-            }
-        }
+        addOtherOwnersSums(grid, askedFor, statistics, sums);
     }
     std::vector<::dropletFiber::DropletFieldValue> values(points.size());
     for (std::size_t p = 0; p < points.size(); ++p)
