@@ -193,15 +193,18 @@ CaptureLimitReport CaptureLimit::limit(const DensityGrid& grid)
                                    + ", which this grid does not own (takeForeignDemand first)");
         }
         // s_n: the mass per step eq. 9 read at the node (the window's mean); h_n: what
-        // this step's parcels hold there. f_n = min(1, d_n / s_n) of h_n is taken, so the
-        // fibers get d_n h_n / s_n: eq. 9 in the mean over steps (h_n fluctuates about s_n
-        // in a sparse spray), never more than the parcels hold (P13).
+        // this step's parcels hold there. x_n = d_n / s_n is eq. 9's rate over the step
+        // (the step's optical depth at the node); the droplets there survive the step with
+        // exp(-x_n), so f_n = 1 - exp(-x_n) of h_n is taken (P13): eq. 9 to first order in
+        // x_n, in the mean over steps (h_n fluctuates about s_n in a sparse spray), exact
+        // in a uniform dense region (the linear min(1, x_n) lost kappa v dt / 2 too much),
+        // never more than the parcels hold.
         double sums[nQuantities];
         grid.windowTotal(node, sums);
         const int steps = grid.stepsInWindow();
         const double supply = steps > 0 ? sums[quantityMass] / steps : 0.0;
         const double held = grid.lastStepValue(node, quantityMass);
-        const double taken = supply > 0.0 ? std::min(1.0, demand / supply) : 0.0;
+        const double taken = supply > 0.0 ? -std::expm1(-demand / supply) : 0.0;
         const double granted = taken * held;
         granted_[node] = demand > 0.0 ? granted / demand : 1.0;
         report.massDemanded += demand;

@@ -192,25 +192,28 @@ TEST(CaptureLimit, TakesAtMostWhatTheStepDepositedAndScalesTheSamples)
     limit.addDemand(sample);
     const CaptureLimitReport report = limit.limit(grid);
     // Two steps in the window: eq. 9 read s_n = s / 2 per step at A, B and C; this step's
-    // parcels hold h = s at A and B, nothing at C. f_n = min(1, d_n / s_n), granted f_n h_n:
-    // A min(1, 6) s = s (g = 1/3), B min(1, 0.5) s = s / 2 (g = 2: this step holds twice
-    // the mean), C nothing (g = 0).
+    // parcels hold h = s at A and B, nothing at C. The step's optical depth x_n = d_n / s_n:
+    // A 6, B 1/2. f_n = 1 - exp(-x_n), granted f_n h_n: A (1 - e^-6) s (g = that / 3 s),
+    // B (1 - e^-1/2) s (g = that / (s / 4) = 1.57: this step holds twice the mean), C
+    // nothing (g = 0).
+    const double fA = 1.0 - std::exp(-6.0), fB = 1.0 - std::exp(-0.5);
     EXPECT_EQ(report.nodesDemanded, 3);
     EXPECT_EQ(report.nodesLimited, 1); // A: 3 s > s / 2
     EXPECT_NEAR(report.massDemanded, 3.75 * s, 1e-14 * s);
-    EXPECT_NEAR(report.massGranted, 1.5 * s, 1e-14 * s);
-    EXPECT_NEAR(limit.grantedRatio(nodeA), 1.0 / 3.0, 1e-15);
-    EXPECT_NEAR(limit.grantedRatio(nodeB), 2.0, 1e-15);
+    EXPECT_NEAR(report.massGranted, (fA + fB) * s, 1e-14 * s);
+    EXPECT_NEAR(limit.grantedRatio(nodeA), fA / 3.0, 1e-15);
+    EXPECT_NEAR(limit.grantedRatio(nodeB), 4.0 * fB, 1e-15);
     EXPECT_EQ(limit.grantedRatio(nodeC), 0.0);
-    EXPECT_EQ(limit.takenFraction(nodeA), 1.0);
-    EXPECT_NEAR(limit.takenFraction(nodeB), 0.5, 1e-15);
+    EXPECT_NEAR(limit.takenFraction(nodeA), fA, 1e-15);
+    EXPECT_NEAR(limit.takenFraction(nodeB), fB, 1e-15);
     EXPECT_EQ(limit.takenFraction(nodeC), 0.0);
-    EXPECT_NEAR(limit.grantedMass(sample), 1.5 * s, 1e-14 * s);
-    // The parcels: the one at A loses all its droplets, the one at B half.
+    EXPECT_NEAR(limit.grantedMass(sample), (fA + fB) * s, 1e-14 * s);
+    // The parcels (each on its node alone): the one at A loses fA of its droplets, the one
+    // at B fB.
     p.position = spec.nodePosition(5, 5, 0);
-    EXPECT_NEAR(limit.capturedFraction(grid, p, 1e-3), 1.0, 1e-15);
+    EXPECT_NEAR(limit.capturedFraction(grid, p, 1e-3), fA, 1e-15);
     p.position = spec.nodePosition(9, 5, 0);
-    EXPECT_NEAR(limit.capturedFraction(grid, p, 1e-3), 0.5, 1e-15);
+    EXPECT_NEAR(limit.capturedFraction(grid, p, 1e-3), fB, 1e-15);
     // Only boxes near A and B may take (bricks of 4 nodes: A in brick 1, B in brick 2 of x).
     IndexBox nearA, far;
     nearA.lo = {{4, 4, 0}};
