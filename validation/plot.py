@@ -264,7 +264,9 @@ def depletion(d, out):
     if not os.path.exists(os.path.join(d, "depletionRows.csv")):
         return
     rows, mat = read(d, "depletionRows"), read(d, "depletionMat")
-    fig, (a, b) = plt.subplots(1, 2, figsize=(13, 4.8))
+    dense = read(d, "depletionDenseMat") if os.path.exists(os.path.join(d, "depletionDenseMat.csv")) else None
+    fig, axes = plt.subplots(1, 3 if dense else 2, figsize=(19.5 if dense else 13, 4.8))
+    a, b = axes[0], axes[1]
     k = rows["rows"]
     a.fill_between(k, rows["oneMinusFToTheK"], rows["onePlusFToTheMinusK"], color="tab:green", alpha=0.2,
                    label="bracket (1-f)^k ... (1+f)^-k")
@@ -284,7 +286,27 @@ def depletion(d, out):
     b.set_title("Random fiber mat, straight paths, E = 1 + d_p / d_F = 5/3")
     b.legend(fontsize=8)
     b.grid(alpha=0.3, which="both")
+    if dense:
+        dense_mats(axes[2], dense)
     finish(fig, os.path.join(out, "depletion.png"))
+
+
+def dense_mats(c, dense):
+    """Dense mats 6 spacings thick (DenseMatTest): |P_grid / exp(-S) - 1| against the travel per
+    step, the step's survival beside the faces' leading-order term P18."""
+    colours = ["tab:blue", "tab:orange", "tab:green", "tab:red", "tab:purple"]
+    for colour, S in zip(colours, sorted(set(dense["S"]))):
+        pick = [i for i, v in enumerate(dense["S"]) if v == S]
+        v = [dense["travel"][i] for i in pick]
+        c.loglog(v, [max(abs(dense["relativeError"][i]), 1e-5) for i in pick], color=colour, marker="o", ms=4,
+                 label=f"S = {S:.3g}, grid")
+        c.loglog(v, [dense["faceErrorLeadingOrder"][i] for i in pick], color=colour, ls=":", lw=1.0)
+    c.axhline(0.03, color="black", lw=0.8, ls="--", label="3 %")
+    c.set_xlabel("travel per step v dt / h")
+    c.set_ylabel("|P_grid / exp(-S) - 1|")
+    c.set_title("Dense mats 6 spacings thick (dotted: faces' term P18)")
+    c.legend(fontsize=8)
+    c.grid(alpha=0.3, which="both")
 
 
 def main():

@@ -67,6 +67,10 @@ expectError air "{ U p; }" "Entry 'U' names field 'p', which is a volScalarField
 expectError air "{ rho U; }" "Entry 'rho' names field 'U', which is a volVectorField: 'rho' needs a volScalarField"
 expectError fibers/fixed/across/points "((0.05 0.01 0.005))" "Entry 'points' has 1 points"
 expectError fibers/fixed/across/hold glued "Entry 'hold' is 'glued'"
+# A cloud named twice would be gathered twice (parcels, their mass and the
+# captured mass doubled): stops, naming the entry, the cloud and what is allowed
+expectError clouds "(kinematicCloud kinematicCloud)" \
+    "Entry 'clouds' names cloud 'kinematicCloud' twice: allowed are the names of the run's clouds, each at most once"
 
 # A misspelled or unknown entry, in every dictionary read: stops, naming the
 # entry, its dictionary and the closest allowed entry (or all of them)

@@ -150,7 +150,9 @@ void CaptureLimit::addDemand(std::size_t node, double mass)
         throw std::invalid_argument("CaptureLimit::addDemand: mass at node " + std::to_string(node)
                                     + " must be >= 0, got " + std::to_string(mass));
     }
-    demand_[node] += mass;
+    NodeDemand& entry = demand_[node];
+    entry.total += mass;
+    entry.parts.push_back(mass);
 }
 
 std::vector<NodeMass> CaptureLimit::takeForeignDemand(const DensityGrid& grid)
@@ -163,12 +165,30 @@ std::vector<NodeMass> CaptureLimit::takeForeignDemand(const DensityGrid& grid)
             ++entry;
             continue;
         }
-        foreign.push_back(NodeMass{entry->first, entry->second});
+        // Each interceptor apart (P13 multiplies their survivals), in the order added
+        for (const double mass : entry->second.parts)
+        {
+            foreign.push_back(NodeMass{entry->first, mass});
+        }
         entry = demand_.erase(entry);
     }
-    std::sort(foreign.begin(), foreign.end(),
-              [](const NodeMass& x, const NodeMass& y) { return x.node < y.node; });
+    std::stable_sort(foreign.begin(), foreign.end(),
+                     [](const NodeMass& x, const NodeMass& y) { return x.node < y.node; });
     return foreign;
+}
+
+double CaptureLimit::interceptedFraction(const std::vector<double>& parts, double supply)
+{
+    double logSurvival = 0.0;
+    for (const double part : parts)
+    {
+        if (part >= supply)
+        {
+            return 1.0; // one interceptor takes all the node holds
+        }
+        logSurvival += std::log1p(-part / supply);
+    }
+    return -std::expm1(logSurvival);
 }
 
 CaptureLimitReport CaptureLimit::limit(const DensityGrid& grid)
@@ -185,7 +205,7 @@ CaptureLimitReport CaptureLimit::limit(const DensityGrid& grid)
         bricks_[static_cast<std::size_t>(d)]
             = static_cast<std::size_t>((nodes[d] + brickSize - 1) / brickSize);
     }
-    for (const auto& [node, demand] : demand_)
+    for (const auto& [node, entry] : demand_)
     {
         if (!grid.owns(node))
         {
@@ -193,15 +213,20 @@ CaptureLimitReport CaptureLimit::limit(const DensityGrid& grid)
                                    + ", which this grid does not own (takeForeignDemand first)");
         }
         // s_n: the mass per step eq. 9 read at the node (the window's mean); h_n: what
-        // this step's parcels hold there. f_n = min(1, d_n / s_n) of h_n is taken, so the
-        // fibers get d_n h_n / s_n: eq. 9 in the mean over steps (h_n fluctuates about s_n
-        // in a sparse spray), never more than the parcels hold (P13).
+        // this step's parcels hold there. Each sample's part d_sn / s_n is the fraction of
+        // the node's droplets it intercepts over the step; independent interceptors leave
+        // prod (1 - min(1, d_sn / s_n)) (P13): exp(-x_n) for many thin fibers (x_n = d_n /
+        // s_n, the step's optical depth), 0 where one sample alone sweeps the node's mass.
+        // f_n of h_n is taken: eq. 9 to first order in x_n, in the mean over steps (h_n
+        // fluctuates about s_n in a sparse spray), exact in a uniform dense region (the
+        // linear min(1, x_n) lost kappa v dt / 2 too much), never more than the parcels hold.
+        const double demand = entry.total;
         double sums[nQuantities];
         grid.windowTotal(node, sums);
         const int steps = grid.stepsInWindow();
         const double supply = steps > 0 ? sums[quantityMass] / steps : 0.0;
         const double held = grid.lastStepValue(node, quantityMass);
-        const double taken = supply > 0.0 ? std::min(1.0, demand / supply) : 0.0;
+        const double taken = supply > 0.0 ? interceptedFraction(entry.parts, supply) : 0.0;
         const double granted = taken * held;
         granted_[node] = demand > 0.0 ? granted / demand : 1.0;
         report.massDemanded += demand;

@@ -1,5 +1,5 @@
 // CaptureLimit: depletion of the spray by the fibers, the mass the fibers capture taken
-// from the parcels that carried it (docs/model.md sec. 7, eqs. P12-P15). Per time step,
+// from the parcels that carried it (docs/model.md sec. 7, eqs. P12-P15, P18). Per time step,
 // after the step's deposit is committed (DensityGrid::commitStep) and eq. 9 evaluated:
 //
 //  1. Demand (P12). A collision sample reads rho by multilinear interpolation of its cell's
@@ -8,12 +8,19 @@
 //     (attributeSample), and added per node: d_n = sum of the d_sc at node n (addDemand).
 //  2. Limit (P13). Eq. 9 read the window's mass per step at the node, s_n (its mean over
 //     the window's steps); this step's parcels hold h_n there (DensityGrid::lastStepValue,
-//     the newest committed step). limit() sets per node
-//         f_n = min(1, d_n / s_n)   taken fraction of h_n (0 where s_n = 0)
-//         g_n = f_n h_n / d_n       granted ratio (> 1 where this step holds more than
-//                                   the mean: eq. 9 is met in the mean over steps)
+//     the newest committed step). Each sample's part intercepts the fraction d_sn / s_n of
+//     the node's droplets over the step, independently of the others; limit() sets per node
+//         f_n = 1 - prod_s (1 - min(1, d_sn / s_n))   taken fraction of h_n (0 where
+//               s_n = 0): exp(-x_n) for many thin fibers, x_n = d_n / s_n the step's
+//               optical depth (the droplets survive the step's rate); 1 where one sample
+//               alone sweeps more than the node holds
+//         g_n = f_n h_n / d_n   granted ratio (> 1 where this step holds more than
+//                               the mean: eq. 9 is met in the mean over steps, to O(x_n))
 //     and a sample's mass becomes sum_c d_sc g_{n_c} (grantedMass), its momentum that
-//     times the sample's droplet velocity. Captured = sum_n f_n h_n <= sum_n h_n.
+//     times the sample's droplet velocity. Captured = sum_n f_n h_n <= sum_n h_n. In a
+//     uniform dense region the survival is exact at any time step; where the rate
+//     changes within a step's reach (a mat's faces) a parcel passes more by Var(x) / 2
+//     per step (P18), first order in dt.
 //  3. Removal (P14). Parcel p, which deposited w_pn F_p of its mass on node n (the
 //     deposit's weight times the part of the step inside the box), loses the fraction
 //         c_p = sum_n w_pn F_p f_n
@@ -116,7 +123,8 @@ public:
     void addDemand(const SampleCapture& sample);
     void addDemand(const SegmentCapture& segment);
     void addDemand(std::size_t node, double mass);
-    // The demand at nodes the grid does not own, moved out, in node order.
+    // The demand at nodes the grid does not own, moved out, in node order: each addDemand
+    // call's part apart (the owner multiplies their survivals, P13), in the order added.
     std::vector<NodeMass> takeForeignDemand(const DensityGrid& grid);
 
     // --- 2. the limit, on the owner ------------------------------------------------------------
@@ -168,7 +176,15 @@ private:
             + bricks_[0] * (static_cast<std::size_t>(j) + bricks_[1] * static_cast<std::size_t>(k));
     }
 
-    std::unordered_map<std::size_t, double> demand_;
+    // Per node: the demand d_n and its parts d_sn, one per interceptor (addDemand call)
+    struct NodeDemand
+    {
+        double total = 0.0;
+        std::vector<double> parts;
+    };
+    // f_n = 1 - prod (1 - min(1, d_sn / s_n)) (P13)
+    static double interceptedFraction(const std::vector<double>& parts, double supply);
+    std::unordered_map<std::size_t, NodeDemand> demand_;
     std::unordered_map<std::size_t, double> granted_; // g_n
     std::unordered_map<std::size_t, double> taken_;   // f_n > 0, owned nodes
     // taken_ in node order with grid indices (capturedFraction's sums), built on first use

@@ -119,6 +119,22 @@ void Foam::functionObjects::dropletFiberCollision::readOutputAndClouds
     }
 
     cloudNames_ = dict.lookupOrDefault<wordList>("clouds", wordList());
+    // A cloud named twice would be gathered twice: its parcels, their mass
+    // and the mass captured from them counted double
+    forAll(cloudNames_, i)
+    {
+        for (label j = 0; j < i; ++j)
+        {
+            if (cloudNames_[j] == cloudNames_[i])
+            {
+                FatalIOErrorInFunction(dict)
+                    << "Entry 'clouds' names cloud '" << cloudNames_[i]
+                    << "' twice: allowed are the names of the run's clouds,"
+                    << " each at most once (or no entry: all clouds)."
+                    << exit(FatalIOError);
+            }
+        }
+    }
     // direct: the kinematic parcel types read parcel by parcel, others through
     // cloud::writeObjects; writeObjects: every cloud that way (the same values)
     gatherWriteObjects_ =

@@ -192,7 +192,8 @@ TEST(CaptureLimit, TakesAtMostWhatTheStepDepositedAndScalesTheSamples)
     limit.addDemand(sample);
     const CaptureLimitReport report = limit.limit(grid);
     // Two steps in the window: eq. 9 read s_n = s / 2 per step at A, B and C; this step's
-    // parcels hold h = s at A and B, nothing at C. f_n = min(1, d_n / s_n), granted f_n h_n:
+    // parcels hold h = s at A and B, nothing at C. One interceptor per node:
+    // f_n = 1 - (1 - min(1, d_n / s_n)) = min(1, d_n / s_n), granted f_n h_n:
     // A min(1, 6) s = s (g = 1/3), B min(1, 0.5) s = s / 2 (g = 2: this step holds twice
     // the mean), C nothing (g = 0).
     EXPECT_EQ(report.nodesDemanded, 3);
@@ -223,6 +224,65 @@ TEST(CaptureLimit, TakesAtMostWhatTheStepDepositedAndScalesTheSamples)
     EXPECT_EQ(limit.capturedFraction(grid, p, 1e-3), 0.0);
     EXPECT_THROW(limit.grantedRatio(spec.flatIndex(1, 1, 0)), std::out_of_range);
     EXPECT_THROW(limit.addDemand(nodeA, -1.0), std::invalid_argument);
+}
+
+TEST(CaptureLimit, IndependentInterceptorsMultiplyTheirSurvivals)
+{
+    // P13: each part d_sn intercepts d_sn / s_n of the node's droplets, independently:
+    // f_n = 1 - prod (1 - min(1, d_sn / s_n)). One step in the window: s_n = h_n = s.
+    const GridSpec spec = test::grid2D();
+    KernelSettings settings;
+    settings.cloudInCellBelow = 0.5;
+    DensityGrid grid(spec, settings, 1);
+    Parcel p;
+    p.diameter = 2e-5;
+    p.nParticle = 4.0;
+    p.rhoDroplet = 1000.0;
+    const std::size_t nodeA = spec.flatIndex(5, 5, 0), nodeB = spec.flatIndex(9, 5, 0);
+    const std::size_t nodeC = spec.flatIndex(13, 5, 0);
+    for (const int i : {5, 9, 13})
+    {
+        p.position = spec.nodePosition(i, 5, 0);
+        grid.deposit(p, 1e-3);
+    }
+    grid.commitStep();
+    const double s = parcelMass(p);
+    CaptureLimit limit;
+    // A: two halves, (1 - 1/2)^2 = 1/4 survive (linear: all taken). B: 1000 parts of
+    // 1/1000, (1 - 1e-3)^1000 = exp(-1) to 5e-4 (the Poisson limit of thin fibers).
+    // C: a part of 0.3 s and one of 1.5 s (a sample sweeping more than the node holds).
+    limit.addDemand(nodeA, 0.5 * s);
+    limit.addDemand(nodeA, 0.5 * s);
+    for (int k = 0; k < 1000; ++k)
+    {
+        limit.addDemand(nodeB, 1e-3 * s);
+    }
+    limit.addDemand(nodeC, 0.3 * s);
+    limit.addDemand(nodeC, 1.5 * s);
+    const CaptureLimitReport report = limit.limit(grid);
+    EXPECT_NEAR(limit.takenFraction(nodeA), 0.75, 1e-15);
+    EXPECT_NEAR(limit.takenFraction(nodeB), 1.0 - std::pow(1.0 - 1e-3, 1000), 1e-13);
+    EXPECT_NEAR(limit.takenFraction(nodeB), 1.0 - std::exp(-1.0), 5e-4);
+    EXPECT_EQ(limit.takenFraction(nodeC), 1.0);
+    EXPECT_NEAR(report.massDemanded, (1.0 + 1.0 + 1.8) * s, 1e-14 * s);
+    EXPECT_NEAR(report.massGranted, (0.75 + 1.0 - std::pow(1.0 - 1e-3, 1000) + 1.0) * s, 1e-13 * s);
+    EXPECT_NEAR(limit.grantedRatio(nodeA), 0.75, 1e-15);
+    EXPECT_NEAR(limit.grantedRatio(nodeC), 1.0 / 1.8, 1e-15);
+    EXPECT_EQ(report.nodesLimited, 1); // C: 1.8 s > s
+    // A block that sends the parts to the owner (takeForeignDemand) keeps them apart.
+    CaptureLimit sender, owner;
+    sender.addDemand(nodeA, 0.5 * s);
+    sender.addDemand(nodeA, 0.5 * s);
+    const IndexBox elsewhere{{{0, 0, 0}}, {{2, 2, 0}}};
+    DensityGrid other(spec, settings, 1, GridBlock{elsewhere, elsewhere});
+    const std::vector<NodeMass> sent = sender.takeForeignDemand(other);
+    ASSERT_EQ(sent.size(), 2u);
+    for (const NodeMass& part : sent)
+    {
+        owner.addDemand(part.node, part.mass);
+    }
+    owner.limit(grid);
+    EXPECT_EQ(owner.takenFraction(nodeA), limit.takenFraction(nodeA));
 }
 
 TEST(CaptureLimit, BlocksGivePartsThatAddUpToTheWholeGrids)

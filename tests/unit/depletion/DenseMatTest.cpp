@@ -1,0 +1,167 @@
+// Depletion in dense fiber regions at the time steps users run (docs/model.md sec. 7, the
+// step's survival; docs/validation.md "Depletion: dense mats and the time step"): random
+// mats of fixed fibers 6 spacings thick, -ln P = S = 0.1 ... 4.6 (P15), droplets travelling
+// 1/8 ... 1 spacing per step, default deposit (cloud-in-cell, window of one step). The
+// penetration against exp(-S) from the mat's fibers, the error against the travel per step,
+// and the binder balance to 1e-12.
+#include "StraightSpray.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <random>
+#include <string>
+
+using namespace dropletFiber;
+
+namespace
+{
+constexpr double thickness = 6.0; // the mat, in spacings, from y0 = 2 spacings
+constexpr double frontFace = 2.0;
+constexpr std::array<double, 5> depths = {{0.1, 0.5, 1.0, 2.302585092994046, 4.6}};
+constexpr std::array<double, 4> travels = {{1.0, 0.5, 0.25, 0.125}}; // v dt / h
+
+struct MatRun
+{
+    double model = 0.0, theory = 0.0, balance = 0.0;
+};
+
+// A mat of N fibers at uniform random (x, y) in [0, W] x [2 h, 8 h], N from S: each fiber's
+// interception strip 2 (r_F + r_p) is c = 0.002 of a spacing (a node column holds hundreds
+// of fibers per unit of S: the grid's column means are the mat's, DepletionValidationTest).
+MatRun denseMat(double S, double travel, unsigned seed)
+{
+    test::StraightSpray spray;
+    spray.columns = 4;
+    spray.rows = 10;
+    spray.dt = travel * spray.h / spray.speed;
+    spray.dropletRadius = 0.8e-6;
+    spray.nParticle = 1000.0;
+    const double strip = 0.002 * spray.h;
+    spray.fiberRadius = 0.5 * strip - spray.dropletRadius;
+    const double width = spray.columns * spray.h;
+    const int count = static_cast<int>(std::lround(S * width / strip));
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int n = 0; n < count; ++n)
+    {
+        const double x = width * unit(rng);
+        spray.fibers.emplace_back(x, (frontFace + thickness * unit(rng)) * spray.h);
+    }
+    // Steady after the spray has crossed the box (10 spacings); then every step is alike.
+    spray.run(static_cast<int>(std::lround(spray.rows / travel)) + 4, 2);
+    double captured = 0.0;
+    for (const double m : spray.fiberCaptured)
+    {
+        captured += m;
+    }
+    MatRun result;
+    result.model = 1.0 - captured / spray.injectedMeasured;
+    // P15 from the fibers placed: n_A 2 (r_F + r_p) t = N strip / W
+    const double dF = 2.0 * spray.fiberRadius, dp = 2.0 * spray.dropletRadius;
+    const double alpha = count * 3.14159265358979323846 * spray.fiberRadius * spray.fiberRadius
+        / (width * thickness * spray.h);
+    result.theory
+        = std::exp(-4.0 * alpha * (1.0 + dp / dF) * thickness * spray.h / (3.14159265358979323846 * dF));
+    result.balance = (spray.sprayed - (spray.airborne() + spray.left + spray.captured)) / spray.sprayed;
+    return result;
+}
+
+// The faces' error of the per-node survival (docs/model.md sec. 7): a parcel whose step
+// reaches nodes of different optical depth x_n loses sum w (1 - e^-x) instead of
+// 1 - e^-(sum w x), so it passes more by Var_w(x) / 2 per step; summed over the steps
+// across a face, to leading order in v dt, ln(P_model / P) = (v dt h / 12) sum over the
+// cells of (kappa_{n+1} - kappa_n)^2, kappa_n the mat's rate averaged over node n's hat:
+// at a face on a node row (this mat) kappa / 2 and kappa / 2 per face, kappa^2 for both:
+//     ln(P_model / P) = (S / t)^2 v dt h / 12   (+ O(v dt^2))
+double faceError(double S, double travel)
+{
+    const double kappaH = S / thickness; // kappa h
+    return kappaH * kappaH * travel / 12.0;
+}
+
+std::ofstream validationTable(const std::string& name)
+{
+    const char* folder = std::getenv("DROPLETFIBER_DEPLETION_CSV");
+    return folder == nullptr ? std::ofstream{} : std::ofstream(std::string(folder) + "/" + name + ".csv");
+}
+
+// The mats of every depth at every travel per step (run once, both tests read them).
+using Sweep = std::array<std::array<MatRun, travels.size()>, depths.size()>;
+const Sweep& sweep()
+{
+    static const Sweep runs = []
+    {
+        Sweep all{};
+        std::ofstream table = validationTable("depletionDenseMat");
+        table.precision(10);
+        table << "S,travel,model,theory,relativeError,faceErrorLeadingOrder\n";
+        for (std::size_t i = 0; i < depths.size(); ++i)
+        {
+            std::printf("S %.3f:", depths[i]);
+            for (std::size_t j = 0; j < travels.size(); ++j)
+            {
+                const MatRun& run = all[i][j] = denseMat(depths[i], travels[j], 7);
+                const double error = run.model / run.theory - 1.0;
+                std::printf("  %.3f: %.5f / %.5f (%+.2f %%)", travels[j], run.model, run.theory,
+                            100.0 * error);
+                table << depths[i] << ',' << travels[j] << ',' << run.model << ',' << run.theory << ','
+                      << error << ',' << std::expm1(faceError(depths[i], travels[j])) << '\n';
+            }
+            std::printf("\n");
+        }
+        return all;
+    }();
+    return runs;
+}
+} // namespace
+
+TEST(DenseMat, PenetrationWithinThreePercentOfExpMinusSAtEveryTravelPerStep)
+{
+    for (std::size_t i = 0; i < depths.size(); ++i)
+    {
+        for (std::size_t j = 0; j < travels.size(); ++j)
+        {
+            const MatRun& run = sweep()[i][j];
+            const double S = depths[i], travel = travels[j];
+            const double error = run.model / run.theory - 1.0;
+            EXPECT_LT(std::abs(run.balance), 1e-12) << "S " << S << ", travel " << travel;
+            // The faces' error (model high): the leading-order term for a uniform mat, the
+            // rate near the faces of a random one within +-50 % of it, and higher-order terms
+            // at v dt ~ h within as much again; besides it the grid's column means (Jensen,
+            // at most S c / 2 = 0.5 %, model high) and the smoothing over a spacing, 0.5 %.
+            EXPECT_GT(error, std::expm1(0.5 * faceError(S, travel)) - 0.005)
+                << "S " << S << ", travel " << travel;
+            EXPECT_LT(error, std::expm1(2.0 * faceError(S, travel)) + 0.005)
+                << "S " << S << ", travel " << travel;
+            if (S < 4.0 || travel <= 0.5)
+            {
+                // The target: within 3 % (the faces: 2.5 % at S = 4.6 and half a spacing)
+                EXPECT_LT(std::abs(error), 0.03) << "S " << S << ", travel " << travel;
+            }
+        }
+    }
+}
+
+TEST(DenseMat, ErrorConvergesToZeroWithTheTimeStep)
+{
+    // At S = ln 10 and 4.6 the error falls with the travel per step, first order (the
+    // faces' term), to that term within 0.5 % at an eighth of a spacing.
+    for (const std::size_t i : {std::size_t{3}, std::size_t{4}})
+    {
+        for (std::size_t j = 1; j < travels.size(); ++j)
+        {
+            const double coarse = sweep()[i][j - 1].model / sweep()[i][j - 1].theory - 1.0;
+            const double fine = sweep()[i][j].model / sweep()[i][j].theory - 1.0;
+            EXPECT_LT(fine, coarse) << "S " << depths[i] << ", travel " << travels[j];
+        }
+        const MatRun& finest = sweep()[i].back();
+        EXPECT_NEAR(finest.model / finest.theory - 1.0, std::expm1(faceError(depths[i], travels.back())),
+                    0.005);
+    }
+}
