@@ -291,8 +291,9 @@ void Foam::functionObjects::dropletFiberCollision::reportSettings() const
         << s.gravity.z() << "), drag "
         << ::dropletFiber::dragModelName(s.drag.model).c_str()
         << ", theta " << s.theta << ", injectors " << label(injectors_.size())
-        << ", fibers now " << fiberCount() << nl
-        << "    output: writeVtk " << Switch(writeVtk_).c_str()
+        << ", fibers now " << fiberCount() << nl;
+    reportTurbulence();
+    Info<< "    output: writeVtk " << Switch(writeVtk_).c_str()
         << ", writeGridVtk " << Switch(writeGridVtk_).c_str() << nl << endl;
 }
 
@@ -955,6 +956,8 @@ bool Foam::functionObjects::dropletFiberCollision::read(const dictionary& dict)
     solverSettings_ =
         dropletFiber::readFiberSolverSettings(dict.subOrEmptyDict("fibers"), time_);
     solver_.reset(new ::dropletFiber::FiberSolver(solverSettings_));
+    turbulence_ =
+        dropletFiber::readFiberTurbulence(dict.subOrEmptyDict("fibers"), mesh_);
 
     if (running)
     {
@@ -1063,6 +1066,7 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
     // 7. Report; at write times the restart state and the mass balances
     reportStep(step);
     writeParallelStatistics();
+    writeFiberDispersion();
     if (time_.writeTime())
     {
         coreCall("writing the restart state", [this]() { writeState(); });
