@@ -95,6 +95,7 @@ TEST(TurbulentAir, VarianceIsTwoThirdsK)
         double sum2 = 0.0;
         for (const Fiber& fiber : fibers)
             sum2 += fiber.state().turbulentVelocity.squaredNorm();
+        std::cout << "variance / (2k/3) at step " << step << ": " << sum2 / (30000 * variance) << "\n";
         EXPECT_NEAR(sum2 / (30000 * variance), 1.0, 0.033) << "step " << step; // first: stationary start
     }
 }
@@ -116,6 +117,9 @@ TEST(TurbulentAir, AutocorrelationInTimeIsExponential)
         double cross = 0.0;
         for (std::size_t f = 0; f < fibers.size(); ++f)
             cross += (start[f].array() * fibers[f].state().turbulentVelocity.array()).sum();
+        std::cout << "autocorrelation at tau = " << double(lag) * dt / timeScale
+                  << " T_L: " << cross / (30000 * variance)
+                  << ", exp(-tau/T_L) = " << std::exp(-double(lag) * dt / timeScale) << "\n";
         EXPECT_NEAR(cross / (30000 * variance), std::exp(-double(lag) * dt / timeScale), 0.033)
             << "lag " << lag;
     }
@@ -142,6 +146,9 @@ TEST(TurbulentAir, CorrelationAlongFiberIsExponential)
     }
     for (std::size_t j = 0; j < lags.size(); ++j)
     {
+        std::cout << "correlation at ds = " << 0.25 * double(lags[j])
+                  << " L: " << cross[j] / (60000 * variance)
+                  << ", exp(-ds/L) = " << std::exp(-0.25 * double(lags[j])) << "\n";
         EXPECT_NEAR(cross[j] / (60000 * variance), std::exp(-0.25 * double(lags[j])), 0.025)
             << "lag " << lags[j];
     }
