@@ -1066,7 +1066,6 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
     // 7. Report; at write times the restart state and the mass balances
     reportStep(step);
     writeParallelStatistics();
-    writeFiberDispersion();
     if (time_.writeTime())
     {
         coreCall("writing the restart state", [this]() { writeState(); });

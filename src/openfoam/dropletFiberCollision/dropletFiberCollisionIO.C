@@ -149,6 +149,8 @@ void Foam::functionObjects::dropletFiberCollision::reportStep
             << tab << step.fiberTime
             << endl;
     }
+    // With turbulent air, the fibers' dispersion (collective)
+    writeFiberDispersion();
 }
 
 
