@@ -59,7 +59,10 @@ void advanceTurbulentVelocities(std::vector<Fiber>& fibers, const std::vector<st
                                 std::uint64_t step, double dt)
 {
     if (settings.model == TurbulenceModelType::none)
+    {
+        clearTurbulentVelocities(fibers);
         return;
+    }
     const AirSampleLayout layout = airSampleLayout(fibers);
     if (fiberIds.size() != fibers.size())
         throw std::invalid_argument("advanceTurbulentVelocities: one id per fiber expected");
@@ -77,6 +80,12 @@ void advanceTurbulentVelocities(std::vector<Fiber>& fibers, const std::vector<st
         advanceTurbulentVelocity(fibers[f].mutableState(), settings, sample.kineticEnergy.segment(first, n),
                                  sample.dissipation.segment(first, n), fiberIds[f], step, dt);
     }
+}
+
+void clearTurbulentVelocities(std::vector<Fiber>& fibers)
+{
+    for (Fiber& fiber : fibers)
+        fiber.mutableState().turbulentVelocity.resize(3, 0);
 }
 
 TurbulenceModelType turbulenceModelFromName(const std::string& name)

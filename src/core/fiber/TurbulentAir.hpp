@@ -63,11 +63,15 @@ void advanceTurbulentVelocity(FiberState& state, const TurbulenceSettings& setti
                               std::uint64_t step, double dt);
 
 // The same for all movable fibers, fiberIds[f] naming fibers[f]; sample laid out as
-// airSamplePoints(fibers). Model none: nothing changes. Throws std::invalid_argument on
-// a sample or id list that does not fit.
+// airSamplePoints(fibers). Model none: every fiber's u' is dropped (a run switched to
+// none, or restarted with none from a turbulent state, sees the mean air only). Throws
+// std::invalid_argument on a sample or id list that does not fit.
 void advanceTurbulentVelocities(std::vector<Fiber>& fibers, const std::vector<std::uint64_t>& fiberIds,
                                 const TurbulenceSample& sample, const TurbulenceSettings& settings,
                                 std::uint64_t step, double dt);
+
+// Drops every fiber's u' (FiberState::turbulentVelocity emptied).
+void clearTurbulentVelocities(std::vector<Fiber>& fibers);
 
 TurbulenceModelType turbulenceModelFromName(const std::string& name); // throws on unknown
 std::string turbulenceModelName(TurbulenceModelType model);

@@ -194,6 +194,12 @@ Foam::functionObjects::dropletFiberCollision::advanceFibers
     {
         advanceTurbulence(dt, turbulence);
     }
+    else if (!turbulent)
+    {
+        // Switched to none during the run or restarted with none from a
+        // turbulent state: the mean air only, as without turbulence
+        ::dropletFiber::clearTurbulentVelocities(held_.fibers);
+    }
     ::dropletFiber::StepReport report;
     const std::string failure = stepFibers(dt, air, capture, report);
 

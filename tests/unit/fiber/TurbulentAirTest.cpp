@@ -351,3 +351,24 @@ TEST(TurbulentAir, ShortResponseFibersDisperseAsTaylor)
         EXPECT_NEAR(msd / taylor, 1.0, 0.08) << "t/T_L = " << t / timeScale;
     }
 }
+
+// Turbulence switched off (a run-time edit, or a restart with model none from a
+// turbulent state): u' is dropped and the fibers go on as in laminar air, to the bit.
+TEST(TurbulentAir, SwitchedOffGoesOnAsLaminar)
+{
+    std::vector<Fiber> fibers = mixedFibers();
+    const std::vector<std::uint64_t> ids = idsFrom(0, fibers.size());
+    coupledSteps(fibers, ids, ornsteinUhlenbeck(), 0, 10);
+    ASSERT_FALSE(fibers[0].state().turbulentVelocity.isZero(0.0));
+    std::vector<Fiber> laminar;
+    for (const Fiber& fiber : fibers)
+    {
+        FiberState state = fiber.state();
+        state.turbulentVelocity.resize(3, 0);
+        laminar.emplace_back(state);
+    }
+    coupledSteps(fibers, ids, TurbulenceSettings(), 10, 20);
+    coupledSteps(laminar, ids, TurbulenceSettings(), 10, 20);
+    expectSameBits(fibers, laminar);
+    EXPECT_EQ(fibers[0].state().turbulentVelocity.cols(), 0);
+}
