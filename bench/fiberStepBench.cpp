@@ -6,7 +6,9 @@
 // Case: flexible glass fibers (r = 5 um, 1 cm) in a uniform cross-wind with gravity
 // and the slenderBodyOseen drag, every third fiber pinned at one end, dt = 1 ms.
 // Then the turbulent air (docs/model.md sec. 8): the cost per point per step of
-// advancing u' (TurbulentAir) against the fiber step without it, and of the step with it.
+// advancing u' (TurbulentAir) against the fiber step without it, and of the step with it
+// (which moves the fibers otherwise: its Newton iterations differ, so the ratio of the
+// two steps is not the cost of u' alone).
 #include "fiber/FiberSolver.hpp"
 #include "fiber/TurbulentAir.hpp"
 
