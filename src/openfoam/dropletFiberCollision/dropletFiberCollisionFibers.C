@@ -190,7 +190,7 @@ Foam::functionObjects::dropletFiberCollision::advanceFibers
     ::dropletFiber::TurbulenceSample turbulence;
     const ::dropletFiber::AirSample air =
         sampleAir(turbulent ? &turbulence : nullptr);
-    if (turbulent && turbulence.pointCount() > 0)
+    if (turbulent)
     {
         advanceTurbulence(dt, turbulence);
     }

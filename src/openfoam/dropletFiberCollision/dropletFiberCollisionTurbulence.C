@@ -26,6 +26,31 @@ void Foam::functionObjects::dropletFiberCollision::advanceTurbulence
     const ::dropletFiber::TurbulenceSample& turbulence
 )
 {
+    // A model without k (Spalart-Allmaras, or k not yet developed) gives
+    // k = 0: no fluctuation, which the log line would not tell
+    // (collective: every processor calls this, with its points or none)
+    const label points =
+        returnReduce(label(turbulence.pointCount()), sumOp<label>());
+    const scalar kMax = returnReduce
+    (
+        turbulence.pointCount() ? turbulence.kineticEnergy.maxCoeff() : 0.0,
+        maxOp<scalar>()
+    );
+    if (points > 0 && kMax <= 0 && !warnedZeroK_)
+    {
+        WarningInFunction
+            << type() << " " << name() << ": fibers.turbulence is "
+            << ::dropletFiber::turbulenceModelName(turbulence_.settings.model).c_str()
+            << " but the case's turbulence model gives k = 0 at every fiber"
+            << " point at time " << time_.timeName() << " (a model without k,"
+            << " such as Spalart-Allmaras?): the fibers see the mean air only"
+            << " (said once)." << endl;
+        warnedZeroK_ = true;
+    }
+    if (turbulence.pointCount() == 0)
+    {
+        return;   // no air sampled here (no movable fiber, or no drag)
+    }
     const std::vector<std::uint64_t> ids(held_.id.begin(), held_.id.end());
     ::dropletFiber::advanceTurbulentVelocities
     (
