@@ -1,5 +1,5 @@
 // TurbulentAir: the turbulent velocity fluctuation u' the fibers' drag sees on top of
-// the mean air velocity of a RANS (or LES) case (docs/model.md sec. 8). Per fiber point
+// the mean air velocity of a RANS (or LES) case (docs/model.md sec. 8, eqs. P18-P22). Per fiber point
 // an isotropic Ornstein-Uhlenbeck velocity: zero mean, variance sigma^2 = 2k/3 per
 // component, autocorrelation exp(-tau/T_L) in time with T_L = C_T k/epsilon, and
 // correlation exp(-|s - s'|/L) along the fiber's arc length s with L = C_L k^(3/2)/epsilon.
