@@ -5,7 +5,12 @@
 //
 // Case: flexible glass fibers (r = 5 um, 1 cm) in a uniform cross-wind with gravity
 // and the slenderBodyOseen drag, every third fiber pinned at one end, dt = 1 ms.
+// Then the turbulent air (docs/model.md sec. 8): the cost per point per step of
+// advancing u' (TurbulentAir) against the fiber step without it, and of the step with it
+// (which moves the fibers otherwise: its Newton iterations differ, so the ratio of the
+// two steps is not the cost of u' alone).
 #include "fiber/FiberSolver.hpp"
+#include "fiber/TurbulentAir.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -41,6 +46,42 @@ std::vector<Fiber> makeFibers(int fiberCount, int pointCount)
         fibers.emplace_back(points, glass, startEnd, EndCondition::freeEnd());
     }
     return fibers;
+}
+
+// Seconds per step of u' alone, of the fiber step without and with u' (k = 0.01,
+// epsilon = 0.1: u' of 0.08 m/s on a 0.5 m/s cross-wind).
+void turbulenceCost(int fibersN, int pointsN, const FiberSolverSettings& settings, double dt)
+{
+    std::vector<Fiber> plain = makeFibers(fibersN, pointsN), turbulent = plain;
+    const AirSample air = uniformAir(plain, Eigen::Vector3d(0.5, 0.2, 0.0), 1.2, 1.8e-5);
+    const Eigen::Index n = air.pointCount();
+    const TurbulenceSample k{Eigen::VectorXd::Constant(n, 0.01), Eigen::VectorXd::Constant(n, 0.1)};
+    TurbulenceSettings model;
+    model.model = TurbulenceModelType::ornsteinUhlenbeck;
+    std::vector<std::uint64_t> ids(plain.size());
+    for (std::size_t f = 0; f < ids.size(); ++f)
+        ids[f] = f;
+    FiberSolver solver(settings);
+    const int steps = static_cast<int>(std::max(3L, 200000L / n));
+    double fluctuation = 0.0, withoutU = 0.0, withU = 0.0;
+    for (int step = 0; step <= steps; ++step) // step 0: warm-up, not timed
+    {
+        const auto t0 = std::chrono::steady_clock::now();
+        solver.step(plain, dt, air);
+        const auto t1 = std::chrono::steady_clock::now();
+        advanceTurbulentVelocities(turbulent, ids, k, model, std::uint64_t(step), dt);
+        const auto t2 = std::chrono::steady_clock::now();
+        solver.step(turbulent, dt, air);
+        const auto t3 = std::chrono::steady_clock::now();
+        if (step == 0)
+            continue;
+        withoutU += std::chrono::duration<double>(t1 - t0).count();
+        fluctuation += std::chrono::duration<double>(t2 - t1).count();
+        withU += std::chrono::duration<double>(t3 - t1).count();
+    }
+    const double scale = 1e9 / steps / static_cast<double>(n);
+    std::printf("%7d %7d %14.1f %14.1f %14.1f %9.3f\n", fibersN, pointsN, scale * fluctuation,
+                scale * withoutU, scale * withU, withU / withoutU);
 }
 
 } // namespace
@@ -104,5 +145,12 @@ int main()
     std::printf("  20 -> 200 points, 1000 fibers: x %.1f\n", 10.0 * costs[3][3] / costs[3][0]);
     std::printf("  1 -> 10 fibers of 200 points: x %.1f;  100 -> 1000 fibers of 200 points: x %.1f\n",
                 10.0 * costs[1][3] / costs[0][3], 10.0 * costs[3][3] / costs[2][3]);
+
+    std::printf("\nturbulent air: ns per point per step of u' alone, of the step without u', of u' + "
+                "the step with it, and the ratio of the last two\n");
+    std::printf("%7s %7s %14s %14s %14s %9s\n", "fibers", "points", "u' alone", "step", "u' + step", "ratio");
+    for (const int fibersN : {10, 100})
+        for (const int pointsN : {20, 200})
+            turbulenceCost(fibersN, pointsN, settings, dt);
     return 0;
 }

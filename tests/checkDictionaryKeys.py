@@ -18,6 +18,7 @@ READERS = (
     "src/openfoam/settings/gridSettings.C",
     "src/openfoam/settings/collisionSettings.C",
     "src/openfoam/settings/fiberSettings.C",
+    "src/openfoam/settings/turbulenceSettings.C",
     "src/openfoam/airSampler/airSampler.C",
     "src/openfoam/dropletFiberCollision/dropletFiberCollision.C",
 )

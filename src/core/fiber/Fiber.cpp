@@ -81,6 +81,8 @@ void Fiber::validate() const
         fail("externalForce: wrong number of points");
     if (state_.restLengths.size() != n - 1)
         fail("restLengths: wrong number of segments");
+    if (state_.turbulentVelocity.cols() != 0 && state_.turbulentVelocity.cols() != n)
+        fail("turbulentVelocity: wrong number of points (none or one per point)");
     if (state_.segmentCapturedMass.size() != n - 1)
         fail("segmentCapturedMass: wrong number of segments");
     if (state_.tension.size() != n - 1)

@@ -71,6 +71,11 @@ void FiberSolver::updateDrag(const Fiber& fiber, const AirSample* air, Eigen::In
         return;
     const Eigen::Index n = fiber.pointCount();
     airVelocity_ = air->velocity.middleCols(firstPoint, n);
+    // The turbulent fluctuation joins the mean air (docs/model.md sec. 8); an all-zero
+    // one (k = 0) is not added, so that it leaves every bit as without turbulence.
+    const Eigen::Matrix3Xd& turbulent = fiber.state().turbulentVelocity;
+    if (turbulent.cols() == n && !turbulent.isZero(0.0))
+        airVelocity_ += turbulent;
     drag_.airVelocity = &airVelocity_;
     drag_.normal.resize(n);
     drag_.tangential.resize(n);

@@ -5,7 +5,9 @@
 //      conserves momentum - followed by the impulsive tension response (velocity
 //      projection) that keeps the fiber inextensible;
 //   2. the air at all points of all movable fibers, sampled by the caller in one
-//      batch before the step (see AirSample; not used when the drag model is none);
+//      batch before the step (see AirSample; not used when the drag model is none),
+//      plus each point's turbulent fluctuation FiberState::turbulentVelocity when the
+//      fiber has one (advanced by the caller before the step: TurbulentAir);
 //   3. each movable fiber independently: implicit sub-steps (ImplicitFiberStep),
 //      as many as its own accuracy needs (see FiberSolverSettings).
 // Fibers are processed one after another in list order; no randomness, no threads:

@@ -27,6 +27,10 @@ struct FiberState
     EndCondition startEnd; // at point 0
     EndCondition endEnd;   // at point n-1
     bool immobile = false; // fully fixed fiber (filters, validation)
+    // Turbulent velocity fluctuation u' [m/s] per point (TurbulentAir, docs/model.md
+    // sec. 8): part of the state so that a restart continues the same realisation;
+    // empty (0 columns) without turbulence, or before the first turbulent step.
+    Eigen::Matrix3Xd turbulentVelocity;
 };
 
 } // namespace dropletFiber

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "airSampler.H"
+#include "caseTurbulence.H"
 #include "interpolationCellPoint.H"
 #include "polyMeshTetDecomposition.H"
 #include "IOdictionary.H"
@@ -378,6 +379,8 @@ void Foam::dropletFiber::airSampler::sampleInCell
     v[3] = cellValue(rho_, celli);
     v[4] = cellValue(mu_, celli);
     v[5] = 1;
+    v[6] = turbulenceK_ ? (*turbulenceK_)[celli] : 0;
+    v[7] = turbulenceEpsilon_ ? (*turbulenceEpsilon_)[celli] : 0;
 }
 
 
@@ -464,10 +467,17 @@ void Foam::dropletFiber::airSampler::askOtherProcessors
 (
     const Eigen::Matrix3Xd& points,
     const processorBoxes& boxes,
-    parallelStatistics& statistics
+    parallelStatistics& statistics,
+    ::dropletFiber::TurbulenceSample* turbulence
 ) const
 {
     const label n = points.cols();
+    tmp<volScalarField> k, epsilon;
+    if (turbulence && turbulenceFields(mesh_, k, epsilon))
+    {
+        turbulenceK_ = &k().primitiveField();
+        turbulenceEpsilon_ = &epsilon().primitiveField();
+    }
     const volVectorField& U = mesh_.lookupObject<volVectorField>(UName_);
     // A diverged flow: OpenFOAM's cell-point interpolation traps on
     // non-finite values (SIGFPE: its parallel synchronisation compares
@@ -500,6 +510,19 @@ void Foam::dropletFiber::airSampler::askOtherProcessors
     if (Pstream::parRun())
     {
         askOtherProcessors(points, boxes, interpU.get(), values, statistics);
+    }
+
+    turbulenceK_ = nullptr;
+    turbulenceEpsilon_ = nullptr;
+    if (turbulence)
+    {
+        turbulence->kineticEnergy.resize(n);
+        turbulence->dissipation.resize(n);
+        for (label i = 0; i < n; ++i)
+        {
+            turbulence->kineticEnergy(i) = values[width*i + 6];
+            turbulence->dissipation(i) = values[width*i + 7];
+        }
     }
 
     const scalar rhoRef = referenceDensity();

@@ -310,8 +310,9 @@ void Foam::functionObjects::dropletFiberCollision::reportSettings() const
         << s.gravity.z() << "), drag "
         << ::dropletFiber::dragModelName(s.drag.model).c_str()
         << ", theta " << s.theta << ", injectors " << label(injectors_.size())
-        << ", fibers now " << fiberCount() << nl
-        << "    output: writeVtk " << Switch(writeVtk_).c_str()
+        << ", fibers now " << fiberCount() << nl;
+    reportTurbulence();
+    Info<< "    output: writeVtk " << Switch(writeVtk_).c_str()
         << ", writeGridVtk " << Switch(writeGridVtk_).c_str() << nl << endl;
 }
 
@@ -1039,6 +1040,8 @@ bool Foam::functionObjects::dropletFiberCollision::read(const dictionary& dict)
     solverSettings_ =
         dropletFiber::readFiberSolverSettings(dict.subOrEmptyDict("fibers"), time_);
     solver_.reset(new ::dropletFiber::FiberSolver(solverSettings_));
+    turbulence_ =
+        dropletFiber::readFiberTurbulence(dict.subOrEmptyDict("fibers"), mesh_);
 
     if (running)
     {

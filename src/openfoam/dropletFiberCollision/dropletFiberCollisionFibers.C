@@ -21,7 +21,10 @@ Description
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 ::dropletFiber::AirSample
-Foam::functionObjects::dropletFiberCollision::sampleAir() const
+Foam::functionObjects::dropletFiberCollision::sampleAir
+(
+    ::dropletFiber::TurbulenceSample* turbulence
+) const
 {
     // The points the core lays out (the movable fibers held here,
     // AirSample.hpp). Collective: every processor samples, with its points
@@ -36,7 +39,7 @@ Foam::functionObjects::dropletFiberCollision::sampleAir() const
         return {};
     }
     const ::dropletFiber::AirSample air =
-        air_->sample(points, *boxes_, parallelStatistics_);
+        air_->sample(points, *boxes_, parallelStatistics_, turbulence);
     stopIfAirNotFinite(air);
     return air;
 }
@@ -180,7 +183,23 @@ Foam::functionObjects::dropletFiberCollision::advanceFibers
     ::dropletFiber::CaptureSources& capture
 )
 {
-    const ::dropletFiber::AirSample air = sampleAir();
+    // With turbulent air the fluctuation u' of every point is advanced
+    // first, from the k and epsilon sampled with the air
+    const bool turbulent =
+        turbulence_.settings.model != ::dropletFiber::TurbulenceModelType::none;
+    ::dropletFiber::TurbulenceSample turbulence;
+    const ::dropletFiber::AirSample air =
+        sampleAir(turbulent ? &turbulence : nullptr);
+    if (turbulent)
+    {
+        advanceTurbulence(dt, turbulence);
+    }
+    else if (!turbulent)
+    {
+        // Switched to none during the run or restarted with none from a
+        // turbulent state: the mean air only, as without turbulence
+        ::dropletFiber::clearTurbulentVelocities(held_.fibers);
+    }
     ::dropletFiber::StepReport report;
     const std::string failure = stepFibers(dt, air, capture, report);
 

@@ -27,19 +27,43 @@ Foam::word pieceName(const Foam::label proci)
 
 
 //- The arrays of the fibers' pieces (names and components), for the .pvtp
-std::vector<::dropletFiber::VtkField> fiberPointFields()
+std::vector<::dropletFiber::VtkField> fiberPointFields(const bool turbulent)
 {
-    return
+    std::vector<::dropletFiber::VtkField> fields
     {
         {"velocity", 3, {}}, {"sigma", 1, {}}, {"capturedMass", 1, {}},
         {"fiberId", 1, {}}
     };
+    if (turbulent)
+    {
+        fields.push_back({"turbulentVelocity", 3, {}});
+    }
+    return fields;
 }
 
 
 std::vector<::dropletFiber::VtkField> fiberCellFields()
 {
     return {{"tension", 1, {}}, {"segmentCapturedMass", 1, {}}};
+}
+
+
+//- u' of the fiber's points onto field (zero where it has none: immobile
+//  fibers, or before its first turbulent step)
+void addTurbulentVelocity
+(
+    const ::dropletFiber::Fiber& fiber,
+    ::dropletFiber::VtkField& field
+)
+{
+    const Eigen::Matrix3Xd& u = fiber.state().turbulentVelocity;
+    for (Eigen::Index i = 0; i < fiber.pointCount(); ++i)
+    {
+        for (int c = 0; c < 3; ++c)
+        {
+            field.values.push_back(u.cols() ? u(c, i) : 0.0);
+        }
+    }
 }
 
 } // End anonymous namespace
@@ -129,6 +153,8 @@ void Foam::functionObjects::dropletFiberCollision::reportStep
             << tab << step.fiberTime
             << endl;
     }
+    // With turbulent air, the fibers' dispersion (collective)
+    writeFiberDispersion();
 }
 
 
@@ -250,7 +276,8 @@ void Foam::functionObjects::dropletFiberCollision::writeFibersVtk
         }
         ::dropletFiber::writeParallelPolylines
         (
-            dir/stem + ".pvtp", t, pieces, fiberPointFields(), fiberCellFields()
+            dir/stem + ".pvtp", t, pieces,
+            fiberPointFields(turbulenceWritten()), fiberCellFields()
         );
         fibersSeries_->add(stem + ".pvtp", t);
     }
@@ -272,8 +299,10 @@ void Foam::functionObjects::dropletFiberCollision::writeHeldFibersVtk
     ::dropletFiber::VtkField fiberId{"fiberId", 1, {}};
     ::dropletFiber::VtkField tension{"tension", 1, {}};
     ::dropletFiber::VtkField segmentCaptured{"segmentCapturedMass", 1, {}};
+    ::dropletFiber::VtkField turbulent{"turbulentVelocity", 3, {}};
     for (std::size_t f = 0; f < held_.size(); ++f)
     {
+        addTurbulentVelocity(held_.fibers[f], turbulent);
         const auto& fiber = held_.fibers[f];
         offsets.push_back(points.size());
         const Eigen::VectorXd lineDensity = fiber.lineDensityAtPoints();
@@ -299,11 +328,17 @@ void Foam::functionObjects::dropletFiberCollision::writeHeldFibersVtk
             segmentCaptured.values.push_back(segCaptured(j));
         }
     }
+    std::vector<::dropletFiber::VtkField> pointFields
+    {
+        velocity, sigma, captured, fiberId
+    };
+    if (turbulenceWritten())
+    {
+        pointFields.push_back(turbulent);
+    }
     ::dropletFiber::writePolylines
     (
-        file, t, points, offsets,
-        {velocity, sigma, captured, fiberId},
-        {tension, segmentCaptured}
+        file, t, points, offsets, pointFields, {tension, segmentCaptured}
     );
 }
 

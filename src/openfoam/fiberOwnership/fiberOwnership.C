@@ -78,6 +78,9 @@ scalarList packState(const ::dropletFiber::FiberState& s)
     appendEnd(s.startEnd, values);
     appendEnd(s.endEnd, values);
     values.append(s.immobile ? 1 : 0);
+    // The turbulent fluctuation travels with its fiber (0 or n columns)
+    values.append(scalar(s.turbulentVelocity.cols()));
+    append(s.turbulentVelocity, values);
     return scalarList(std::move(values));
 }
 
@@ -106,6 +109,8 @@ scalarList packState(const ::dropletFiber::FiberState& s)
     extractEnd(values, k, s.startEnd);
     extractEnd(values, k, s.endEnd);
     s.immobile = values[k++] != 0;
+    s.turbulentVelocity.resize(3, Eigen::Index(values[k++]));
+    extract(values, k, s.turbulentVelocity);
     return s;
 }
 

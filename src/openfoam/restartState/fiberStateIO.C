@@ -146,6 +146,16 @@ Foam::dictionary Foam::dropletFiber::fiberStateDict
         "externalForce",
         toScalarList(s.externalForce.data(), s.externalForce.size())
     );
+    // The turbulent fluctuation (docs/model.md sec. 8), when the fiber has
+    // one: a restart continues its realisation
+    if (s.turbulentVelocity.cols())
+    {
+        d.add
+        (
+            "turbulentVelocity",
+            toScalarList(s.turbulentVelocity.data(), s.turbulentVelocity.size())
+        );
+    }
     return d;
 }
 
@@ -186,6 +196,11 @@ Foam::dictionary Foam::dropletFiber::fiberStateDict
     s.segmentCapturedMass = Eigen::Map<const Eigen::VectorXd>(captured.cdata(), segments);
     readInto(d, "tension", row, 1, segments);
     s.tension = row.transpose();
+    // Optional: states written without turbulent air have none
+    if (d.found("turbulentVelocity"))
+    {
+        readInto(d, "turbulentVelocity", s.turbulentVelocity, 3, points);
+    }
     return s;
 }
 

@@ -29,7 +29,9 @@ const wordList materialKeys{"radius", "density", "youngsModulus"};
 const wordList fibersKeys
 {
     "gravity", "drag", "normalDragCoefficient", "tangentialDragCoefficient",
-    "maxSubSteps", "theta", "points", "injectors", "fixed"
+    "maxSubSteps", "theta", "points", "injectors", "fixed",
+    // read by readFiberTurbulence (turbulenceSettings.H)
+    "turbulence"
 };
 
 //- The entries of an injector besides the material: read by readFiberInjectors
