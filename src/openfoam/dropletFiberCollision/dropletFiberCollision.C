@@ -251,7 +251,7 @@ void Foam::functionObjects::dropletFiberCollision::reportSettings() const
     Info<< (
                gatherWriteObjects_
              ? " (gather writeObjects: every cloud through cloud::writeObjects)"
-             : " (gather direct: kinematic parcel types read directly)"
+             : " (gather direct: the stock solvers' parcel types read directly)"
            ) << nl;
     Info<< "    grid: (" << g.lower.x() << ' ' << g.lower.y() << ' ' << g.lower.z()
         << ") to (" << g.upper.x() << ' ' << g.upper.y() << ' ' << g.upper.z()
