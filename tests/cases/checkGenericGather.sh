@@ -2,8 +2,8 @@
 # The two routes that gather parcels give the same parcels: the case is run with
 # 'gather writeObjects;' (every cloud through cloud::writeObjects, the generic
 # route), and its table must equal, to the last digit written, the table of the
-# default run ('gather direct;': the kinematic parcel types read directly); each
-# run's log names the route its cloud was read by.
+# default run ('gather direct;': the stock solvers' parcel types read directly);
+# each run's log names the route its cloud was read by.
 # Usage: checkGenericGather.sh CASE_DIR WORK_DIR DEFAULT_RUN_TABLE
 set -uo pipefail
 here="$(cd "${0%/*}" && pwd)"
@@ -18,9 +18,12 @@ check "[ $status -eq 0 ]" "the run with 'gather writeObjects' failed ($status), 
 check '"$here/../../bin/checkFunctionObjectRan" log.generic' "the run went on without the function object"
 check 'grep -q "gather writeObjects: every cloud through" log.generic' \
     "the entry did not take effect (no generic-route line in the log)"
-check "grep -q \"cloud 'kinematicCloud' (type [^)]*) read through cloud::writeObjects (entry gather writeObjects)\" log.generic" \
-    "the generic run does not log the cloud's route"
-check "grep -q \"cloud 'kinematicCloud' (type [^)]*) read parcel by parcel\" \"\$(dirname \"\$defaultTable\")/../../../log.pimpleFoam\"" \
+app="$(foamDictionary -entry application -value system/controlDict)"
+cloudName="$(sed -n "s/^.*cloud '\([^']*\)' (type [^)]*) read through cloud::writeObjects (entry gather writeObjects).*$/\1/p" log.generic | head -1)"
+check '[ -n "$cloudName" ]' "the generic run does not log the cloud's route"
+check 'grep -q "gather direct: the stock solvers'"'"' parcel types read directly" "$(dirname "$defaultTable")/../../../log.$app"' \
+    "the default run's settings line does not name the direct route"
+check "grep -q \"cloud '$cloudName' (type [^)]*) read parcel by parcel\" \"\$(dirname \"\$defaultTable\")/../../../log.$app\"" \
     "the default run did not read the parcels directly"
 python3 "$here/compareTables.py" "$defaultTable" postProcessing/dropletFiber/0/dropletFiber.dat 0
 check "[ $? -eq 0 ]" "the tables of the two routes differ"

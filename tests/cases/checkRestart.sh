@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
 # Restart: run 0 -> T equals run 0 -> T/2, then restart from T/2 -> T.
-# Usage: checkRestart.sh CASE_DIR WORK_DIR T_HALF T [parallel]
+# Usage: checkRestart.sh CASE_DIR WORK_DIR T_HALF T [parallel|serial [TOL]]
 # Compares the restart state written at T (fibers, injector counters, totals,
-# averaging window) to 1e-10 relative, and the per-step table rows after T/2;
-# parallel: both runs on 2 ranks, each processor's state compared.
+# averaging window) to TOL relative (default 1e-10), and the per-step table rows
+# after T/2; parallel: both runs on 2 ranks, each processor's state compared.
 set -euo pipefail
-caseDir="$1"; work="$2"; half="$3"; end="$4"; mode="${5:-serial}"
+caseDir="$1"; work="$2"; half="$3"; end="$4"; mode="${5:-serial}"; tol="${6:-1e-10}"
 here="$(cd "${0%/*}" && pwd)"
 # shellcheck disable=SC1091
 . "$here/../../bin/functions.sh"
@@ -42,19 +42,19 @@ state=uniform/dropletFiber/dropletFiber
 dirs=(.)
 [ "$mode" = parallel ] && dirs=(processor0 processor1)
 for dir in "${dirs[@]}"; do
-    "$PY" "$here/compareState.py" "$work/full/$dir/$end/$state" "$work/split/$dir/$end/$state" 1e-10
+    "$PY" "$here/compareState.py" "$work/full/$dir/$end/$state" "$work/split/$dir/$end/$state" "$tol"
     # the averaging window (binary list), value by value. Not bit for bit: OpenFOAM's own
     # time value after a restart differs from the continuous run's in the last bits
     # (0.20000000000000009 against ...15 here), and with it the parcels at round-off
     "$PY" "$here/compareWindow.py" "$work/full/$dir/$end/$state.gridWindow" \
-        "$work/split/$dir/$end/$state.gridWindow" 1e-10
+        "$work/split/$dir/$end/$state.gridWindow" "$tol"
     # ...and its node values (the state holds the parcels deposited, written with
     # writeWindowValues)
     if [ -f "$work/full/$dir/$end/$state.gridWindowValues" ]; then
         "$PY" "$here/compareWindow.py" "$work/full/$dir/$end/$state.gridWindowValues" \
-            "$work/split/$dir/$end/$state.gridWindowValues" 1e-10
+            "$work/split/$dir/$end/$state.gridWindowValues" "$tol"
     fi
 done
 "$PY" "$here/compareTables.py" --after "$half" \
     "$work/full/postProcessing/dropletFiber/0/dropletFiber.dat" \
-    "$work/split/postProcessing/dropletFiber/$half/dropletFiber.dat" 1e-10
+    "$work/split/postProcessing/dropletFiber/$half/dropletFiber.dat" "$tol"

@@ -14,187 +14,17 @@ Description
     every step: it was a fifth of the function object's time in the
     tutorial.
 
-    Thermo, reacting and spray clouds keep the generic route: their parcel
-    headers need the thermophysical libraries' headers, which the library
-    does not otherwise depend on.
+    The parcel types of the thermo, reacting and spray clouds are read and
+    written back the same way (cloudParcelsThermo.C, which needs the
+    thermophysical libraries' headers); the members below try them after
+    the kinematic types.
 
 \*---------------------------------------------------------------------------*/
 
-#include "cloudParcels.H"
-#include "Cloud.H"
+#include "cloudParcelsTemplates.H"
 #include "basicKinematicParcel.H"
 #include "basicKinematicCollidingParcel.H"
 #include "basicKinematicMPPICParcel.H"
-
-// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
-
-namespace
-{
-
-//- Append the parcels of c when it is a Cloud<ParcelType>; false otherwise
-template<class ParcelType>
-bool appendIfCloudOf
-(
-    const Foam::cloud& c,
-    Foam::dropletFiber::cloudParcels& parcels
-)
-{
-    const auto* typed = dynamic_cast<const Foam::Cloud<ParcelType>*>(&c);
-    if (!typed)
-    {
-        return false;
-    }
-    const Foam::label n = parcels.size() + typed->size();
-    parcels.position.reserve(n);
-    parcels.U.reserve(n);
-    parcels.d.reserve(n);
-    parcels.nParticle.reserve(n);
-    parcels.rho.reserve(n);
-    parcels.origProc.reserve(n);
-    parcels.origId.reserve(n);
-    parcels.address.reserve(n);
-    for (const ParcelType& p : *typed)
-    {
-        parcels.address.append(&p);
-        parcels.origProc.append(p.origProc());
-        parcels.origId.append(p.origId());
-        const Foam::KinematicParcel<Foam::particle>& k = p;
-        parcels.position.append(k.position());
-        parcels.U.append(k.U());
-        parcels.d.append(k.d());
-        parcels.nParticle.append(k.nParticle());
-        parcels.rho.append(k.rho());
-    }
-    return true;
-}
-
-
-//- Depletion of c when it is a Cloud<ParcelType>; false otherwise
-template<class ParcelType>
-bool depleteIfCloudOf
-(
-    Foam::cloud& c,
-    const Foam::scalar* capturedFraction,
-    const Foam::label count,
-    const Foam::particle* const* address
-)
-{
-    auto* typed = dynamic_cast<Foam::Cloud<ParcelType>*>(&c);
-    if (!typed)
-    {
-        return false;
-    }
-    if (typed->size() != count)
-    {
-        FatalErrorInFunction
-            << "Cloud '" << c.name() << "' holds " << typed->size()
-            << " parcels, but " << count << " were gathered from it this"
-            << " step: the captured droplets cannot be matched to its"
-            << " parcels." << Foam::exit(Foam::FatalError);
-    }
-    bool addressed = address != nullptr;
-    for (Foam::label i = 0; i < count && addressed; ++i)
-    {
-        addressed = address[i] != nullptr;
-    }
-    Foam::DynamicList<ParcelType*> emptied;
-    // The parcel of the i-th fraction, in the cloud's order either way
-    const auto deplete = [&](ParcelType& p, const Foam::scalar f)
-    {
-        Foam::KinematicParcel<Foam::particle>& k = p;
-        if (f >= 1)
-        {
-            emptied.append(&p); // every droplet captured
-        }
-        else if (f > 0)
-        {
-            k.nParticle() *= 1 - f;
-        }
-    };
-    if (addressed)
-    {
-        // Only the parcels that lost droplets (gathered this step from
-        // this cloud, which has not changed since: its type is ParcelType)
-        for (Foam::label i = 0; i < count; ++i)
-        {
-            if (capturedFraction[i] > 0)
-            {
-                deplete
-                (
-                    *static_cast<ParcelType*>
-                    (
-                        const_cast<Foam::particle*>(address[i])
-                    ),
-                    capturedFraction[i]
-                );
-            }
-        }
-    }
-    else
-    {
-        Foam::label i = 0;
-        for (ParcelType& p : *typed)
-        {
-            deplete(p, capturedFraction[i++]);
-        }
-    }
-    for (ParcelType* p : emptied)
-    {
-        typed->deleteParticle(*p);
-    }
-    return true;
-}
-
-
-//- applyRemoval for c when it is a Cloud<ParcelType>; -1 otherwise
-template<class ParcelType>
-Foam::label removeIfCloudOf
-(
-    Foam::cloud& c,
-    const std::unordered_map<std::int64_t, Foam::scalar>& removal
-)
-{
-    auto* typed = dynamic_cast<Foam::Cloud<ParcelType>*>(&c);
-    if (!typed)
-    {
-        return -1;
-    }
-    Foam::DynamicList<ParcelType*> emptied;
-    Foam::label found = 0;
-    for (ParcelType& p : *typed)
-    {
-        const auto entry =
-            removal.find
-            (
-                Foam::dropletFiber::cloudParcels::removalKey
-                (
-                    p.origProc(), p.origId()
-                )
-            );
-        if (entry == removal.end())
-        {
-            continue;
-        }
-        ++found;
-        Foam::KinematicParcel<Foam::particle>& k = p;
-        if (entry->second >= 1)
-        {
-            emptied.append(&p);
-        }
-        else
-        {
-            k.nParticle() *= 1 - entry->second;
-        }
-    }
-    for (ParcelType* p : emptied)
-    {
-        typed->deleteParticle(*p);
-    }
-    return found;
-}
-
-} // End anonymous namespace
-
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
 
@@ -203,7 +33,14 @@ bool Foam::dropletFiber::cloudParcels::appendKinematic(const cloud& c)
     return
         appendIfCloudOf<basicKinematicCollidingParcel>(c, *this)
      || appendIfCloudOf<basicKinematicParcel>(c, *this)
-     || appendIfCloudOf<basicKinematicMPPICParcel>(c, *this);
+     || appendIfCloudOf<basicKinematicMPPICParcel>(c, *this)
+     || appendThermo(c);
+}
+
+
+bool Foam::dropletFiber::cloudParcels::readsDirectly(const cloud& c)
+{
+    return isKinematic(c) || isThermo(c);
 }
 
 
@@ -236,7 +73,8 @@ bool Foam::dropletFiber::cloudParcels::depleteKinematic
      || depleteIfCloudOf<basicKinematicMPPICParcel>
         (
             c, capturedFraction, count, address
-        );
+        )
+     || depleteThermo(c, capturedFraction, count, address);
 }
 
 Foam::label Foam::dropletFiber::cloudParcels::applyRemoval
@@ -253,6 +91,10 @@ Foam::label Foam::dropletFiber::cloudParcels::applyRemoval
     if (found < 0)
     {
         found = removeIfCloudOf<basicKinematicMPPICParcel>(c, removal);
+    }
+    if (found < 0)
+    {
+        found = applyRemovalThermo(c, removal);
     }
     return max(found, label(0));
 }

@@ -252,9 +252,10 @@ void Foam::functionObjects::dropletFiberCollision::reportSettings() const
     Info<< (
                gatherWriteObjects_
              ? " (gather writeObjects: every cloud through cloud::writeObjects)"
-             : " (gather direct: kinematic, colliding and MPPIC clouds read"
-               " parcel by parcel, others through cloud::writeObjects; each"
-               " cloud's route is logged when first read)"
+             : " (gather direct: the stock solvers' parcel types read directly,"
+               " parcel by parcel: kinematic, colliding, MPPIC, thermo, reacting,"
+               " spray clouds; others through cloud::writeObjects; each cloud's"
+               " route is logged when first read)"
            ) << nl;
     Info<< "    grid: (" << g.lower.x() << ' ' << g.lower.y() << ' ' << g.lower.z()
         << ") to (" << g.upper.x() << ' ' << g.upper.y() << ' ' << g.upper.z()
@@ -530,18 +531,18 @@ void Foam::functionObjects::dropletFiberCollision::logCloudRoute
         return;
     }
     const bool direct =
-        !gatherWriteObjects_ && dropletFiber::cloudParcels::isKinematic(c);
+        !gatherWriteObjects_ && dropletFiber::cloudParcels::readsDirectly(c);
     Info<< type() << " " << name() << ": cloud '" << c.name() << "' (type "
         << c.type() << ") read "
         << (
                direct
-             ? "parcel by parcel (a kinematic, colliding or MPPIC cloud)"
+             ? "parcel by parcel (a stock solver's parcel type)"
              : gatherWriteObjects_
              ? "through cloud::writeObjects (entry gather writeObjects)"
-             : "through cloud::writeObjects (gather direct reads kinematic,"
-               " colliding and MPPIC clouds only)"
+             : "through cloud::writeObjects (gather direct reads the stock"
+               " solvers' parcel types only)"
            );
-    if (depletion_ && !dropletFiber::cloudParcels::isKinematic(c))
+    if (depletion_ && !dropletFiber::cloudParcels::readsDirectly(c))
     {
         Info<< "; the droplets the fibers capture cannot be removed from"
             << " its parcels";

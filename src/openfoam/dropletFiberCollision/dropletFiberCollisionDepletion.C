@@ -15,10 +15,11 @@ Description
         put on the nodes the fibers took from (P14): nParticle is reduced,
         a parcel with c_p = 1 is removed from its cloud. Droplet size and
         velocity are unchanged.
-    Mass captured = mass removed, to round-off. Clouds of the kinematic
-    parcel types (kinematic, colliding, MPPIC) are written back; other
-    clouds (spray, reacting, ...) are read through cloud::writeObjects only
-    and cannot be: they keep their droplets, with a warning naming them.
+    Mass captured = mass removed, to round-off. Clouds of the parcel types
+    of the stock solvers (kinematic, colliding, MPPIC, thermo, reacting,
+    reacting multiphase, heterogeneous reacting, spray: cloudParcels) are
+    written back; other clouds are read through cloud::writeObjects only and
+    cannot be: they keep their droplets, with a warning naming them.
 
 \*---------------------------------------------------------------------------*/
 
@@ -218,8 +219,10 @@ Foam::scalar Foam::functionObjects::dropletFiberCollision::writeBackToClouds
                 << " cloud::writeObjects only: the droplets the fibers"
                 << " capture cannot be removed from its parcels, which fly"
                 << " on unchanged (the captured mass is then counted twice;"
-                << " the table's removedStep leaves it out). Use a kinematic,"
-                << " colliding or MPPIC cloud, or collision.depletion false"
+                << " the table's removedStep leaves it out). Use a cloud of"
+                << " a stock solver (kinematic, colliding, MPPIC, thermo,"
+                << " reacting, reacting multiphase, heterogeneous reacting,"
+                << " spray), or collision.depletion false"
                 << " (warned once per cloud, at time " << time_.timeName()
                 << ")." << endl;
         }

@@ -1,0 +1,113 @@
+/*---------------------------------------------------------------------------*\
+  dropletFiber: stochastic droplet-fiber coupling for OpenFOAM
+-------------------------------------------------------------------------------
+Description
+    The direct route of cloudParcels for the parcel types of the evaporating,
+    reacting and spray clouds the stock v1912 solvers create:
+      - basicReactingMultiphaseParcel: reactingParcelFoam,
+        simpleReactingParcelFoam (basicReactingMultiphaseCloud); coalParcel
+        (coalChemistryFoam, simpleCoalParcelFoam) is the same type;
+      - basicReactingParcel (basicReactingCloud: fireFoam);
+      - basicThermoParcel (basicThermoCloud: coalChemistryFoam's limestone);
+      - basicHeterogeneousReactingParcel (reactingHeterogenousParcelFoam);
+      - basicSprayParcel (basicSprayCloud: sprayFoam, simpleSprayFoam,
+        sprayDyMFoam, engineFoam).
+    All derive from KinematicParcel<particle>: the five values read (position,
+    U, d, nParticle, rho) and the depletion's write-back (nParticle reduced,
+    emptied parcels deleted) are the kinematic parcels' (cloudParcelsTemplates.H).
+    A parcel's mass is nParticle rho pi d^3/6, as the cloud's own mass
+    (KinematicParcel::mass); its composition (Y) and temperature are left as
+    they are: the captured droplets are taken whole.
+
+\*---------------------------------------------------------------------------*/
+
+#include "cloudParcelsTemplates.H"
+#include "basicThermoParcel.H"
+#include "basicReactingParcel.H"
+#include "basicReactingMultiphaseParcel.H"
+#include "basicHeterogeneousReactingParcel.H"
+#include "basicSprayParcel.H"
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
+
+bool Foam::dropletFiber::cloudParcels::isThermo(const cloud& c)
+{
+    return
+        isA<Cloud<basicReactingMultiphaseParcel>>(c)
+     || isA<Cloud<basicSprayParcel>>(c)
+     || isA<Cloud<basicReactingParcel>>(c)
+     || isA<Cloud<basicThermoParcel>>(c)
+     || isA<Cloud<basicHeterogeneousReactingParcel>>(c);
+}
+
+
+bool Foam::dropletFiber::cloudParcels::appendThermo(const cloud& c)
+{
+    return
+        appendIfCloudOf<basicReactingMultiphaseParcel>(c, *this)
+     || appendIfCloudOf<basicSprayParcel>(c, *this)
+     || appendIfCloudOf<basicReactingParcel>(c, *this)
+     || appendIfCloudOf<basicThermoParcel>(c, *this)
+     || appendIfCloudOf<basicHeterogeneousReactingParcel>(c, *this);
+}
+
+
+bool Foam::dropletFiber::cloudParcels::depleteThermo
+(
+    cloud& c,
+    const scalar* capturedFraction,
+    const label count,
+    const particle* const* address
+)
+{
+    return
+        depleteIfCloudOf<basicReactingMultiphaseParcel>
+        (
+            c, capturedFraction, count, address
+        )
+     || depleteIfCloudOf<basicSprayParcel>
+        (
+            c, capturedFraction, count, address
+        )
+     || depleteIfCloudOf<basicReactingParcel>
+        (
+            c, capturedFraction, count, address
+        )
+     || depleteIfCloudOf<basicThermoParcel>
+        (
+            c, capturedFraction, count, address
+        )
+     || depleteIfCloudOf<basicHeterogeneousReactingParcel>
+        (
+            c, capturedFraction, count, address
+        );
+}
+
+
+Foam::label Foam::dropletFiber::cloudParcels::applyRemovalThermo
+(
+    cloud& c,
+    const std::unordered_map<std::int64_t, scalar>& removal
+)
+{
+    label found = removeIfCloudOf<basicReactingMultiphaseParcel>(c, removal);
+    if (found < 0)
+    {
+        found = removeIfCloudOf<basicSprayParcel>(c, removal);
+    }
+    if (found < 0)
+    {
+        found = removeIfCloudOf<basicReactingParcel>(c, removal);
+    }
+    if (found < 0)
+    {
+        found = removeIfCloudOf<basicThermoParcel>(c, removal);
+    }
+    if (found < 0)
+    {
+        found = removeIfCloudOf<basicHeterogeneousReactingParcel>(c, removal);
+    }
+    return found;
+}
+
+// ************************************************************************* //
