@@ -165,7 +165,19 @@ def read_table(path):
 def report(args):
     out = os.path.join(args.dir, "postProcessing", "dropletFiber", "0")
     table = read_table(os.path.join(out, "dropletFiber.dat"))
-    statistics = read_table(os.path.join(out, "parallelStatistics.dat"))
+    statistics_path = os.path.join(out, "parallelStatistics.dat")
+    if os.path.exists(statistics_path):
+        statistics = read_table(statistics_path)
+    elif args.ranks == 1:
+        # A serial run writes no parallelStatistics.dat: one processor holds the whole
+        # grid and every fiber, and sends nothing
+        statistics = [
+            {"nodesHeldMax": float(args.nodes), "fibersHeldMax": r["fibers"], "bytesSentMax": 0.0,
+             "bytesParcelsMax": 0.0, "bytesGridQueriesMax": 0.0, "bytesFibersMax": 0.0}
+            for r in table
+        ]
+    else:
+        raise SystemExit(f"scaleOutCase: no {statistics_path} in a run on {args.ranks} processors")
     rss_files = sorted(glob.glob(os.path.join(args.dir, "rss.*")))
     if len(rss_files) != args.ranks:
         raise SystemExit(f"scaleOutCase: {len(rss_files)} peak-RSS files in {args.dir}, expected {args.ranks}")
