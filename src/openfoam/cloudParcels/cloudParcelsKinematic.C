@@ -28,13 +28,21 @@ Description
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
 
+namespace
+{
+    //- The kinematic family's parcel types
+    using kinematicParcels = Foam::dropletFiber::parcelTypeList
+    <
+        Foam::basicKinematicCollidingParcel,
+        Foam::basicKinematicParcel,
+        Foam::basicKinematicMPPICParcel
+    >;
+}
+
+
 bool Foam::dropletFiber::cloudParcels::appendKinematic(const cloud& c)
 {
-    return
-        appendIfCloudOf<basicKinematicCollidingParcel>(c, *this)
-     || appendIfCloudOf<basicKinematicParcel>(c, *this)
-     || appendIfCloudOf<basicKinematicMPPICParcel>(c, *this)
-     || appendThermo(c);
+    return kinematicParcels::append(c, *this) || appendThermo(c);
 }
 
 
@@ -46,10 +54,7 @@ bool Foam::dropletFiber::cloudParcels::readsDirectly(const cloud& c)
 
 bool Foam::dropletFiber::cloudParcels::isKinematic(const cloud& c)
 {
-    return
-        isA<Cloud<basicKinematicCollidingParcel>>(c)
-     || isA<Cloud<basicKinematicParcel>>(c)
-     || isA<Cloud<basicKinematicMPPICParcel>>(c);
+    return kinematicParcels::holds(c);
 }
 
 
@@ -62,20 +67,10 @@ bool Foam::dropletFiber::cloudParcels::depleteKinematic
 )
 {
     return
-        depleteIfCloudOf<basicKinematicCollidingParcel>
-        (
-            c, capturedFraction, count, address
-        )
-     || depleteIfCloudOf<basicKinematicParcel>
-        (
-            c, capturedFraction, count, address
-        )
-     || depleteIfCloudOf<basicKinematicMPPICParcel>
-        (
-            c, capturedFraction, count, address
-        )
+        kinematicParcels::deplete(c, capturedFraction, count, address)
      || depleteThermo(c, capturedFraction, count, address);
 }
+
 
 Foam::label Foam::dropletFiber::cloudParcels::applyRemoval
 (
@@ -83,15 +78,7 @@ Foam::label Foam::dropletFiber::cloudParcels::applyRemoval
     const std::unordered_map<std::int64_t, scalar>& removal
 )
 {
-    label found = removeIfCloudOf<basicKinematicCollidingParcel>(c, removal);
-    if (found < 0)
-    {
-        found = removeIfCloudOf<basicKinematicParcel>(c, removal);
-    }
-    if (found < 0)
-    {
-        found = removeIfCloudOf<basicKinematicMPPICParcel>(c, removal);
-    }
+    label found = kinematicParcels::remove(c, removal);
     if (found < 0)
     {
         found = applyRemovalThermo(c, removal);

@@ -30,25 +30,29 @@ Description
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
 
+namespace
+{
+    //- The stock solvers' thermo, reacting and spray parcel types
+    using thermoParcels = Foam::dropletFiber::parcelTypeList
+    <
+        Foam::basicReactingMultiphaseParcel,
+        Foam::basicSprayParcel,
+        Foam::basicReactingParcel,
+        Foam::basicThermoParcel,
+        Foam::basicHeterogeneousReactingParcel
+    >;
+}
+
+
 bool Foam::dropletFiber::cloudParcels::isThermo(const cloud& c)
 {
-    return
-        isA<Cloud<basicReactingMultiphaseParcel>>(c)
-     || isA<Cloud<basicSprayParcel>>(c)
-     || isA<Cloud<basicReactingParcel>>(c)
-     || isA<Cloud<basicThermoParcel>>(c)
-     || isA<Cloud<basicHeterogeneousReactingParcel>>(c);
+    return thermoParcels::holds(c);
 }
 
 
 bool Foam::dropletFiber::cloudParcels::appendThermo(const cloud& c)
 {
-    return
-        appendIfCloudOf<basicReactingMultiphaseParcel>(c, *this)
-     || appendIfCloudOf<basicSprayParcel>(c, *this)
-     || appendIfCloudOf<basicReactingParcel>(c, *this)
-     || appendIfCloudOf<basicThermoParcel>(c, *this)
-     || appendIfCloudOf<basicHeterogeneousReactingParcel>(c, *this);
+    return thermoParcels::append(c, *this);
 }
 
 
@@ -60,27 +64,7 @@ bool Foam::dropletFiber::cloudParcels::depleteThermo
     const particle* const* address
 )
 {
-    return
-        depleteIfCloudOf<basicReactingMultiphaseParcel>
-        (
-            c, capturedFraction, count, address
-        )
-     || depleteIfCloudOf<basicSprayParcel>
-        (
-            c, capturedFraction, count, address
-        )
-     || depleteIfCloudOf<basicReactingParcel>
-        (
-            c, capturedFraction, count, address
-        )
-     || depleteIfCloudOf<basicThermoParcel>
-        (
-            c, capturedFraction, count, address
-        )
-     || depleteIfCloudOf<basicHeterogeneousReactingParcel>
-        (
-            c, capturedFraction, count, address
-        );
+    return thermoParcels::deplete(c, capturedFraction, count, address);
 }
 
 
@@ -90,24 +74,7 @@ Foam::label Foam::dropletFiber::cloudParcels::applyRemovalThermo
     const std::unordered_map<std::int64_t, scalar>& removal
 )
 {
-    label found = removeIfCloudOf<basicReactingMultiphaseParcel>(c, removal);
-    if (found < 0)
-    {
-        found = removeIfCloudOf<basicSprayParcel>(c, removal);
-    }
-    if (found < 0)
-    {
-        found = removeIfCloudOf<basicReactingParcel>(c, removal);
-    }
-    if (found < 0)
-    {
-        found = removeIfCloudOf<basicThermoParcel>(c, removal);
-    }
-    if (found < 0)
-    {
-        found = removeIfCloudOf<basicHeterogeneousReactingParcel>(c, removal);
-    }
-    return found;
+    return thermoParcels::remove(c, removal);
 }
 
 // ************************************************************************* //
