@@ -3,12 +3,15 @@
 parcels (OpenFOAM's vtkCloud files) and the fibers (the function object's VTK
 files, serial or one piece per processor) projected on a vertical plane (front
 view) and on the horizontal plane (top view); fibers coloured by the binder
-they carry, sigma (mass per length), parcels by their droplets' diameter.
+they carry per length (sigma, the
+mass per length, less the bare glass fiber's; grey: none), parcels by their
+droplets' diameter.
 
 Usage: hoodPicture.py CASE OUTPUT.png
 """
 import glob
 import os
+import re
 import sys
 import xml.etree.ElementTree as ET
 
@@ -66,6 +69,16 @@ def fibers(case):
     return polylines, sigmas, len(ids), os.path.basename(pieces[0] if serial else folder)
 
 
+def bare_fiber_sigma(case):
+    """Mass per length of a fiber without binder, pi r^2 rho_F, from the fibers'
+    radius and density in system/controlDict (sigma in the VTK files includes it)."""
+    text = open(os.path.join(case, "system", "controlDict")).read()
+    fibers_block = text[text.index("fibers"):]
+    radius = float(re.search(r"\bradius\s+([0-9.eE+-]+);", fibers_block).group(1))
+    density = float(re.search(r"\bdensity\s+([0-9.eE+-]+);", fibers_block).group(1))
+    return np.pi * radius ** 2 * density
+
+
 def parcels(case):
     path = latest(os.path.join(case, "postProcessing", "parcels", "sprayCloud_*.vtp"))
     if path is None:
@@ -77,8 +90,13 @@ def parcels(case):
 def main():
     case, output = sys.argv[1], sys.argv[2]
     polylines, sigmas, count, name = fibers(case)
+    bare = bare_fiber_sigma(case)
+    sigmas = [np.maximum(s - bare, 0.0) for s in sigmas]
     p, d = parcels(case)
-    sigma_max = max((s.max() for s in sigmas if len(s)), default=0) or 1
+    # colour scale to the 98th percentile of the binder-carrying points: a few
+    # fibers that crossed a nozzle's core would otherwise leave the rest pale
+    carrying = np.concatenate([s[s > 0] for s in sigmas] + [np.zeros(0)])
+    sigma_max = np.percentile(carrying, 98) if len(carrying) else 1.0
     fig, axes = plt.subplots(1, 2, figsize=(10, 6))
     views = [(0, 1, "front view: x (m)", "height y (m)", (0, 1.5)),
              (0, 2, "top view: x (m)", "z (m)", (-0.5, 0.5))]
@@ -90,16 +108,18 @@ def main():
             for a in range(len(line) - 1):
                 segments.append(line[a:a + 2][:, [i, j]])
                 colours.append(0.5 * (s[a] + s[a + 1]))
-        lc = LineCollection(segments, cmap="inferno_r", linewidths=1.5)
+        cmap = matplotlib.colormaps["inferno_r"].copy()
+        cmap.set_under("0.55")  # fibers without binder: grey
+        lc = LineCollection(segments, cmap=cmap, linewidths=1.5)
         lc.set_array(np.array(colours) * 1e9)
-        lc.set_clim(0, sigma_max * 1e9)
+        lc.set_clim(1e-3 * sigma_max * 1e9, sigma_max * 1e9)
         ax.add_collection(lc)
         ax.set_xlim(-0.5, 0.5)
         ax.set_ylim(*ylim)
         ax.set_aspect("equal")
         ax.set_xlabel(xlabel)
         ax.set_ylabel(ylabel)
-    fig.colorbar(lc, ax=axes, shrink=0.6, label="binder on the fibers, sigma (ug/m)")
+    fig.colorbar(lc, ax=axes, shrink=0.6, label="binder on the fibers (ug per m of fiber)", extend="both")
     fig.suptitle("formingHood at %s s: %d fibers, %d binder parcels (blue: diameter up to 120 um)"
                  % (name.split("_")[-1].replace(".vtp", ""), count, len(p)))
     fig.savefig(output, dpi=110)
