@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The binder balance of a formingHood run, from the solver log's last cloud
 report (sprayFoam's sprayCloud: introduced, in the air, evaporated, escaped
-through each patch) and the function object's table (captured in total).
+through the walls and, counted as leaving the "system", through the outlet) and the function object's table (captured in total).
 
 The cloud does not know of the droplets the fibers took (depletion), so its own
 report closes as introduced - escaped - phase change - in system = captured:
@@ -29,6 +29,10 @@ def last_cloud_report(log):
         for patch, part in re.findall(r"Parcel fate: patch \(number, mass\) (\S+)\n"
                                       r"((?:\s+- \w+\s+=\s+\S+, \S+\n)+)", body):
             escaped[patch] = sum(float(m) for m in re.findall(r"- escape\s+=\s+\S+, (\S+)", part))
+        # parcels leaving through a patch that is not a wall (the outlet) are
+        # counted by the cloud as escaped from the "system"
+        system = re.search(r"Parcel fate: system \(number, mass\)\n\s+- escape\s+=\s+\S+, (\S+)", body)
+        escaped["system"] = float(system.group(1)) if system else 0.0
         return {
             "introduced": sum(float(m) for m in introduced),
             "inSystem": float(re.search(r"Current mass in system\s+=\s+(\S+)", body).group(1)),
