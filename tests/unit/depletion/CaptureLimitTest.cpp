@@ -416,7 +416,8 @@ TEST(CaptureLimit, BlocksGivePartsThatAddUpToTheWholeGrids)
         {
             if (blocks[b]->owns(entry.node))
             {
-                EXPECT_NEAR(blockLimits[b].grantedRatio(entry.node), wholeLimit.grantedRatio(entry.node), 1e-12);
+                EXPECT_NEAR(blockLimits[b].grantedRatio(entry.node), wholeLimit.grantedRatio(entry.node),
+                            1e-12);
             }
         }
     }
