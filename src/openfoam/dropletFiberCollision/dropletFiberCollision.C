@@ -782,7 +782,8 @@ Foam::functionObjects::dropletFiberCollision::collide(const scalar dt)
     {
         limitCapture
         (
-            fields, points, massSums, sampleMasses, samplesPerSegment, capture
+            fields, points, massSums, sampleMasses, samplesPerSegment, dt,
+            capture
         );
     }
     return capture;
