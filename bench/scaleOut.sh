@@ -25,7 +25,8 @@
 # judged; compare figures only from the same session.
 #
 # Usage: bench/scaleOut.sh [-nodes "1e5 1e6 4e6"] [-ranks "1 2 4"] [-steps 30]
-#                          [-samplesPerSegment N] [-localised] [-tiny] [-keep DIR]
+#                          [-samplesPerSegment N] [-localised] [-holders RULE]
+#                          [-tiny] [-keep DIR]
 #   -nodes    grid sizes (about; the spacing is chosen to give them)
 #   -ranks    processor counts
 #   -steps    time steps per run (5e-4 s each)
@@ -34,6 +35,7 @@
 #             the spacing shrinks)
 #   -localised the spray and the fibers in the top ~3 cm of the channel only (as
 #             nozzles and spinner streams in a hood; scaleOutCase.py case --localised)
+#   -holders RULE  the fibers' holders (fibers.holders: cells, roundRobin)
 #   -tiny     a check of the script: grid 1e4 nodes, 1 and 2 processors, 8 steps
 #   -keep DIR scratch directory, kept (default: a new mktemp -d directory,
 #             removed at the end)
@@ -51,6 +53,7 @@ ranksList="1 2 4"
 steps=30
 samples=0
 localised=""
+holders=""
 scratch=""
 while [ $# -gt 0 ]; do
     case "$1" in
@@ -59,10 +62,11 @@ while [ $# -gt 0 ]; do
         -steps) steps="$2"; shift ;;
         -samplesPerSegment) samples="$2"; shift ;;
         -localised) localised="--localised" ;;
+        -holders) holders="$2"; shift ;;
         -tiny) nodesList="1e4"; ranksList="1 2"; steps=8 ;;
         -keep) scratch="$2"; shift ;;
         -h | -help)
-            sed -n '2,44p' "$0"
+            sed -n '2,46p' "$0"
             exit 0
             ;;
         *) echo "usage: $0 [-nodes LIST] [-ranks LIST] [-steps N] [-samplesPerSegment N] [-localised] [-tiny] [-keep DIR]" >&2; exit 2 ;;
@@ -85,7 +89,7 @@ if [ -z "$scratch" ]; then
 fi
 mkdir -p "$scratch"
 cores="$(nproc)"
-echo "# scratch $scratch;${localised:+ localised spray and fibers;} $cores cores; load average $(cut -d' ' -f1-3 /proc/loadavg); $steps steps per run"
+echo "# scratch $scratch;${localised:+ localised spray and fibers;}${holders:+ fibers.holders $holders;} $cores cores; load average $(cut -d' ' -f1-3 /proc/loadavg); $steps steps per run"
 
 # One run: case in $1, $2 processors; peak RSS of each rank into rss.<rank>
 runCase() {
@@ -115,7 +119,7 @@ for nodes in $nodesList; do
         rm -rf "$dir"
         cp -r "$root/tutorials/channelSpray" "$dir"
         rm -rf "$dir"/processor* "$dir"/postProcessing "$dir"/log.* "$dir/system/controlDict.short"
-        total="$(python3 "$here/scaleOutCase.py" case "$dir" --nodes "$nodes" --steps "$steps" --ranks "$ranks" --samples-per-segment "$samples" ${localised:+"$localised"})"
+        total="$(python3 "$here/scaleOutCase.py" case "$dir" --nodes "$nodes" --steps "$steps" --ranks "$ranks" --samples-per-segment "$samples" ${localised:+"$localised"} ${holders:+--holders "$holders"})"
         start=$(date +%s)
         if ! runCase "$dir" "$ranks"; then
             echo "scaleOut: the run with $ranks processors and $total nodes failed: see $dir/log.*" >&2

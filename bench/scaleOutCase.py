@@ -2,6 +2,7 @@
 """The 3D scale-out case of bench/scaleOut.sh, and the figures of its runs.
 
   scaleOutCase.py case DIR --nodes N --steps S --ranks P [--localised]
+                     [--holders cells|roundRobin]
       DIR holds a copy of tutorials/channelSpray; it is made 3D in place:
       - mesh 25 x 75 x 10 cells over 5 x 15 x DEPTH cm, the front and back
         faces walls (no empty patch), the spray nozzles and fiber injectors
@@ -21,6 +22,8 @@
         across the depth; they fall ~3 cm in 30 steps). Spray and fibers then
         occupy the top ~3 cm of the 15 cm channel, within the top slab at 4
         processors.
+      --holders: the function object's fibers.holders (default: its own,
+        cells).
       Prints the grid's node count.
 
   scaleOutCase.py estimate [--nodes 250 250 150] [--window 10] [--fibers 5000]
@@ -175,6 +178,9 @@ def make_case(args):
         edit(os.path.join(args.dir, "system", "controlDict"),
              (r"sampling        integrated;",
               f"sampling        integrated;\n            samplesPerSegment {args.samples_per_segment};"))
+    if args.holders:
+        edit(os.path.join(args.dir, "system", "controlDict"),
+             (r"(\n            drag            [^\n]*\n)", f"\\1            holders         {args.holders};\n"))
     set_decomposition(args.dir, args.ranks)
     print(nodes[0] * nodes[1] * nodes[2])
     return 0
@@ -331,6 +337,7 @@ def main():
     c.add_argument("--ranks", type=int, required=True)
     c.add_argument("--samples-per-segment", type=int, default=0)
     c.add_argument("--localised", action="store_true")
+    c.add_argument("--holders", choices=("cells", "roundRobin"))
     r = sub.add_parser("report")
     r.add_argument("dir")
     r.add_argument("--ranks", type=int, required=True)

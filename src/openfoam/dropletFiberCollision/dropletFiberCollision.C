@@ -693,7 +693,7 @@ void Foam::functionObjects::dropletFiberCollision::takeBornFibers
     }
     dropletFiber::fiberOwnership::keepBornHere
     (
-        *boxes_, born, parallelStatistics_
+        *boxes_, born, parallelStatistics_, fiberHolders_
     );
     for (std::size_t k = 0; k < born.size(); ++k)
     {
@@ -917,14 +917,17 @@ void Foam::functionObjects::dropletFiberCollision::takeStartFibers
         // each processor keeps the fibers it holds by the birth rule
         dropletFiber::fiberOwnership::keepBornHere
         (
-            *boxes_, held_, parallelStatistics_
+            *boxes_, held_, parallelStatistics_, fiberHolders_
         );
     }
     else
     {
         // This processor's own fibers: passed on where the decomposition
         // changed since
-        dropletFiber::fiberOwnership::passOn(*boxes_, held_, parallelStatistics_);
+        dropletFiber::fiberOwnership::passOn
+        (
+            *boxes_, held_, parallelStatistics_, fiberHolders_
+        );
     }
 }
 
@@ -1088,6 +1091,15 @@ bool Foam::functionObjects::dropletFiberCollision::read(const dictionary& dict)
     solver_.reset(new ::dropletFiber::FiberSolver(solverSettings_));
     turbulence_ =
         dropletFiber::readFiberTurbulence(dict.subOrEmptyDict("fibers"), mesh_);
+    fiberHolders_ =
+        dropletFiber::fiberOwnership::holderRuleFromName
+        (
+            dropletFiber::getChoice
+            (
+                dict.subOrEmptyDict("fibers"), "holders", "cells",
+                dropletFiber::fiberOwnership::holderRuleNames()
+            )
+        );
 
     if (running)
     {
@@ -1243,7 +1255,10 @@ void Foam::functionObjects::dropletFiberCollision::passFibersOn()
     {
         boxes_->update();
     }
-    dropletFiber::fiberOwnership::passOn(*boxes_, held_, parallelStatistics_);
+    dropletFiber::fiberOwnership::passOn
+    (
+        *boxes_, held_, parallelStatistics_, fiberHolders_
+    );
 }
 
 
