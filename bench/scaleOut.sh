@@ -8,25 +8,34 @@
 # simple, the channel cut along its length). One line per run:
 #
 #   ranks=N nodes=M nodesHeldMax=H peakRssMaxMiB=R bytesSentPerStepMax=B
-#   fibersHeldMax=F depositMsPerStep=T
+#   fibersHeldMax=F depositMsPerStep=T depositImbalance=X fiberImbalance=Y
+#   collisionImbalance=Z couplingCpuMsPerStep=C
 #
 # maxima over processors (and steps): H grid nodes stored, F fibers held, B
 # bytes sent in the function object's exchanges in one step (the function
 # object's postProcessing/dropletFiber/0/parallelStatistics.dat); R peak resident
 # memory of a processor (GNU time); T the table's wallTimeDeposition (master:
 # gather, deposit, parcel copies to the blocks their kernels reach) in ms, mean over the steps after the
-# first 5. Runs with more processors than cores are oversubscribed: on a small
-# machine T then includes the waiting of processes sharing a core. A benchmark:
-# nothing is judged; compare figures only from the same session.
+# first 5. X, Y, Z: max / mean over processors of the deposit's, fiber step's and
+# collision's thread CPU time per step (the work columns of parallelStatistics.dat,
+# summed over the same steps; 1 is even); C the sum of the three stages' maximum
+# thread CPU time per step in ms (scaleOutCase.py report). Runs with more processors
+# than cores are oversubscribed: on a small machine T then includes the waiting of
+# processes sharing a core (the thread CPU times do not). A benchmark: nothing is
+# judged; compare figures only from the same session.
 #
 # Usage: bench/scaleOut.sh [-nodes "1e5 1e6 4e6"] [-ranks "1 2 4"] [-steps 30]
-#                          [-samplesPerSegment N] [-tiny] [-keep DIR]
+#                          [-samplesPerSegment N] [-localised] [-holders RULE]
+#                          [-tiny] [-keep DIR]
 #   -nodes    grid sizes (about; the spacing is chosen to give them)
 #   -ranks    processor counts
 #   -steps    time steps per run (5e-4 s each)
 #   -samplesPerSegment N  collision samples per fiber segment (default: the
 #             tutorial's, one per grid spacing: the corner queries then grow as
 #             the spacing shrinks)
+#   -localised the spray and the fibers in the top ~3 cm of the channel only (as
+#             nozzles and spinner streams in a hood; scaleOutCase.py case --localised)
+#   -holders RULE  the fibers' holders (fibers.holders: cells, roundRobin)
 #   -tiny     a check of the script: grid 1e4 nodes, 1 and 2 processors, 8 steps
 #   -keep DIR scratch directory, kept (default: a new mktemp -d directory,
 #             removed at the end)
@@ -43,6 +52,8 @@ nodesList="1e5 1e6 4e6"
 ranksList="1 2 4"
 steps=30
 samples=0
+localised=""
+holders=""
 scratch=""
 while [ $# -gt 0 ]; do
     case "$1" in
@@ -50,13 +61,15 @@ while [ $# -gt 0 ]; do
         -ranks) ranksList="$2"; shift ;;
         -steps) steps="$2"; shift ;;
         -samplesPerSegment) samples="$2"; shift ;;
+        -localised) localised="--localised" ;;
+        -holders) holders="$2"; shift ;;
         -tiny) nodesList="1e4"; ranksList="1 2"; steps=8 ;;
         -keep) scratch="$2"; shift ;;
         -h | -help)
-            sed -n '2,38p' "$0"
+            sed -n '2,46p' "$0"
             exit 0
             ;;
-        *) echo "usage: $0 [-nodes LIST] [-ranks LIST] [-steps N] [-tiny] [-keep DIR]" >&2; exit 2 ;;
+        *) echo "usage: $0 [-nodes LIST] [-ranks LIST] [-steps N] [-samplesPerSegment N] [-localised] [-tiny] [-keep DIR]" >&2; exit 2 ;;
     esac
     shift
 done
@@ -76,7 +89,7 @@ if [ -z "$scratch" ]; then
 fi
 mkdir -p "$scratch"
 cores="$(nproc)"
-echo "# scratch $scratch; $cores cores; load average $(cut -d' ' -f1-3 /proc/loadavg); $steps steps per run"
+echo "# scratch $scratch;${localised:+ localised spray and fibers;}${holders:+ fibers.holders $holders;} $cores cores; load average $(cut -d' ' -f1-3 /proc/loadavg); $steps steps per run"
 
 # One run: case in $1, $2 processors; peak RSS of each rank into rss.<rank>
 runCase() {
@@ -106,7 +119,7 @@ for nodes in $nodesList; do
         rm -rf "$dir"
         cp -r "$root/tutorials/channelSpray" "$dir"
         rm -rf "$dir"/processor* "$dir"/postProcessing "$dir"/log.* "$dir/system/controlDict.short"
-        total="$(python3 "$here/scaleOutCase.py" case "$dir" --nodes "$nodes" --steps "$steps" --ranks "$ranks" --samples-per-segment "$samples")"
+        total="$(python3 "$here/scaleOutCase.py" case "$dir" --nodes "$nodes" --steps "$steps" --ranks "$ranks" --samples-per-segment "$samples" ${localised:+"$localised"} ${holders:+--holders "$holders"})"
         start=$(date +%s)
         if ! runCase "$dir" "$ranks"; then
             echo "scaleOut: the run with $ranks processors and $total nodes failed: see $dir/log.*" >&2

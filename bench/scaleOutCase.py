@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """The 3D scale-out case of bench/scaleOut.sh, and the figures of its runs.
 
-  scaleOutCase.py case DIR --nodes N --steps S --ranks P
+  scaleOutCase.py case DIR --nodes N --steps S --ranks P [--localised]
+                     [--holders cells|roundRobin]
       DIR holds a copy of tutorials/channelSpray; it is made 3D in place:
       - mesh 25 x 75 x 10 cells over 5 x 15 x DEPTH cm, the front and back
         faces walls (no empty patch), the spray nozzles and fiber injectors
@@ -13,6 +14,16 @@
         restart state, no VTK files: the bench measures the steps);
       - system/decomposeParDict for P subdomains (simple, split along the
         channel's length).
+      --localised: the spray and the fibers near the top only, as nozzles and
+        spinner streams occupy a few processors' subdomains of a hood: the
+        three nozzles 4-10 mm below the top aiming 5 degrees below the
+        horizontal (the droplets reach the far wall within ~1.5 cm of the
+        top), all 12 fiber streams at 3 mm below the top (4 across x 3
+        across the depth; they fall ~3 cm in 30 steps). Spray and fibers then
+        occupy the top ~3 cm of the 15 cm channel, within the top slab at 4
+        processors.
+      --holders: the function object's fibers.holders (default: its own,
+        cells).
       Prints the grid's node count.
 
   scaleOutCase.py estimate [--nodes 250 250 150] [--window 10] [--fibers 5000]
@@ -30,7 +41,13 @@
       mean of the table's wallTimeDeposition (the master's wall time of
       gathering, depositing and summing across processors) over the steps
       after the first K; the other figures are maxima over processors and
-      steps.
+      steps. From the work columns, over the steps after the first K:
+      depositImbalance and fiberImbalance, the sum over steps of the
+      maximum over processors of the stage's thread CPU time divided by the
+      sum of its mean (1 is even); couplingCpuMsPerStep, the mean over steps
+      of the sum of the three stages' maxima (the busiest processor's CPU
+      time of the coupling's computing, an upper bound when different
+      processors are the busiest in different stages).
 """
 
 import argparse
@@ -92,17 +109,19 @@ def make_mesh_3d(case):
          (r"\(0\.049 0\.120 0\.005\)", f"(0.049 0.120 {DEPTH / 2})"))
 
 
-def fiber_injectors():
+def fiber_injectors(localised=False):
     # Streams at three heights: the fibers fall ~3 cm in 30 steps, so those of the
     # lower two heights cross the cuts between the processors' slabs (y = 3.75, 7.5,
-    # 11.25 cm on 4; 7.5 cm on 2) and each slab holds some of them
+    # 11.25 cm on 4; 7.5 cm on 2) and each slab holds some of them. Localised: all
+    # at the top, three across the depth instead
     lines = []
     for i, x in enumerate((0.01, 0.02, 0.03, 0.04)):
         for k, y in enumerate((0.147, 0.10, 0.06)):
+            position = (x, y, 0.5 * DEPTH) if not localised else (x, 0.147, (0.25 + 0.25 * k) * DEPTH)
             lines += [
                 f"                s{i}{k}",
                 "                {",
-                f"                    position    ({x} {y} {0.5 * DEPTH});",
+                "                    position    ({} {} {});".format(*position),
                 f"                    direction   (1 0.3 {0.2 * (i % 2)});",
                 "                    velocity    (0 -2 0);",
                 "                    length      0.008;",
@@ -112,7 +131,7 @@ def fiber_injectors():
     return "\n".join(lines)
 
 
-def set_controls(case, nodes, steps):
+def set_controls(case, nodes, steps, localised=False):
     end_time = steps * DELTA_T
     edit(
         os.path.join(case, "system", "controlDict"),
@@ -123,7 +142,7 @@ def set_controls(case, nodes, steps):
         (r"writeInterval   0\.04;[^\n]*", "writeInterval   1000000;"),
         (r"upper           \(0\.05 0\.15 0\.01\);\s*spacing         1e-3;",
          "upper           (0.05 0.15 {});\n            nodes           ({} {} {});".format(DEPTH, *nodes)),
-        (r"injectors\s*\{.*?\n            \}\n", "injectors\n            {\n" + fiber_injectors() + "\n            }\n"),
+        (r"injectors\s*\{.*?\n            \}\n", "injectors\n            {\n" + fiber_injectors(localised) + "\n            }\n"),
         (r"writeVtk        true;", "writeVtk        false;"),
         (r"writeGridVtk    true;", "writeGridVtk    false;"),
     )
@@ -137,15 +156,31 @@ def set_decomposition(case, ranks):
     )
 
 
+def localise_spray(case):
+    # The nozzles 4, 7 and 10 mm below the top, aiming 5 degrees down
+    edit(os.path.join(case, "constant", "kinematicCloudProperties"),
+         (r"\(0\.049 0\.140 ", "(0.049 0.146 "),
+         (r"\(0\.049 0\.130 ", "(0.049 0.143 "),
+         (r"\(0\.049 0\.120 ", "(0.049 0.140 "),
+         (r"direction       \(-0\.9659 -0\.2588 0\);", "direction       (-0.9962 -0.0872 0);"),
+         (r"direction       \(-0\.8660 -0\.5 0\);", "direction       (-0.9962 -0.0872 0);"),
+         (r"direction       \(-0\.7071 -0\.7071 0\);", "direction       (-0.9962 -0.0872 0);"))
+
+
 def make_case(args):
     nodes = grid_nodes(args.nodes)
     make_mesh_3d(args.dir)
-    set_controls(args.dir, nodes, args.steps)
+    if args.localised:
+        localise_spray(args.dir)
+    set_controls(args.dir, nodes, args.steps, args.localised)
     if args.samples_per_segment > 0:
         # Collision samples fixed per segment instead of one per grid spacing
         edit(os.path.join(args.dir, "system", "controlDict"),
              (r"sampling        integrated;",
               f"sampling        integrated;\n            samplesPerSegment {args.samples_per_segment};"))
+    if args.holders:
+        edit(os.path.join(args.dir, "system", "controlDict"),
+             (r"(\n            drag            [^\n]*\n)", f"\\1            holders         {args.holders};\n"))
     set_decomposition(args.dir, args.ranks)
     print(nodes[0] * nodes[1] * nodes[2])
     return 0
@@ -190,6 +225,7 @@ def report(args):
         rss_kib.append(numbers[-1])
     timed = table[args.skip:] if len(table) > args.skip else table
     deposit_ms = 1e3 * sum(r["wallTimeDeposition"] for r in timed) / len(timed)
+    work = statistics[args.skip:] if len(statistics) > args.skip else statistics
     print(
         f"ranks={args.ranks} nodes={args.nodes}"
         f" nodesHeldMax={max(r['nodesHeldMax'] for r in statistics):.0f}"
@@ -200,8 +236,35 @@ def report(args):
         f" gridQueries={max(r['bytesGridQueriesMax'] for r in statistics):.0f}"
         f" fibers={max(r['bytesFibersMax'] for r in statistics):.0f})"
         f" depositMsPerStep={deposit_ms:.1f}"
+        f"{work_figures(work)}"
     )
     return 0
+
+
+def imbalance(rows, figure):
+    mean = sum(r[figure + "Mean"] for r in rows)
+    return sum(r[figure + "Max"] for r in rows) / mean if mean > 0 else 1.0
+
+
+def work_figures(rows):
+    """The bench line's work part (empty for tables written before the work columns)."""
+    if not rows or "cpuDepositMax" not in rows[0]:
+        return ""
+    stages = ("cpuDeposit", "cpuCollision", "cpuFibers")
+    coupling_ms = 1e3 * sum(sum(r[s + "Max"] for s in stages) for r in rows) / len(rows)
+    per_step = {f: sum(r[f + "Max"] for r in rows) / len(rows) for f in ("parcels", "parcelCopies", "nodeWeights")}
+    return (f" depositImbalance={imbalance(rows, 'cpuDeposit'):.2f}"
+            f" fiberImbalance={imbalance(rows, 'cpuFibers'):.2f}"
+            f" collisionImbalance={imbalance(rows, 'cpuCollision'):.2f}"
+            f" couplingCpuMsPerStep={coupling_ms:.1f}"
+            f" (per step max: cpuDepositMs={1e3 * sum(r['cpuDepositMax'] for r in rows) / len(rows):.1f}"
+            f" cpuCollisionMs={1e3 * sum(r['cpuCollisionMax'] for r in rows) / len(rows):.1f}"
+            f" cpuFibersMs={1e3 * sum(r['cpuFibersMax'] for r in rows) / len(rows):.1f}"
+            f" parcels={per_step['parcels']:.0f} parcelCopies={per_step['parcelCopies']:.0f}"
+            f" nodeWeights={per_step['nodeWeights']:.0f};"
+            f" max/mean parcels={imbalance(rows, 'parcels'):.2f}"
+            f" nodeWeights={imbalance(rows, 'nodeWeights'):.2f}"
+            f" fiberPoints={imbalance(rows, 'fiberPoints'):.2f})")
 
 
 QUANTITIES = 7  # doubles per node and slot (src/core/grid/GridQuantities.hpp)
@@ -273,6 +336,8 @@ def main():
     c.add_argument("--steps", type=int, required=True)
     c.add_argument("--ranks", type=int, required=True)
     c.add_argument("--samples-per-segment", type=int, default=0)
+    c.add_argument("--localised", action="store_true")
+    c.add_argument("--holders", choices=("cells", "roundRobin"))
     r = sub.add_parser("report")
     r.add_argument("dir")
     r.add_argument("--ranks", type=int, required=True)

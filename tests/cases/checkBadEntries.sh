@@ -58,6 +58,7 @@ expectError grid/radiusAverage median "Entry 'radiusAverage' is 'median': allowe
 expectError collision "{ radiusAverage median; }" "Entry 'radiusAverage' is 'median': allowed are"
 expectError fibers/maxSubSteps 0 "Entry 'maxSubSteps' is 0"
 expectError fibers/drag stokes "Entry 'drag' is 'stokes': allowed are"
+expectError fibers/holders cell "Entry 'holders' is 'cell': allowed are"
 expectError collision "{ sampling everywhere; }" "Entry 'sampling' is 'everywhere'"
 expectError collision "{ depletion maybe; }" "Entry 'depletion' is 'maybe': allowed are true or false"
 expectError air "{ rho -1.2; }" "Entry 'rho' is -1.2"

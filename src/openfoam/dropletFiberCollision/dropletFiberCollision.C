@@ -558,10 +558,21 @@ Foam::functionObjects::dropletFiberCollision::depositParcels(const scalar dt)
     {
         grid_->keepTablesNear(fiberNodes());
     }
-    depositLocalParcels(dt);
+    using stage = dropletFiber::parallelStatistics::stage;
+    parallelStatistics_.timed
+    (
+        stage::deposit, [&]() { depositLocalParcels(dt); }
+    );
     blocks_->depositCopies(*grid_, stepParcels_, dt, parallelStatistics_);
     const ::dropletFiber::StepStatistics local = grid_->stepStatistics();
-    grid_->commitStep();
+    const ::dropletFiber::StepStatistics& copies = grid_->copyStatistics();
+    parallelStatistics_.countDeposit
+    (
+        scalar(local.parcels),
+        scalar(copies.parcels),
+        scalar(local.nodesVisited + copies.nodesVisited)
+    );
+    parallelStatistics_.timed(stage::deposit, [&]() { grid_->commitStep(); });
     const ::dropletFiber::StepStatistics stats = summedOverProcessors(local);
     countCappedParcels(label(stats.parcelsCapped));
     return stats;
@@ -682,7 +693,7 @@ void Foam::functionObjects::dropletFiberCollision::takeBornFibers
     }
     dropletFiber::fiberOwnership::keepBornHere
     (
-        *boxes_, born, parallelStatistics_
+        *boxes_, born, parallelStatistics_, fiberHolders_
     );
     for (std::size_t k = 0; k < born.size(); ++k)
     {
@@ -724,27 +735,18 @@ Foam::functionObjects::dropletFiberCollision::collisionSamplePoints
 }
 
 
-::dropletFiber::CaptureSources
-Foam::functionObjects::dropletFiberCollision::collide(const scalar dt)
+Foam::label Foam::functionObjects::dropletFiberCollision::collisionMasses
+(
+    const scalar dt,
+    const std::vector<::dropletFiber::DropletFieldValue>& fields,
+    const std::vector<int>& samplesPerSegment,
+    double* sampleMasses,
+    ::dropletFiber::CaptureSources& capture
+) const
 {
-    // The sample points of the segments of the fibers held here, then their
-    // field values from the grid's blocks (one exchange), then the masses:
-    // the arithmetic of collisionMass
-    std::vector<int> samplesPerSegment;
-    const std::vector<Eigen::Vector3d> points =
-        collisionSamplePoints(samplesPerSegment);
-    // Depletion: each sample's interpolated mass sum and mass too
-    std::vector<double> massSums;
-    std::vector<double> sampleMasses(depletion_ ? points.size() : 0);
-    const std::vector<::dropletFiber::DropletFieldValue> fields =
-        blocks_->sample
-        (
-            *grid_, points, parallelStatistics_,
-            depletion_ ? &massSums : nullptr
-        );
-
     const std::vector<::dropletFiber::Fiber>& fibers = held_.fibers;
-    ::dropletFiber::CaptureSources capture(fibers.size());
+    capture.clear();
+    capture.resize(fibers.size());
     label samplesOutside = 0;
     std::size_t next = 0;
     std::size_t segment = 0;
@@ -769,7 +771,7 @@ Foam::functionObjects::dropletFiberCollision::collide(const scalar dt)
                     segmentVelocity,
                     dt,
                     collision_,
-                    depletion_ ? sampleMasses.data() + next : nullptr
+                    sampleMasses ? sampleMasses + next : nullptr
                 );
             next += std::size_t(samples);
             capture[f][j].mass = c.mass;
@@ -777,6 +779,49 @@ Foam::functionObjects::dropletFiberCollision::collide(const scalar dt)
             samplesOutside += c.samplesOutside;
         }
     }
+    return samplesOutside;
+}
+
+
+::dropletFiber::CaptureSources
+Foam::functionObjects::dropletFiberCollision::collide(const scalar dt)
+{
+    // The sample points of the segments of the fibers held here, then their
+    // field values from the grid's blocks (one exchange), then the masses:
+    // the arithmetic of collisionMass
+    using stage = dropletFiber::parallelStatistics::stage;
+    std::vector<int> samplesPerSegment;
+    std::vector<Eigen::Vector3d> points;
+    parallelStatistics_.timed
+    (
+        stage::collision,
+        [&]() { points = collisionSamplePoints(samplesPerSegment); }
+    );
+    parallelStatistics_.countCollisionSamples(points.size());
+    // Depletion: each sample's interpolated mass sum and mass too
+    std::vector<double> massSums;
+    std::vector<double> sampleMasses(depletion_ ? points.size() : 0);
+    const std::vector<::dropletFiber::DropletFieldValue> fields =
+        blocks_->sample
+        (
+            *grid_, points, parallelStatistics_,
+            depletion_ ? &massSums : nullptr
+        );
+
+    ::dropletFiber::CaptureSources capture;
+    label samplesOutside = 0;
+    parallelStatistics_.timed
+    (
+        stage::collision,
+        [&]()
+        {
+            samplesOutside = collisionMasses
+            (
+                dt, fields, samplesPerSegment,
+                depletion_ ? sampleMasses.data() : nullptr, capture
+            );
+        }
+    );
     warnSamplesOutside(samplesOutside);
     if (depletion_)
     {
@@ -873,14 +918,17 @@ void Foam::functionObjects::dropletFiberCollision::takeStartFibers
         // each processor keeps the fibers it holds by the birth rule
         dropletFiber::fiberOwnership::keepBornHere
         (
-            *boxes_, held_, parallelStatistics_
+            *boxes_, held_, parallelStatistics_, fiberHolders_
         );
     }
     else
     {
         // This processor's own fibers: passed on where the decomposition
         // changed since
-        dropletFiber::fiberOwnership::passOn(*boxes_, held_, parallelStatistics_);
+        dropletFiber::fiberOwnership::passOn
+        (
+            *boxes_, held_, parallelStatistics_, fiberHolders_
+        );
     }
 }
 
@@ -1044,6 +1092,15 @@ bool Foam::functionObjects::dropletFiberCollision::read(const dictionary& dict)
     solver_.reset(new ::dropletFiber::FiberSolver(solverSettings_));
     turbulence_ =
         dropletFiber::readFiberTurbulence(dict.subOrEmptyDict("fibers"), mesh_);
+    fiberHolders_ =
+        dropletFiber::fiberOwnership::holderRuleFromName
+        (
+            dropletFiber::getChoice
+            (
+                dict.subOrEmptyDict("fibers"), "holders", "cells",
+                dropletFiber::fiberOwnership::holderRuleNames()
+            )
+        );
 
     if (running)
     {
@@ -1199,7 +1256,10 @@ void Foam::functionObjects::dropletFiberCollision::passFibersOn()
     {
         boxes_->update();
     }
-    dropletFiber::fiberOwnership::passOn(*boxes_, held_, parallelStatistics_);
+    dropletFiber::fiberOwnership::passOn
+    (
+        *boxes_, held_, parallelStatistics_, fiberHolders_
+    );
 }
 
 
@@ -1215,6 +1275,10 @@ void Foam::functionObjects::dropletFiberCollision::reportAndWriteState
         coreCall("writing the restart state", [this]() { writeState(); });
         reportConservation();
         reportBinderBalance();
+        parallelStatistics_.reportBalance
+        (
+            Info, type() + " " + name(), time_.timeName()
+        );
         depositReport_->reportAtWrite(time_.timeName());
     }
 }

@@ -194,14 +194,27 @@ Foam::functionObjects::dropletFiberCollision::advanceFibers
     {
         advanceTurbulence(dt, turbulence);
     }
-    else if (!turbulent)
+    else
     {
         // Switched to none during the run or restarted with none from a
         // turbulent state: the mean air only, as without turbulence
         ::dropletFiber::clearTurbulentVelocities(held_.fibers);
     }
+    // The step's own computing timed (the reductions after it are not)
+    using stage = dropletFiber::parallelStatistics::stage;
     ::dropletFiber::StepReport report;
-    const std::string failure = stepFibers(dt, air, capture, report);
+    std::string failure;
+    parallelStatistics_.timed
+    (
+        stage::fibers,
+        [&]() { failure = stepFibers(dt, air, capture, report); }
+    );
+    std::size_t points = 0;
+    for (const ::dropletFiber::Fiber& fiber : held_.fibers)
+    {
+        points += std::size_t(fiber.pointCount());
+    }
+    parallelStatistics_.countFiberPoints(points);
 
     // A fiber that cannot be advanced even at the smallest sub-step stops
     // the run with the reason (the results written so far stay)

@@ -166,36 +166,68 @@ void Foam::functionObjects::dropletFiberCollision::writeParallelStatistics()
     (
         grid_->storageBox().nodeCount(), held_.size()
     );
-    const dropletFiber::parallelStatistics::figures maxima =
-        parallelStatistics_.maxOverProcessors();
-    // A serial run holds every node and fiber and sends nothing: no table
-    if (!Pstream::parRun() || !writeToFile())
+    const dropletFiber::parallelStatistics::spread all =
+        parallelStatistics_.overProcessors();
+    // Also in a serial run (one processor: sends nothing, max = mean), the
+    // reference of the work per processor
+    if (!writeToFile())
     {
         return;
     }
     if (!parallelStatisticsFile_.valid())
     {
         parallelStatisticsFile_ = createFile("parallelStatistics");
-        OFstream& os = parallelStatisticsFile_();
-        writeHeader(os, "Per time step, maxima over processors");
-        writeCommented(os, "Time");
-        writeTabbed(os, "nodesHeldMax");
-        writeTabbed(os, "fibersHeldMax");
-        writeTabbed(os, "bytesSentMax");
-        writeTabbed(os, "bytesParcelsMax");
-        writeTabbed(os, "bytesGridQueriesMax");
-        writeTabbed(os, "bytesFibersMax");
-        os  << endl;
+        writeParallelStatisticsHeader(parallelStatisticsFile_());
     }
     OFstream& os = parallelStatisticsFile_();
+    const dropletFiber::parallelStatistics::figures& maxima = all.maxima;
     writeCurrentTime(os);
     os  << tab << maxima.nodesHeld
         << tab << maxima.fibersHeld
         << tab << maxima.bytesSent
         << tab << maxima.bytesParcels
         << tab << maxima.bytesGridQueries
-        << tab << maxima.bytesFibers
-        << endl;
+        << tab << maxima.bytesFibers;
+    for (label i = 0; i < dropletFiber::parallelStatistics::work::size; ++i)
+    {
+        os  << tab << all.maxWork[i] << tab << all.meanWork[i];
+    }
+    os  << endl;
+}
+
+
+void Foam::functionObjects::dropletFiberCollision::writeParallelStatisticsHeader
+(
+    OFstream& os
+)
+{
+    writeHeader
+    (
+        os,
+        "Per time step, maxima over processors; the work (parcels to"
+        " cpuFibers, thread CPU time in s) as maximum and mean"
+    );
+    writeCommented(os, "Time");
+    writeTabbed(os, "nodesHeldMax");
+    writeTabbed(os, "fibersHeldMax");
+    writeTabbed(os, "bytesSentMax");
+    writeTabbed(os, "bytesParcelsMax");
+    writeTabbed(os, "bytesGridQueriesMax");
+    writeTabbed(os, "bytesFibersMax");
+    // In the order of parallelStatistics::work::operator[]
+    for
+    (
+        const char* figure :
+        {
+            "parcels", "parcelCopies", "nodeWeights", "collisionSamples",
+            "fiberPoints", "cpuDeposit", "cpuCollision", "cpuFibers"
+        }
+    )
+    {
+        writeTabbed(os, word(figure) + "Max");
+        writeTabbed(os, word(figure) + "Mean");
+    }
+    os  << endl;
 }
 
 

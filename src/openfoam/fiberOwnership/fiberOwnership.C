@@ -295,6 +295,35 @@ void sortById(Foam::dropletFiber::heldFibers& held)
     held = std::move(sorted);
 }
 
+
+//- passOn by holderRule::roundRobin: each fiber to its birth number's
+//  processor (collective); the fibers sent
+label passOnByBirth
+(
+    Foam::dropletFiber::heldFibers& held,
+    Foam::dropletFiber::parallelStatistics& statistics
+)
+{
+    labelList holder(label(held.size()), -1);
+    label sent = 0;
+    forAll(holder, k)
+    {
+        const label proci = held.id[k] % Pstream::nProcs();
+        if (proci != Pstream::myProcNo())
+        {
+            holder[k] = proci;
+            ++sent;
+        }
+    }
+    if (!returnReduce(sent > 0, orOp<bool>()))
+    {
+        return 0;
+    }
+    sendFibers(holder, held, statistics);
+    sortById(held);
+    return sent;
+}
+
 } // End anonymous namespace
 
 
@@ -315,15 +344,42 @@ void Foam::dropletFiber::heldFibers::append
 
 // * * * * * * * * * * * * * * * * Functions * * * * * * * * * * * * * * * * //
 
+const Foam::wordList& Foam::dropletFiber::fiberOwnership::holderRuleNames()
+{
+    static const wordList names{"cells", "roundRobin"};
+    return names;
+}
+
+
+Foam::dropletFiber::fiberOwnership::holderRule
+Foam::dropletFiber::fiberOwnership::holderRuleFromName(const word& name)
+{
+    // The entry is checked against holderRuleNames() when read
+    return name == "roundRobin" ? holderRule::roundRobin : holderRule::cells;
+}
+
+
 void Foam::dropletFiber::fiberOwnership::keepBornHere
 (
     const processorBoxes& boxes,
     heldFibers& held,
-    parallelStatistics& statistics
+    parallelStatistics& statistics,
+    const holderRule rule
 )
 {
     if (!Pstream::parRun() || held.size() == 0)
     {
+        return;
+    }
+    if (rule == holderRule::roundRobin)
+    {
+        held.keepIf
+        (
+            [&held](std::size_t k)
+            {
+                return held.id[k] % Pstream::nProcs() == Pstream::myProcNo();
+            }
+        );
         return;
     }
     List<point> first(label(held.size()));
@@ -350,12 +406,17 @@ Foam::label Foam::dropletFiber::fiberOwnership::passOn
 (
     const processorBoxes& boxes,
     heldFibers& held,
-    parallelStatistics& statistics
+    parallelStatistics& statistics,
+    const holderRule rule
 )
 {
     if (!Pstream::parRun())
     {
         return 0;
+    }
+    if (rule == holderRule::roundRobin)
+    {
+        return passOnByBirth(held, statistics);
     }
     List<DynamicList<label>> fiberOf(Pstream::nProcs());
     List<DynamicList<point>> pointOf(Pstream::nProcs());

@@ -233,6 +233,47 @@ void Foam::dropletFiber::gridBlocks::depositCopies
         outgoing_[proci].clear();
         sentCopies_[proci].clear();
     }
+    // The computing timed, the exchange not (parallelStatistics)
+    using stage = parallelStatistics::stage;
+    statistics.timed(stage::deposit, [&]() { packCopies(grid, parcels, dt); });
+    const List<List<scalar>> received =
+        exchangeLists(statistics, parallelStatistics::traffic::parcels);
+    // In processor order: the same sums on every run. Kept for depletion,
+    // whose removal needs these copies' weights here
+    copies_.clear();
+    copiesFrom_.assign(received.size(), 0);
+    statistics.timed
+    (
+        stage::deposit,
+        [&]()
+        {
+            forAll(received, proci)
+            {
+                const List<scalar>& in = received[proci];
+                for
+                (
+                    label i = 0;
+                    i + parcelValues <= in.size();
+                    i += parcelValues
+                )
+                {
+                    copies_.push_back(readParcel(in.cdata() + i));
+                    grid.depositCopy(copies_.back(), dt);
+                    ++copiesFrom_[proci];
+                }
+            }
+        }
+    );
+}
+
+
+void Foam::dropletFiber::gridBlocks::packCopies
+(
+    const ::dropletFiber::DensityGrid& grid,
+    const std::vector<::dropletFiber::Parcel>& parcels,
+    const double dt
+)
+{
     for (std::size_t p = 0; p < parcels.size(); ++p)
     {
         const ::dropletFiber::Parcel& parcel = parcels[p];
@@ -246,22 +287,6 @@ void Foam::dropletFiber::gridBlocks::depositCopies
         {
             appendParcel(outgoing_[proci], parcel);
             sentCopies_[proci].push_back(p);
-        }
-    }
-    const List<List<scalar>> received =
-        exchangeLists(statistics, parallelStatistics::traffic::parcels);
-    // In processor order: the same sums on every run. Kept for depletion,
-    // whose removal needs these copies' weights here
-    copies_.clear();
-    copiesFrom_.assign(received.size(), 0);
-    forAll(received, proci)
-    {
-        const List<scalar>& in = received[proci];
-        for (label i = 0; i + parcelValues <= in.size(); i += parcelValues)
-        {
-            copies_.push_back(readParcel(in.cdata() + i));
-            grid.depositCopy(copies_.back(), dt);
-            ++copiesFrom_[proci];
         }
     }
 }

@@ -7,6 +7,8 @@
 #include "List.H"
 #include "ops.H"
 
+#include <cmath>
+
 // * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
 
 namespace
@@ -29,8 +31,32 @@ const Foam::List<Foam::UPstream::commsStruct>& allComms()
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+Foam::scalar& Foam::dropletFiber::parallelStatistics::work::operator[]
+(
+    const label i
+)
+{
+    scalar* const figure[size] =
+    {
+        &parcels, &parcelCopies, &nodeWeights, &collisionSamples,
+        &fiberPoints, &cpuDeposit, &cpuCollision, &cpuFibers
+    };
+    return *figure[i];
+}
+
+
+Foam::scalar Foam::dropletFiber::parallelStatistics::work::operator[]
+(
+    const label i
+) const
+{
+    return const_cast<work&>(*this)[i];
+}
+
+
 void Foam::dropletFiber::parallelStatistics::startStep()
 {
+    work_ = work();
     step_.bytesSent = 0;
     step_.bytesParcels = 0;
     step_.bytesGridQueries = 0;
@@ -90,27 +116,129 @@ void Foam::dropletFiber::parallelStatistics::countSent
 }
 
 
-Foam::dropletFiber::parallelStatistics::figures
-Foam::dropletFiber::parallelStatistics::maxOverProcessors() const
+void Foam::dropletFiber::parallelStatistics::countDeposit
+(
+    const scalar parcels,
+    const scalar parcelCopies,
+    const scalar nodeWeights
+)
 {
-    // One gather to the master, which writes them (counts are exact in a
-    // double)
-    List<scalar> values(6);
-    values[0] = step_.nodesHeld;
-    values[1] = step_.fibersHeld;
-    values[2] = step_.bytesSent;
-    values[3] = step_.bytesParcels;
-    values[4] = step_.bytesGridQueries;
-    values[5] = step_.bytesFibers;
-    Pstream::listCombineGather(values, maxEqOp<scalar>());
-    figures maxima;
-    maxima.nodesHeld = values[0];
-    maxima.fibersHeld = values[1];
-    maxima.bytesSent = values[2];
-    maxima.bytesParcels = values[3];
-    maxima.bytesGridQueries = values[4];
-    maxima.bytesFibers = values[5];
-    return maxima;
+    work_.parcels += parcels;
+    work_.parcelCopies += parcelCopies;
+    work_.nodeWeights += nodeWeights;
+}
+
+
+void Foam::dropletFiber::parallelStatistics::countCollisionSamples
+(
+    const std::size_t samples
+)
+{
+    work_.collisionSamples += scalar(samples);
+}
+
+
+void Foam::dropletFiber::parallelStatistics::countFiberPoints
+(
+    const std::size_t points
+)
+{
+    work_.fiberPoints += scalar(points);
+}
+
+
+void Foam::dropletFiber::parallelStatistics::addCpuTime
+(
+    const stage s,
+    const scalar seconds
+)
+{
+    switch (s)
+    {
+        case stage::deposit:
+            work_.cpuDeposit += seconds;
+            break;
+        case stage::collision:
+            work_.cpuCollision += seconds;
+            break;
+        case stage::fibers:
+            work_.cpuFibers += seconds;
+            break;
+    }
+}
+
+
+Foam::dropletFiber::parallelStatistics::spread
+Foam::dropletFiber::parallelStatistics::overProcessors()
+{
+    // Two gathers to the master, which writes them (counts are exact in a
+    // double): the maxima of everything, the sums of the work
+    const label nHeld = 6;
+    List<scalar> maxima(nHeld + work::size);
+    List<scalar> sums(work::size);
+    maxima[0] = step_.nodesHeld;
+    maxima[1] = step_.fibersHeld;
+    maxima[2] = step_.bytesSent;
+    maxima[3] = step_.bytesParcels;
+    maxima[4] = step_.bytesGridQueries;
+    maxima[5] = step_.bytesFibers;
+    for (label i = 0; i < work::size; ++i)
+    {
+        maxima[nHeld + i] = work_[i];
+        sums[i] = work_[i];
+    }
+    Pstream::listCombineGather(maxima, maxEqOp<scalar>());
+    Pstream::listCombineGather(sums, plusEqOp<scalar>());
+    spread all;
+    all.maxima.nodesHeld = maxima[0];
+    all.maxima.fibersHeld = maxima[1];
+    all.maxima.bytesSent = maxima[2];
+    all.maxima.bytesParcels = maxima[3];
+    all.maxima.bytesGridQueries = maxima[4];
+    all.maxima.bytesFibers = maxima[5];
+    for (label i = 0; i < work::size; ++i)
+    {
+        all.maxWork[i] = maxima[nHeld + i];
+        all.meanWork[i] = sums[i]/Pstream::nProcs();
+        periodMax_[i] += all.maxWork[i];
+        periodMean_[i] += all.meanWork[i];
+    }
+    ++periodSteps_;
+    return all;
+}
+
+
+void Foam::dropletFiber::parallelStatistics::reportBalance
+(
+    Ostream& os,
+    const std::string& who,
+    const word& timeName
+)
+{
+    // max / mean of the sums over the period: the steps weighted by their
+    // work, a processor idle in every step counted as such
+    auto ratio = [this](const label i)
+    {
+        // Two decimals: the spread of a timing, not a result
+        const scalar r =
+            periodMean_[i] > 0 ? periodMax_[i]/periodMean_[i] : 1.0;
+        return std::round(100*r)/100;
+    };
+    if (Pstream::parRun() && periodSteps_ > 0)
+    {
+        os  << who.c_str() << " work balance over " << Pstream::nProcs()
+            << " processors, " << periodSteps_ << " steps to time "
+            << timeName << " (max / mean over processors; 1 is even):" << nl
+            << "    thread CPU time: deposit " << ratio(5)
+            << ", collision " << ratio(6) << ", fiber step " << ratio(7) << nl
+            << "    work: parcels " << ratio(0) << ", parcel copies "
+            << ratio(1) << ", node weights " << ratio(2)
+            << ", collision samples " << ratio(3) << ", fiber points "
+            << ratio(4) << nl;
+    }
+    periodMax_ = work();
+    periodMean_ = work();
+    periodSteps_ = 0;
 }
 
 // ************************************************************************* //

@@ -31,7 +31,9 @@ const wordList fibersKeys
     "gravity", "drag", "normalDragCoefficient", "tangentialDragCoefficient",
     "maxSubSteps", "theta", "points", "injectors", "fixed",
     // read by readFiberTurbulence (turbulenceSettings.H)
-    "turbulence"
+    "turbulence",
+    // read by the function object (fiberOwnership::holderRule)
+    "holders"
 };
 
 //- The entries of an injector besides the material: read by readFiberInjectors
