@@ -1,0 +1,157 @@
+"""Everything the report says about one case, gathered from its outputs: the tables,
+the solver's log and the VTK files. Missing parts are noted, not guessed."""
+import os
+
+import numpy as np
+
+import caseOutputs
+import tableColumns
+import vtkFiles
+from caseOutputs import MissingOutput
+from solverLog import SolverLog
+
+
+class CaseReport:
+    def __init__(self, case, name=None):
+        self.case = case
+        self.notes = []
+        if not os.path.isdir(case):
+            raise MissingOutput("no case folder %s" % case)
+        self.name = self._function_object(name)
+        self.table = caseOutputs.read_table(case, self.name, "dropletFiber.dat")
+        self.notes += self.table.notes
+        if not self.table.rows:
+            raise MissingOutput("%s has no rows: the run stopped before the function object's "
+                                "first step" % self._table_path())
+        self.siblings = {}
+        for sibling in ("fiberDispersion.dat", "parallelStatistics.dat", "binderDistribution.dat"):
+            table = caseOutputs.read_table(case, self.name, sibling)
+            if table is not None and table.rows:
+                self.siblings[sibling] = table
+                self.notes += table.notes
+        self.processors = caseOutputs.processor_count(case)
+        log_path = caseOutputs.solver_log(case)
+        self.log = SolverLog(log_path) if log_path else None
+        if self.log is None:
+            self.notes.append("no solver log (log.<application>) in %s: sprayed, airborne, left and "
+                              "evaporated binder come from the clouds' reports there" % case)
+        self._read_vtk()
+
+    def _function_object(self, name):
+        names = caseOutputs.function_object_names(self.case)
+        if name is not None:
+            if name not in names:
+                raise MissingOutput(
+                    "no postProcessing/%s/<startTime>/dropletFiber.dat in %s (function objects with a "
+                    "table there: %s)" % (name, self.case, ", ".join(names) or "none"))
+            return name
+        if len(names) == 1:
+            return names[0]
+        if len(names) > 1:
+            raise MissingOutput("several dropletFiber function objects in %s (%s): choose one with -name"
+                                % (self.case, ", ".join(names)))
+        log = caseOutputs.solver_log(self.case)
+        raise MissingOutput(
+            "no postProcessing/<name>/<startTime>/dropletFiber.dat in %s: the dropletFiberCollision "
+            "function object did not run there (yet).\n    Look in %s for 'Unknown function type "
+            "dropletFiberCollision' or 'Could not load \"libdropletFiber.so\"': the library is then "
+            "neither in $FOAM_USER_LIBBIN nor on LD_LIBRARY_PATH of the environment the case ran in."
+            % (self.case, log or "the solver's log"))
+
+    def _table_path(self):
+        return os.path.join(self.case, "postProcessing", self.name, "<startTime>", "dropletFiber.dat")
+
+    def _read_vtk(self):
+        self.fibers = self.grid = None
+        self.fiber_history = []
+        for folder in reversed(caseOutputs.start_folders(self.case, self.name)):
+            if self.fibers is None:
+                self.fibers = vtkFiles.last_readable(folder, "fibers.vtp", vtkFiles.Fibers, self.notes)
+            if self.grid is None:
+                self.grid = vtkFiles.last_readable(folder, "grid.vti", vtkFiles.Grid, self.notes)
+        if self.fibers is None:
+            self.notes.append("no readable fibers_<time>.vtp/.pvtp: no fiber view, no sigma distribution")
+        if self.grid is None:
+            self.notes.append("no readable grid_<time>.vti/.pvti: the fiber view has no droplet background")
+
+    def fiber_centres(self):
+        """{fiberId: [(time, centre)]} over every readable fibers file (for the dispersion)."""
+        centres = {}
+        for folder in caseOutputs.start_folders(self.case, self.name):
+            for time, path in vtkFiles.series(folder, "fibers.vtp"):
+                try:
+                    fibers = vtkFiles.Fibers(time, path)
+                except Exception:  # noqa: BLE001 a damaged file: noted for the last one only
+                    continue
+                ids = fibers.point_data.get("fiberId")
+                if ids is None:
+                    return {}
+                for f in np.unique(ids):
+                    centres.setdefault(int(f), []).append((time, fibers.points[ids == f].mean(axis=0)))
+        return centres
+
+    # --- the binder balance -------------------------------------------------------
+    def balance(self):
+        """Sprayed, airborne, left, evaporated, other transfers and captured (kg),
+        at the clouds' last reports, with the captured total of the table row the
+        reports follow; None without a log or cloud report."""
+        if self.log is None or not self.log.clouds:
+            return None
+        b = {"sprayed": 0.0, "airborne": 0.0, "left": 0.0, "evaporated": None, "otherTransfer": 0.0,
+             "clouds": sorted(self.log.clouds), "time": None, "capturedTime": None}
+        for report in self.log.clouds.values():
+            b["sprayed"] += report["introduced"]
+            b["airborne"] += report["inSystem"]
+            b["left"] += report["left"]
+            b["otherTransfer"] += report["otherTransfer"]
+            if report["phaseChange"] is not None:
+                b["evaporated"] = (b["evaporated"] or 0.0) + report["phaseChange"]
+            b["time"] = report["time"] if b["time"] is None else max(b["time"], report["time"])
+            paired = report["functionObjectTimes"].get(self.name)
+            if paired is not None:
+                b["capturedTime"] = paired if b["capturedTime"] is None else min(b["capturedTime"], paired)
+        b["captured"] = self.captured_at(b["capturedTime"])
+        b["residual"] = b["sprayed"] - (b["airborne"] + b["left"] + (b["evaporated"] or 0.0)
+                                        + b["otherTransfer"] + b["captured"])
+        return b
+
+    def captured_at(self, time):
+        """capturedTotal of the table row at time (0 before the first row)."""
+        if time is None:
+            return 0.0
+        rows = [r for r in self.table.rows if r["Time"] <= time * (1 + 1e-12)]
+        return rows[-1]["capturedTotal"] if rows else 0.0
+
+    def depletion(self):
+        return self.table.has("removedStep")
+
+    def species(self):
+        """Per liquid species from the table: {'captured': {...}, 'evaporated': {...}}."""
+        return {"captured": {k: v for k, v in tableColumns.species_totals(self.table, tableColumns.CAPTURED).items() if k},
+                "evaporated": tableColumns.species_totals(self.table, tableColumns.EVAPORATED)}
+
+    # --- the run's times --------------------------------------------------------------
+    def wall_time_share(self):
+        """(function object's wall time, the run's time, which time) over the rows of
+        the log's run; None without log times or wall-time columns."""
+        columns = tableColumns.wall_time_columns(self.table)
+        if not columns or self.log is None or self.log.execution_time is None or not self.log.times:
+            return None
+        first = self.log.times[0] * (1 - 1e-12)
+        rows = [r for r in self.table.rows if r["Time"] >= first]
+        used = {c: sum(r[c] for r in rows) for c in columns}
+        if self.log.clock_time >= 20:
+            return used, self.log.clock_time, "ClockTime"
+        return used, self.log.execution_time, "ExecutionTime"
+
+    def case_name(self):
+        return os.path.basename(os.path.abspath(self.case))
+
+    def planar(self):
+        """A 2D case: one grid layer, or (without a grid) fibers in one z plane."""
+        if self.grid is not None:
+            return self.grid.shape[0] == 1
+        if self.fibers is not None and len(self.fibers.points):
+            z = self.fibers.points[:, 2]
+            return float(z.max() - z.min()) == 0.0
+        return True
