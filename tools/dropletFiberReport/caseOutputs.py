@@ -60,6 +60,19 @@ def processor_count(case):
     return len(glob.glob(os.path.join(case, "processor[0-9]*")))
 
 
+def time_folders(folder):
+    """The time folders' names in a case or processor folder (0 and constant aside)."""
+    if not os.path.isdir(folder):
+        return set()
+    return {d for d in os.listdir(folder) if (t := _number(d)) is not None and t != 0
+            and os.path.isdir(os.path.join(folder, d))}
+
+
+def reconstructed(case):
+    """Whether every time of processor0 is also in the case folder."""
+    return time_folders(os.path.join(case, "processor0")) <= time_folders(case)
+
+
 class Table:
     """A postProcessing table: names from the last comment line (tab separated),
     rows as dicts by name. A last row shorter than the header (a run stopped while
@@ -115,3 +128,14 @@ def read_table(case, name, file_name):
     if not names:
         return None
     return Table(names, rows, notes)
+
+
+def patch_types(case):
+    """{patch: type} of the mesh (constant/polyMesh/boundary, or processor0's in a
+    decomposed case); {} when unreadable."""
+    for folder in (case, os.path.join(case, "processor0")):
+        path = os.path.join(folder, "constant", "polyMesh", "boundary")
+        if os.path.isfile(path):
+            text = open(path, errors="replace").read()
+            return dict(re.findall(r"(\w+)\s*\{[^{}]*?\btype\s+(\w+)\s*;", text))
+    return {}

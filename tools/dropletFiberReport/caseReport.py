@@ -102,7 +102,7 @@ class CaseReport:
         for report in self.log.clouds.values():
             b["sprayed"] += report["introduced"]
             b["airborne"] += report["inSystem"]
-            b["left"] += report["left"]
+            b["left"] += self._left(report)
             b["otherTransfer"] += report["otherTransfer"]
             if report["phaseChange"] is not None:
                 b["evaporated"] = (b["evaporated"] or 0.0) + report["phaseChange"]
@@ -114,6 +114,19 @@ class CaseReport:
         b["residual"] = b["sprayed"] - (b["airborne"] + b["left"] + (b["evaporated"] or 0.0)
                                         + b["otherTransfer"] + b["captured"])
         return b
+
+    def _left(self, report):
+        """The mass of the parcels that left the domain: those counted by the cloud's
+        system line (any non-wall patch), and those a wall's interaction removed
+        (escape on a wall patch). A patch of unknown type counts as a wall."""
+        types = caseOutputs.patch_types(self.case)
+        unknown = [p for p in report["escapedPatches"] if p not in types]
+        if unknown and report["escapedPatches"] and not getattr(self, "_unknown_noted", False):
+            self._unknown_noted = True
+            self.notes.append("patch types of %s not read from constant/polyMesh/boundary: their "
+                              "escaped parcels counted as removed at walls" % ", ".join(unknown))
+        walls = sum(m for p, m in report["escapedPatches"].items() if types.get(p, "wall") == "wall")
+        return report["escapedSystem"] + walls
 
     def captured_at(self, time):
         """capturedTotal of the table row at time (0 before the first row)."""

@@ -135,23 +135,23 @@ def _sigma_distribution(ax, r):
 
 def _dispersion(ax, r, points):
     import fiberDispersion
-    ax.set_title("Fibers' dispersion across gravity")
+    ax.set_title("Fibers' dispersion")
     if not points:
         ax.text(0.5, 0.5, "every fiber written at one time only", ha="center", transform=ax.transAxes)
         return
     ax.scatter([a for _, a in points], [f for f, _ in points], s=8)
     ax.axvline(0.0, color="k", lw=0.8, ls="--")
     ax.invert_yaxis()
-    ax.set_xlabel("fiber centre across gravity, from its first write [m]")
-    ax.set_ylabel("distance fallen since [m]")
+    ax.set_xlabel("fiber centre across the fibers' mean drift, from its first write [m]")
+    ax.set_ylabel("distance travelled along the drift since [m]")
     table = r.siblings.get("fiberDispersion.dat")
     rms = fiberDispersion.rms_beyond(points)
-    title = "Fibers' dispersion across gravity"
+    title = "Fibers' dispersion across their drift"
     if table is not None and all(table.has(c) for c in ("uTurbRmsX", "uTurbRmsY", "uTurbRmsZ")):
         last = table.last()
         title += "\nrms u' %.3g m/s" % math.sqrt(sum(last[c] ** 2 for c in ("uTurbRmsX", "uTurbRmsY", "uTurbRmsZ")) / 3)
     if rms is not None:
-        title += ("," if "\n" in title else "\n") + " rms %.3g m below %.3g m of fall" % (rms[0], rms[2])
+        title += ("," if "\n" in title else "\n") + " rms %.3g m beyond %.3g m of travel" % (rms[0], rms[2])
     ax.set_title(title, fontsize=10)
 
 
@@ -177,7 +177,7 @@ def write_png(r, path, planar, points):
     if "binderDistribution.dat" in r.siblings:
         panels.append(_binder_distribution)
     rows = (len(panels) + 2) // 3
-    fig, axes = plt.subplots(rows, 3, figsize=(18, 5.5 * rows), squeeze=False)
+    fig, axes = plt.subplots(rows, 3, figsize=(18, 5.5 * rows), squeeze=False, layout="constrained")
     for ax, panel in zip(axes.flat, panels):
         if isinstance(panel, tuple):
             _fiber_view(fig, ax, r, panel[1], panel[2])
@@ -188,6 +188,5 @@ def write_png(r, path, planar, points):
     for ax in list(axes.flat)[len(panels):]:
         ax.axis("off")
     fig.suptitle("%s: dropletFiber report (function object %s)" % (r.case_name(), r.name))
-    fig.tight_layout(rect=(0, 0, 1, 0.97))
     fig.savefig(path, dpi=90)
     plt.close(fig)

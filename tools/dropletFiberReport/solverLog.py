@@ -11,21 +11,30 @@ NUMBER = r"([-+0-9.eE]+|nan|inf)"
 
 
 def _cloud_report(lines):
-    """A cloud's report from its indented lines."""
-    report = {"introduced": 0.0, "inSystem": None, "leftPatches": 0.0, "leftSystem": 0.0,
-              "patches": False, "phaseChange": None, "otherTransfer": 0.0, "time": None}
-    in_patch = in_system = False
+    """A cloud's report from its indented lines. Escaped mass: 'system' counts the
+    parcels that hit a patch that is neither a wall nor a constraint (KinematicParcel::
+    hitPatch), the patch lines what the interaction model did per patch (stuck
+    parcels stay in the cloud, inactive: their mass is still in the system)."""
+    report = {"introduced": 0.0, "inSystem": None, "escapedSystem": 0.0, "escapedPatches": {},
+              "phaseChange": None, "otherTransfer": 0.0, "time": None}
+    patch = None
     for line in lines:
         s = line.strip()
         if s.startswith("Parcel fate:"):
-            in_patch, in_system = s.startswith("Parcel fate: patch"), s.startswith("Parcel fate: system")
-            report["patches"] |= in_patch
+            # "Parcel fate: patch NAME (number, mass)" or "Parcel fate: patch (number, mass) NAME"
+            words = s.replace("(number, mass)", "").split()
+            patch = "system" if words[2] == "system" else (words[3] if len(words) > 3 else "")
             continue
-        m = re.match(r"- (escape|stick)[^=]*=\s*\S+,\s*" + NUMBER, s)
-        if m and (in_patch or in_system):
-            report["leftPatches" if in_patch else "leftSystem"] += float(m.group(2))
+        m = re.match(r"- escape[^=]*=\s*\S+,\s*" + NUMBER, s)
+        if m and patch is not None:
+            if patch == "system":
+                report["escapedSystem"] += float(m.group(1))
+            else:
+                report["escapedPatches"][patch] = report["escapedPatches"].get(patch, 0.0) + float(m.group(1))
             continue
-        in_patch = in_system = False
+        if s.startswith("- stick") and patch is not None:
+            continue
+        patch = None
         m = re.match(r"Current mass in system\s*=\s*" + NUMBER, s)
         if m:
             report["inSystem"] = float(m.group(1))
@@ -40,9 +49,6 @@ def _cloud_report(lines):
                 report["phaseChange"] = float(m.group(2))
             else:
                 report["otherTransfer"] += float(m.group(2))
-    # the parcels that left: per patch where the interaction model reports patches,
-    # else the system's total
-    report["left"] = report["leftPatches"] if report["patches"] else report["leftSystem"]
     return report
 
 

@@ -3,6 +3,7 @@ that fail the report (exit 1): the binder balance with depletion, captured at mo
 sprayed, and the function object's own conservation lines in the log."""
 import os
 
+import caseOutputs
 import tableColumns
 from fiberLoad import fiber_load
 
@@ -32,7 +33,8 @@ class Summary:
         last = r.table.last()
         layout = "serial"
         if r.processors:
-            layout = "decomposed, %d processors" % r.processors
+            layout = "decomposed, %d processors, %s" % (
+                r.processors, "reconstructed" if caseOutputs.reconstructed(r.case) else "not reconstructed")
         self.line("dropletFiber report of %s (function object %s, %s) at t = %g s"
                   % (os.path.abspath(r.case), r.name, layout, last["Time"]))
         self.line("  fibers                         %d" % last["fibers"])
@@ -157,5 +159,5 @@ class Summary:
         if rms is None:
             self.line("  fiber dispersion               every fiber written at one time only")
         else:
-            self.line("  fiber dispersion               rms %.3g m across gravity from the first write, "
-                      "below %.3g m of fall (%d fiber positions)" % rms)
+            self.line("  fiber dispersion               rms %.3g m across the fibers' mean drift from their first "
+                      "write, beyond %.3g m of travel (%d fiber positions)" % (rms[0], rms[2], rms[1]))
