@@ -56,7 +56,7 @@ def _balance(ax, r):
     low = min(v for v in values if v > 1e-299) if any(v > 1e-299 for v in values) else 1e-12
     ax.set_xlim(low / 10, max(values) * 10)
     for y, v in enumerate(values):
-        ax.text(v, y, " %.3g" % v if v > 1e-299 else " 0", va="center", fontsize=8)
+        ax.text(max(v, low / 10), y, " %.3g" % v if v > 1e-299 else " 0", va="center", fontsize=8)
     ax.invert_yaxis()
     ax.set_xlabel("mass [kg]")
 
@@ -177,7 +177,8 @@ def write_png(r, path, planar, points):
     if "binderDistribution.dat" in r.siblings:
         panels.append(_binder_distribution)
     rows = (len(panels) + 2) // 3
-    fig, axes = plt.subplots(rows, 3, figsize=(18, 5.5 * rows), squeeze=False, layout="constrained")
+    fig, axes = plt.subplots(rows, 3, figsize=(19, 6 * rows), squeeze=False)
+    fig.subplots_adjust(left=0.05, right=0.95, bottom=0.06, top=1 - 0.35 / rows, wspace=0.5, hspace=0.45)
     for ax, panel in zip(axes.flat, panels):
         if isinstance(panel, tuple):
             _fiber_view(fig, ax, r, panel[1], panel[2])
