@@ -5,10 +5,11 @@ cases. The expected values are derived here from the run's files with this file'
 readers (the table by its header, the cloud's report in the log, the VTK XML), not
 taken from the report's code.
 
-Usage: checkReport.py KIND RUN WORK
+Usage: checkReport.py KIND RUN WORK [PARALLEL_RUN]
   KIND  finished | stopped | decomposed | columns | missing | paraview
   RUN   the finished run's folder (serial, or parallel for decomposed)
   WORK  a scratch folder (replaced)
+  PARALLEL_RUN  for paraview: the 2-rank run
 """
 import json
 import math
@@ -170,11 +171,110 @@ def decomposed(run, work):
                  os.path.join(out, last))
 
 
+def columns(run, work):
+    """The table with its columns in reverse order and columns other features add
+    (per-species captured totals, an evaporated total), a binderDistribution.dat and a
+    parallelStatistics.dat with an imbalance column: the same figures, and the added
+    columns reported by name with the values written here."""
+    case = copy_case(run, work)
+    out = os.path.join(case, "postProcessing", "dropletFiber", "0")
+    path = os.path.join(out, "dropletFiber.dat")
+    rows = table(path)
+    added = {"capturedTotalH2O": 1.25e-10, "capturedTotalRESIN": 2.5e-11, "evaporatedTotal": 3.75e-9}
+    names = list(reversed(list(rows[0]))) + list(added)
+    with open(path, "w") as f:
+        f.write("# a comment line\n# " + "\t".join(names) + "\n")
+        for r in rows:
+            f.write("\t".join("%.12e" % {**r, **added}[n] for n in names) + "\n")
+    with open(os.path.join(out, "binderDistribution.dat"), "w") as f:
+        f.write("# Time\tbareLengthFraction\tsigmaMean\tsigmaCoV\thitsPerLength\n")
+        f.write("0.02\t0.5\t7e-08\t0.1\t100\n0.04\t0.25\t7.5e-08\t0.125\t200\n")
+    with open(os.path.join(out, "parallelStatistics.dat"), "w") as f:
+        f.write("# Time\tnodesHeldMax\tparcelImbalance\n0.02\t10\t1.5\n0.04\t10\t2.5\n")
+    done, text, _ = run_report(case, work)
+    check(done.returncode == 0, "exit 0 (got %d)" % done.returncode)
+    check("captured per liquid species    H2O 1.25e-10 kg, RESIN 2.5e-11 kg" in text,
+          "the species' captured totals by name")
+    check("evaporated (table)             all 3.75e-09 kg" in text, "the evaporated total by name")
+    check("bareLengthFraction 0.25" in text and "hitsPerLength 200" in text,
+          "binderDistribution.dat's last row by name")
+    check(re.search(r"parcelImbalance\s+mean 2, max 2.5 over 2 steps", text) is not None,
+          "the imbalance column: mean 2, max 2.5")
+    check_values(text, rows, os.path.join(case, "log.pimpleFoam"),
+                 os.path.join(out, json.load(open(os.path.join(out, "fibers.vtp.series")))["files"][-1]["name"]))
+
+
+def missing(run, work):
+    """No case, a case that never ran (the tutorial's own folder), a wrong -name: exit
+    2 with a message naming what is missing, no traceback."""
+    tutorial = os.path.join(ROOT, "tutorials", "channelSpray")
+    for case, options, expected in ((os.path.join(work, "nowhere"), (), "no case folder"),
+                                    (tutorial, (), "dropletFiber.dat"),
+                                    (run, ("-name", "other"), "no postProcessing/other/")):
+        done, _, prefix = run_report(case, work, *options)
+        check(done.returncode == 2, "%s %s: exit 2 (got %d)" % (case, " ".join(options), done.returncode))
+        check(expected in done.stderr, "the message names it: %s" % expected)
+        check("Traceback" not in done.stderr, "no traceback")
+        check(not os.path.exists(prefix + ".png"), "no PNG")
+
+
+def paraview(run, work):
+    """bin/dropletFiberParaView.py against a stand-in of paraview.simple that records
+    what it is asked to open: the serial run, and the 2-rank run (PARALLEL_RUN) without
+    its reconstructed times."""
+    calls = []
+
+    class Proxy(types.SimpleNamespace):
+        def __getattr__(self, name):
+            return lambda *a, **k: None
+
+    def recorder(name):
+        def call(*args, **kwargs):
+            proxy = Proxy(name=name)
+            calls.append((name, args, kwargs, proxy))
+            return proxy
+        return call
+
+    simple = types.ModuleType("paraview.simple")
+    for name in ("ColorBy", "GetActiveViewOrCreate", "GetAnimationScene", "GetColorTransferFunction",
+                 "OpenDataFile", "OpenFOAMReader", "Render", "RenameSource", "Show"):
+        setattr(simple, name, recorder(name))
+    sys.modules["paraview"] = types.ModuleType("paraview")
+    sys.modules["paraview.simple"] = simple
+    script = os.path.join(ROOT, "bin", "dropletFiberParaView.py")
+    for label, decompose in (("reconstructed", False), ("decomposed", True)):
+        case = copy_case(sys.argv[4] if decompose else run, os.path.join(work, label))
+        if decompose:
+            for entry in os.listdir(case):
+                if re.match(r"^[0-9.]+$", entry) and float(entry) > 0:
+                    shutil.rmtree(os.path.join(case, entry))
+        del calls[:]
+        here = os.getcwd()
+        os.chdir(case)
+        exec(compile(open(script).read(), script, "exec"), {"__name__": "__main__"})
+        os.chdir(here)
+        opened = [os.path.relpath(c[1][0], case) for c in calls if c[0] == "OpenDataFile"]
+        readers = [c[2]["FileName"] for c in calls if c[0] == "OpenFOAMReader"]
+        settings = [(c[3].CaseType, c[3].MeshRegions) for c in calls if c[0] == "OpenFOAMReader"]
+        case_type = "Decomposed Case" if decompose else "Reconstructed Case"
+        check(settings == [(case_type, ["internalMesh"]), (case_type, ["lagrangian/kinematicCloud"])],
+              "%s: the OpenFOAM reader as %s, the mesh and the cloud (%s)" % (label, case_type, settings))
+        check(sorted(opened) == ["postProcessing/dropletFiber/0/fibers.vtp.series",
+                                 "postProcessing/dropletFiber/0/grid.vti.series"],
+              "%s: opens the grid and fibers series (%s)" % (label, opened))
+        check(len(readers) == 2 and os.path.isfile(readers[0]), "%s: the air and the cloud through %s"
+              % (label, readers[0] if readers else None))
+        colours = [c[1][1][1] for c in calls if c[0] == "ColorBy"]
+        check(colours == ["U", "d", "rho", "sigma"], "%s: coloured by U, d, rho, sigma (%s)" % (label, colours))
+    print("(the stand-in checks the script's choices, not ParaView's own reading of the files)")
+
+
 def main():
     kind, run, work = sys.argv[1:4]
     shutil.rmtree(work, ignore_errors=True)
     os.makedirs(work)
-    {"finished": finished, "stopped": stopped, "decomposed": decomposed}[kind](run, work)
+    {"finished": finished, "stopped": stopped, "decomposed": decomposed, "columns": columns,
+     "missing": missing, "paraview": paraview}[kind](run, work)
     print("%s: %d failed" % (kind, len(failed)))
     sys.exit(1 if failed else 0)
 
