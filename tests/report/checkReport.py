@@ -6,16 +6,18 @@ readers (the table by its header, the cloud's report in the log, the VTK XML), n
 taken from the report's code.
 
 Usage: checkReport.py KIND RUN WORK [PARALLEL_RUN]
-  KIND  finished | stopped | decomposed | columns | missing | paraview
+  KIND  finished | stopped | decomposed | columns | missing | paraview | threeD
   RUN   the finished run's folder (serial, or parallel for decomposed)
   WORK  a scratch folder (replaced)
   PARALLEL_RUN  for paraview: the 2-rank run
 """
+import base64
 import json
 import math
 import os
 import re
 import shutil
+import struct
 import subprocess
 import sys
 import types
@@ -269,12 +271,48 @@ def paraview(run, work):
     print("(the stand-in checks the script's choices, not ParaView's own reading of the files)")
 
 
+def three_d(run, work):
+    """A 3D copy: the grid given 4 layers in z (each the 2D layer times its number) and
+    the fibers tilted out of the plane (z = 0.002 + x/2): the report takes x-y and x-z
+    views; the sigma distribution's length is the tilted segments' length."""
+    case = copy_case(run, work)
+    out = os.path.join(case, "postProcessing", "dropletFiber", "0")
+    grid = os.path.join(out, json.load(open(os.path.join(out, "grid.vti.series")))["files"][-1]["name"])
+    tree = ET.parse(grid)
+    image = tree.getroot().find("ImageData")
+    piece = image.find("Piece")
+    extent = image.get("WholeExtent").split()
+    extent[5] = "3"
+    image.set("WholeExtent", " ".join(extent))
+    piece.set("Extent", " ".join(extent))
+    for da in piece.find("PointData"):
+        raw = base64.b64decode("".join(da.text.split()))
+        values = struct.unpack("<%dd" % ((len(raw) - 8) // 8), raw[8:])
+        layers = b"".join(struct.pack("<%dd" % len(values), *[v * (k + 1) for v in values]) for k in range(4))
+        da.text = base64.b64encode(struct.pack("<Q", len(layers)) + layers).decode()
+    tree.write(grid)
+    vtp = os.path.join(out, json.load(open(os.path.join(out, "fibers.vtp.series")))["files"][-1]["name"])
+    tree = ET.parse(vtp)
+    points = tree.getroot().find("PolyData/Piece/Points/DataArray")
+    p = [float(v) for v in points.text.split()]
+    for k in range(0, len(p), 3):
+        p[k + 2] = 0.002 + 0.5 * p[k]
+    points.text = " ".join(repr(v) for v in p)
+    tree.write(vtp)
+    done, text, prefix = run_report(case, work, "-noCheck")
+    check(done.returncode == 0, "exit 0 (got %d)" % done.returncode)
+    length = fiber_length(vtp)
+    printed = number_after(text, r"segments, (\S+) m in total")
+    check(abs(printed - length) <= 1e-5 * length, "sigma over %.6g m of tilted fiber (printed %g)" % (length, printed))
+    check(open(prefix + ".png", "rb").read(8) == b"\x89PNG\r\n\x1a\n", "the PNG is written")
+
+
 def main():
     kind, run, work = sys.argv[1:4]
     shutil.rmtree(work, ignore_errors=True)
     os.makedirs(work)
     {"finished": finished, "stopped": stopped, "decomposed": decomposed, "columns": columns,
-     "missing": missing, "paraview": paraview}[kind](run, work)
+     "missing": missing, "paraview": paraview, "threeD": three_d}[kind](run, work)
     print("%s: %d failed" % (kind, len(failed)))
     sys.exit(1 if failed else 0)
 
