@@ -178,7 +178,7 @@ def write_png(r, path, planar, points):
         panels.append(_binder_distribution)
     rows = (len(panels) + 2) // 3
     fig, axes = plt.subplots(rows, 3, figsize=(19, 6 * rows), squeeze=False)
-    fig.subplots_adjust(left=0.05, right=0.95, bottom=0.06, top=1 - 0.35 / rows, wspace=0.5, hspace=0.45)
+    fig.subplots_adjust(left=0.05, right=0.95, bottom=0.06, top=1 - 0.8 / (6 * rows), wspace=0.5, hspace=0.45)
     for ax, panel in zip(axes.flat, panels):
         if isinstance(panel, tuple):
             _fiber_view(fig, ax, r, panel[1], panel[2])
