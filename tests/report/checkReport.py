@@ -6,8 +6,9 @@ readers (the table by its header, the cloud's report in the log, the VTK XML), n
 taken from the report's code.
 
 Usage: checkReport.py KIND RUN WORK [PARALLEL_RUN]
-  KIND  finished | stopped | decomposed | columns | missing | paraview | threeD
-  RUN   the finished run's folder (serial, or parallel for decomposed)
+  KIND  finished | stopped | decomposed | columns | missing | paraview | threeD | evaporating
+  RUN   the finished run's folder (serial, or parallel for decomposed; the
+        reactingBox case test's run for evaporating)
   WORK  a scratch folder (replaced)
   PARALLEL_RUN  for paraview: the 2-rank run
 """
@@ -307,12 +308,31 @@ def three_d(run, work):
     check(open(prefix + ".png", "rb").read(8) == b"\x89PNG\r\n\x1a\n", "the PNG is written")
 
 
+def evaporating(run, work):
+    """reactingParcelFoam's evaporating cloud (the reactingBox case test's run): the
+    evaporated mass is the cloud's last "Mass transfer phase change", the sprayed its
+    mass introduced, and the balance with them closes."""
+    log = os.path.join(run, "log.reactingParcelFoam")
+    reports = re.findall(r"^Cloud: reactingCloud1\n((?:    .*\n|   \|.*\n)+)", open(log).read(), re.M)
+    last = [r for r in reports if "Current mass in system" in r][-1]
+    evaporated = float(re.search(r"Mass transfer phase change\s*=\s*(\S+)", last).group(1))
+    sprayed = sum(float(m) for m in re.findall(r"mass introduced\s*=\s*(\S+)", last))
+    done, text, _ = run_report(run, work)
+    check(done.returncode == 0, "exit 0 (got %d)" % done.returncode)
+    check(abs(number_after(text, r"evaporated (\S+)\n") - evaporated) <= 1e-6 * evaporated,
+          "evaporated = the cloud's phase change %.7g kg" % evaporated)
+    check(abs(number_after(text, r"binder sprayed\s+(\S+) kg") - sprayed) <= 1e-6 * sprayed,
+          "sprayed = the cloud's mass introduced %.7g kg" % sprayed)
+    check("sprayed = airborne + left + evaporated + captured (1e-06)  ok" in text, "the balance closes")
+
+
 def main():
     kind, run, work = sys.argv[1:4]
     shutil.rmtree(work, ignore_errors=True)
     os.makedirs(work)
     {"finished": finished, "stopped": stopped, "decomposed": decomposed, "columns": columns,
-     "missing": missing, "paraview": paraview, "threeD": three_d}[kind](run, work)
+     "missing": missing, "paraview": paraview, "threeD": three_d,
+     "evaporating": evaporating}[kind](run, work)
     print("%s: %d failed" % (kind, len(failed)))
     sys.exit(1 if failed else 0)
 

@@ -145,7 +145,7 @@ class CaseReport:
 
     # --- the run's times --------------------------------------------------------------
     def wall_time_share(self):
-        """(function object's wall time, the run's time, which time) over the rows of
+        """({wall-time column: its sum}, the run's time, which time) over the rows of
         the log's run; None without log times or wall-time columns."""
         columns = tableColumns.wall_time_columns(self.table)
         if not columns or self.log is None or self.log.execution_time is None or not self.log.times:
@@ -153,8 +153,12 @@ class CaseReport:
         first = self.log.times[0] * (1 - 1e-12)
         rows = [r for r in self.table.rows if r["Time"] >= first]
         used = {c: sum(r[c] for r in rows) for c in columns}
+        # ClockTime counts whole seconds: ExecutionTime (the CPU time) for a short run,
+        # unless waiting (a loaded machine, other ranks) made the wall time longer
         if self.log.clock_time >= 20:
             return used, self.log.clock_time, "ClockTime"
+        if sum(used.values()) > self.log.execution_time:
+            return used, max(self.log.clock_time, 1.0), "ClockTime, whole seconds"
         return used, self.log.execution_time, "ExecutionTime"
 
     def case_name(self):
