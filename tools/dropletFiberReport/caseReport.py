@@ -110,10 +110,27 @@ class CaseReport:
             paired = report["functionObjectTimes"].get(self.name)
             if paired is not None:
                 b["capturedTime"] = paired if b["capturedTime"] is None else min(b["capturedTime"], paired)
+        lost = b["airborne"] + b["left"] + (b["evaporated"] or 0.0) + b["otherTransfer"]
+        if b["capturedTime"] is None and b["time"] is not None:
+            b["capturedTime"] = self._unlogged_pairing(b["time"], b["sprayed"] - lost)
         b["captured"] = self.captured_at(b["capturedTime"])
-        b["residual"] = b["sprayed"] - (b["airborne"] + b["left"] + (b["evaporated"] or 0.0)
-                                        + b["otherTransfer"] + b["captured"])
+        b["residual"] = b["sprayed"] - (lost + b["captured"])
         return b
+
+    def _unlogged_pairing(self, time, taken):
+        """Without the function object's per-step log lines (entry log false) the row a
+        cloud report follows is not known: that of the report's time (a cloud evolved by
+        a function object after this one) or the one before (the solver's cloud, evolved
+        before the function objects run); the one whose captured total is nearer the
+        mass the cloud lost is taken, and noted."""
+        rows = [r for r in self.table.rows if r["Time"] <= time * (1 + 1e-12)]
+        candidates = [r["Time"] for r in rows[-2:]]
+        if not candidates:
+            return None
+        if "log lines" not in " ".join(self.notes):
+            self.notes.append("no per-step log lines of the function object (log false?): the captured "
+                              "mass of the balance is the table row's nearer to what the clouds lost")
+        return min(candidates, key=lambda t: abs(self.captured_at(t) - taken))
 
     def _left(self, report):
         """The mass of the parcels that left the domain: those counted by the cloud's
