@@ -63,7 +63,6 @@ class CaseReport:
 
     def _read_vtk(self):
         self.fibers = self.grid = None
-        self.fiber_history = []
         for folder in reversed(caseOutputs.start_folders(self.case, self.name)):
             if self.fibers is None:
                 self.fibers = vtkFiles.last_readable(folder, "fibers.vtp", vtkFiles.Fibers, self.notes)
@@ -86,8 +85,11 @@ class CaseReport:
                 ids = fibers.point_data.get("fiberId")
                 if ids is None:
                     return {}
-                for f in np.unique(ids):
-                    centres.setdefault(int(f), []).append((time, fibers.points[ids == f].mean(axis=0)))
+                unique, which = np.unique(ids, return_inverse=True)
+                counts = np.bincount(which)
+                means = np.stack([np.bincount(which, weights=fibers.points[:, k]) / counts for k in range(3)], axis=1)
+                for f, centre in zip(unique, means):
+                    centres.setdefault(int(f), []).append((time, centre))
         return centres
 
     # --- the binder balance -------------------------------------------------------

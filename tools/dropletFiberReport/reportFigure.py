@@ -13,6 +13,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.collections import LineCollection  # noqa: E402
 
+import fiberDispersion  # noqa: E402
 from fiberLoad import fiber_load  # noqa: E402
 from solverLog import sprayed_at  # noqa: E402
 
@@ -134,7 +135,6 @@ def _sigma_distribution(ax, r):
 
 
 def _dispersion(ax, r, points):
-    import fiberDispersion
     ax.set_title("Fibers' dispersion")
     if not points:
         ax.text(0.5, 0.5, "every fiber written at one time only", ha="center", transform=ax.transAxes)

@@ -4,6 +4,7 @@ sprayed, and the function object's own conservation lines in the log."""
 import os
 
 import caseOutputs
+import fiberDispersion
 import tableColumns
 from fiberLoad import fiber_load
 
@@ -154,7 +155,6 @@ class Summary:
                   % (whole, total, which, 100 * whole / total if total else float("nan"), parts))
 
     def dispersion(self, points):
-        import fiberDispersion
         rms = fiberDispersion.rms_beyond(points)
         if rms is None:
             self.line("  fiber dispersion               every fiber written at one time only")
