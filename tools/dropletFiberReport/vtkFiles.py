@@ -50,6 +50,24 @@ def series(folder, name):
     return sorted(found)
 
 
+def _segments(piece):
+    """The point pairs of a piece's line cells and each pair's cell values (a
+    polyline of n points gives n - 1 pairs with its cell's values)."""
+    lines = _arrays(piece.find("Lines"))
+    ends = lines.get("offsets", np.array([])).astype(int)
+    starts = np.concatenate(([0], ends[:-1])).astype(int)
+    connectivity = lines.get("connectivity", np.array([])).astype(int)
+    cells = _arrays(piece.find("CellData"))
+    if np.all(ends - starts == 2):  # the function object's cells: one segment each
+        return connectivity.reshape(-1, 2), cells
+    pairs, owner = [], []
+    for c, (a, b) in enumerate(zip(starts, ends)):
+        ids = connectivity[a:b]
+        pairs += [(ids[k], ids[k + 1]) for k in range(len(ids) - 1)]
+        owner += [c] * (len(ids) - 1)
+    return np.array(pairs, dtype=int).reshape(-1, 2), {k: v[owner] for k, v in cells.items()}
+
+
 class Fibers:
     """Points, point arrays, and the segments (point pairs) with their cell arrays."""
 
@@ -59,25 +77,18 @@ class Fibers:
         offset = 0
         for piece in _pieces(path):
             p = _values(piece.find("Points/DataArray")).reshape(-1, 3)
-            lines = _arrays(piece.find("Lines"))
-            starts = np.concatenate(([0], lines.get("offsets", np.array([]))[:-1])).astype(int)
-            ends = lines.get("offsets", np.array([])).astype(int)
-            connectivity = lines.get("connectivity", np.array([])).astype(int)
-            cells = _arrays(piece.find("CellData"))
-            for c, (a, b) in enumerate(zip(starts, ends)):
-                ids = connectivity[a:b]
-                for k in range(len(ids) - 1):
-                    segments.append((offset + ids[k], offset + ids[k + 1]))
-                    for key, values in cells.items():
-                        cell_data.setdefault(key, []).append(values[c])
+            pairs, cells = _segments(piece)
+            segments.append(offset + pairs)
+            for key, values in cells.items():
+                cell_data.setdefault(key, []).append(values)
             for key, values in _arrays(piece.find("PointData")).items():
                 point_data.setdefault(key, []).append(values)
             points.append(p)
             offset += len(p)
         self.points = np.vstack(points) if points else np.zeros((0, 3))
         self.point_data = {k: np.concatenate(v) for k, v in point_data.items()}
-        self.segments = np.array(segments, dtype=int).reshape(-1, 2)
-        self.cell_data = {k: np.array(v) for k, v in cell_data.items()}
+        self.segments = np.vstack(segments) if segments else np.zeros((0, 2), dtype=int)
+        self.cell_data = {k: np.concatenate(v) for k, v in cell_data.items()}
 
     def segment_lengths(self):
         a, b = self.points[self.segments[:, 0]], self.points[self.segments[:, 1]]
