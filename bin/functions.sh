@@ -9,7 +9,7 @@
 #   foamKitDir             where installPrerequisites keeps the OpenFOAM kit
 #   loadFoamEnvironment    use the loaded OpenFOAM, else source the kit's bashrc;
 #                          exports DROPLETFIBER_DIR (this project), where the case
-#                          scripts find bin/checkFunctionObjectRan
+#                          scripts find bin/checkFunctionObjectRan and bin/dropletFiberReport
 #------------------------------------------------------------------------------
 
 info() { printf '[dropletFiber] %s\n' "$*"; }

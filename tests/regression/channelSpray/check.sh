@@ -3,8 +3,8 @@
 # Regression run of the channel-spray tutorial: the shortened run (Allrun -short,
 # 80 time steps) in a scratch copy, its per-step table compared with the stored
 # reference of the same mode, and its physical sanity checked on its own
-# (tutorial's summary.py: captured binder <= sprayed binder, parcel and fiber
-# mass balances).
+# (the report that Allrun ends with, bin/dropletFiberReport: the binder balance,
+# captured binder <= sprayed binder, parcel and fiber mass balances).
 #
 # Usage: check.sh serial|parallel WORK_DIR [--update]
 #   --update  store this run's table as the new reference (only through

@@ -3,7 +3,7 @@
 # The turbulent-air tutorial runs: tutorials/channelSprayRAS, Allrun -short, in a
 # scratch copy. Checked: the function object ran; the log says the fibers'
 # turbulent air is on by default with the k-epsilon model and the droplets
-# disperse with stochasticDispersionRAS; the tutorial's summary (mass balances)
+# disperse with stochasticDispersionRAS; the report's checks (mass balances)
 # passes; fiberDispersion.dat has a row per step with a turbulent velocity at the
 # fiber points of the order of the inlet's sqrt(2k/3) = 0.1 m/s (0.05-0.2 m/s:
 # k decays along the channel and grows at the walls); the plot is written.
