@@ -14,11 +14,17 @@
 #     forces, the cloud's interpolation), run once per step over the same
 #     parcels.
 # Prints the shares of the run's samples and the ratios to the tracking.
+# PARCELCOST_CASE=DIR profiles another case instead (its application from its
+# controlDict, serial), e.g. tests/cases/sprayBox: sprayFoam's evaporating
+# water + C16H34 spray, whose tracking is the same KinematicCloud::evolveCloud
+# (reached through SprayCloud's and ReactingCloud's evolve).
 #
 # Usage: bench/parcelCostRatio.sh [libDir]
 #   libDir  folder with the libdropletFiber.so to measure (default: $FOAM_USER_LIBBIN)
 # Environment: PARCELCOST_DIR scratch folder (default: a new mktemp -d folder),
-#              PARCELCOST_SHORT=1 runs 'Allrun -short' (0.04 s) instead.
+#              PARCELCOST_SHORT=1 runs 'Allrun -short' (0.04 s) instead,
+#              PARCELCOST_CASE=DIR another case (default: the tutorial),
+#              PARCELCOST_ENDTIME=T its endTime (default: the case's).
 # Needs perf (linux-perf); figures, not a test (the machine is shared: repeat
 # and report the spread).
 #------------------------------------------------------------------------------
@@ -34,19 +40,29 @@ lib="${1:-$FOAM_USER_LIBBIN}"
 lib="$(cd "$lib" && pwd)"
 dir="${PARCELCOST_DIR:-$(mktemp -d /tmp/parcelCost.XXXXXX)}"
 rm -rf "$dir"
-cp -r "$root/tutorials/channelSpray" "$dir"
+source="${PARCELCOST_CASE:-$root/tutorials/channelSpray}"
+[ -d "$source/system" ] || die "parcelCostRatio: no case in $source"
+cp -r "$source" "$dir"
 cd "$dir"
 ./Allclean > /dev/null 2>&1 || true
-if [ "${PARCELCOST_SHORT:-0}" = 1 ]; then
-    printf 'endTime         0.04;\n' > system/controlDict.short
-else
-    rm -f system/controlDict.short
+if [ -z "${PARCELCOST_CASE:-}" ]; then
+    if [ "${PARCELCOST_SHORT:-0}" = 1 ]; then
+        printf 'endTime         0.04;\n' > system/controlDict.short
+    else
+        rm -f system/controlDict.short
+    fi
 fi
-cp -r 0.orig 0
+if [ -n "${PARCELCOST_ENDTIME:-}" ]; then
+    foamDictionary system/controlDict -entry endTime -set "$PARCELCOST_ENDTIME" > /dev/null
+fi
+rm -rf 0 && cp -r 0.orig 0
+application="$(foamDictionary system/controlDict -entry application -value)"
 blockMesh > log.blockMesh 2>&1 || die "parcelCostRatio: blockMesh failed ($dir)"
 LD_LIBRARY_PATH="$lib:$LD_LIBRARY_PATH" perf record -q -e cpu-clock -F 400 --call-graph dwarf,16384 \
-    -o perf.data pimpleFoam > log.pimpleFoam 2>&1 || die "parcelCostRatio: pimpleFoam failed ($dir)"
-"$root/bin/checkFunctionObjectRan" log.pimpleFoam || die "parcelCostRatio: the function object did not run"
+    -o perf.data "$application" > "log.$application" 2>&1 \
+    || die "parcelCostRatio: $application failed ($dir)"
+"$root/bin/checkFunctionObjectRan" "log.$application" \
+    || die "parcelCostRatio: the function object did not run"
 perf report -i perf.data --children --sort symbol --stdio -g none 2> /dev/null > report.txt
 python3 - report.txt <<'PY'
 import re, sys

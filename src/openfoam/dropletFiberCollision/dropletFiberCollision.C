@@ -951,6 +951,11 @@ Foam::functionObjects::dropletFiberCollision::dropletFiberCollision
 {
     read(dict);
     boxes_.reset(new dropletFiber::processorBoxes(mesh_));
+    // The table's columns per liquid species; the state's totals of them
+    if (depletion_)
+    {
+        findLiquidSpecies();
+    }
 
     // Fibers: from the restart state of the start time, else from the
     // dictionary
@@ -1214,6 +1219,7 @@ void Foam::functionObjects::dropletFiberCollision::reportAndWriteState
         coreCall("writing the restart state", [this]() { writeState(); });
         reportConservation();
         reportBinderBalance();
+        reportCloudBalance();
         depositReport_->reportAtWrite(time_.timeName());
     }
 }

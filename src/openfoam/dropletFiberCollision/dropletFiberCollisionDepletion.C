@@ -147,6 +147,7 @@ void Foam::functionObjects::dropletFiberCollision::depleteParcels
         (
             *grid_, captureLimit_, stepParcels_, dt, parallelStatistics_
         );
+    addCapturedSpecies(fraction);
     const scalar kept = writeBackToClouds(fraction);
     keepRemoval(fraction);
     // What left the parcels written back, and what flies on

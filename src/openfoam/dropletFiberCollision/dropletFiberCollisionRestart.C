@@ -302,6 +302,12 @@ void Foam::functionObjects::dropletFiberCollision::addFibersAndTotals
     totals.add("fiberMassRemoved", totals_.fiberMassRemoved);
     totals.add("fibersRemoved", totals_.fibersRemoved);
     totals.add("parcelsCapped", totals_.parcelsCapped);
+    dictionary species;
+    forAll(liquidSpecies_, i)
+    {
+        species.add(liquidSpecies_[i], capturedSpecies_[i]);
+    }
+    totals.add("capturedSpecies", species);
     state.add("totals", totals);
 }
 
@@ -778,6 +784,18 @@ void Foam::functionObjects::dropletFiberCollision::restoreTotals
     totals_.fibersRemoved = requiredCount(totals, "fibersRemoved");
     totals_.parcelsCapped =
         dropletFiber::getLabelInRange(totals, "parcelsCapped", 0, 0, labelMax);
+    // Per liquid species (a state without them: none captured)
+    const dictionary& species = totals.subOrEmptyDict("capturedSpecies");
+    const scalar none = 0;
+    forAll(liquidSpecies_, i)
+    {
+        capturedSpecies_[i] =
+            dropletFiber::getCheckedScalar
+            (
+                species, liquidSpecies_[i], &none,
+                [](scalar v) { return v >= 0; }, ">= 0"
+            );
+    }
 }
 
 
