@@ -1,6 +1,6 @@
 """Depletion of a solver's cloud against the cloud's own mass report.
 
-Usage: checkCloudBalance.py CLOUD CASE [NONVOLATILE Y0]
+Usage: checkCloudBalance.py CLOUD [NONVOLATILE Y0] CASE
 
 The solver prints the cloud's report after its step (KinematicCloud::info and the
 submodels': mass in system, mass introduced per injector, escaped mass, mass
@@ -160,8 +160,8 @@ def check_species(rows, case, cloud, nonvolatile, check):
 
 
 def main():
-    cloud, case = sys.argv[1:3]
-    nonvolatile = sys.argv[3:5]
+    cloud, case = sys.argv[1], sys.argv[-1]
+    nonvolatile = sys.argv[2:-1]
     rows = read_table(os.path.join(case, "postProcessing/dropletFiber/0/dropletFiber.dat"))
     logs = sorted(glob.glob(os.path.join(case, "log.*Foam")))
     text = "".join(open(log).read() for log in logs)
