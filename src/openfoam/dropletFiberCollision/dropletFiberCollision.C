@@ -972,6 +972,7 @@ Foam::functionObjects::dropletFiberCollision::dropletFiberCollision
         Info<< type() << " " << this->name() << ": " << fiberCount()
             << " fibers restored" << nl;
     }
+    applyRemovalBeforeFirstStep();
 
     const fileName vtkDir = baseFileDir()/name/time_.timeName(time_.startTime().value());
     if (Pstream::master() && (writeVtk_ || writeGridVtk_))

@@ -27,6 +27,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "dropletFiberCollision.H"
+#include "cloud.H"
 #include "fiberStateIO.H"
 #include "dictionaryChecks.H"
 #include "restartStateMarker.H"
@@ -758,6 +759,28 @@ void Foam::functionObjects::dropletFiberCollision::restoreInjectorCounts
                 << " fresh;'." << exit(FatalIOError);
         }
         injector.setInjectedCount(count);
+    }
+}
+
+
+void Foam::functionObjects::dropletFiberCollision::applyRemovalBeforeFirstStep()
+{
+    // In the run that wrote the state the removal came before the clouds'
+    // next step; the first execute comes after it (droplets left in would
+    // evaporate, or drive the gas, for a step). Clouds that do not exist
+    // yet (made by a function object constructed later) get it then.
+    bool exist = removalRestored_ && !cloudNames_.empty();
+    for (const word& cloudName : cloudNames_)
+    {
+        exist = exist && mesh_.foundObject<cloud>(cloudName);
+    }
+    if (exist)
+    {
+        coreCall
+        (
+            "removing the droplets captured before the restart",
+            [this]() { applyRestoredRemoval(); }
+        );
     }
 }
 
