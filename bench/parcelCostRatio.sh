@@ -15,11 +15,20 @@
 #     forces, the cloud's interpolation), run once per step over the same
 #     parcels.
 # Prints the shares of the run's samples and the ratios to the tracking.
+# PARCELCOST_CASE=DIR profiles another case instead (its application from its
+# controlDict, serial), e.g. tests/cases/sprayBox: sprayFoam's evaporating
+# water + C16H34 spray. Its cloud's code is instantiated in the (stripped)
+# solver, so the profile cannot name evolveCloud: the tracking is then taken from
+# OpenFOAM's own profiling (switched on in the copy: 'cloud::solve', i.e.
+# evolveCloud and the cloud's report, against the function object's 'execute'),
+# ratio = (per-parcel / execute samples) x (execute / cloud::solve time).
 #
 # Usage: bench/parcelCostRatio.sh [libDir]
 #   libDir  folder with the libdropletFiber.so to measure (default: $FOAM_USER_LIBBIN)
 # Environment: PARCELCOST_DIR scratch folder (default: a new mktemp -d folder),
-#              PARCELCOST_SHORT=1 runs 'Allrun -short' (0.04 s) instead.
+#              PARCELCOST_SHORT=1 runs 'Allrun -short' (0.04 s) instead,
+#              PARCELCOST_CASE=DIR another case (default: the tutorial),
+#              PARCELCOST_ENDTIME=T its endTime (default: the case's).
 # Needs perf (linux-perf); figures, not a test (the machine is shared: repeat
 # and report the spread).
 #------------------------------------------------------------------------------
@@ -35,22 +44,36 @@ lib="${1:-$FOAM_USER_LIBBIN}"
 lib="$(cd "$lib" && pwd)"
 dir="${PARCELCOST_DIR:-$(mktemp -d /tmp/parcelCost.XXXXXX)}"
 rm -rf "$dir"
-cp -r "$root/tutorials/channelSpray" "$dir"
+source="${PARCELCOST_CASE:-$root/tutorials/channelSpray}"
+[ -d "$source/system" ] || die "parcelCostRatio: no case in $source"
+cp -r "$source" "$dir"
 cd "$dir"
 ./Allclean > /dev/null 2>&1 || true
-if [ "${PARCELCOST_SHORT:-0}" = 1 ]; then
-    printf 'endTime         0.04;\n' > system/controlDict.short
-else
-    rm -f system/controlDict.short
+if [ -z "${PARCELCOST_CASE:-}" ]; then
+    if [ "${PARCELCOST_SHORT:-0}" = 1 ]; then
+        printf 'endTime         0.04;\n' > system/controlDict.short
+    else
+        rm -f system/controlDict.short
+    fi
 fi
-cp -r 0.orig 0
+if [ -n "${PARCELCOST_CASE:-}" ]; then
+    printf 'profiling { active true; cpuInfo false; memInfo false; sysInfo false; }\n' \
+        >> system/controlDict
+fi
+if [ -n "${PARCELCOST_ENDTIME:-}" ]; then
+    foamDictionary system/controlDict -entry endTime -set "$PARCELCOST_ENDTIME" > /dev/null
+fi
+rm -rf 0 && cp -r 0.orig 0
+application="$(foamDictionary system/controlDict -entry application -value)"
 blockMesh > log.blockMesh 2>&1 || die "parcelCostRatio: blockMesh failed ($dir)"
 LD_LIBRARY_PATH="$lib:$LD_LIBRARY_PATH" perf record -q -e cpu-clock -F 400 --call-graph dwarf,16384 \
-    -o perf.data pimpleFoam > log.pimpleFoam 2>&1 || die "parcelCostRatio: pimpleFoam failed ($dir)"
-"$root/bin/checkFunctionObjectRan" log.pimpleFoam || die "parcelCostRatio: the function object did not run"
+    -o perf.data "$application" > "log.$application" 2>&1 \
+    || die "parcelCostRatio: $application failed ($dir)"
+"$root/bin/checkFunctionObjectRan" "log.$application" \
+    || die "parcelCostRatio: the function object did not run"
 perf report -i perf.data --children --sort symbol --stdio -g none 2> /dev/null > report.txt
 python3 - report.txt <<'PY'
-import re, sys
+import glob, re, sys
 children = {}
 for line in open(sys.argv[1], errors="replace"):
     m = re.match(r"\s+([0-9.]+)%\s+([0-9.]+)%\s+\[\.\]\s+(.*\S)", line)
@@ -66,7 +89,24 @@ parcels = (inclusive(prefix + r"depositParcels$") + inclusive(prefix + r"deplete
            + inclusive(r"^Foam::dropletFiber::gridBlocks::removeCaptured"))
 cloud = inclusive(r"KinematicCloud<.*>::evolveCloud<")
 if not cloud:
-    sys.exit("parcelCostRatio: no evolveCloud samples in the profile")
+    # OpenFOAM's profiling of the last time written: total times [s]
+    files = sorted(glob.glob("*/uniform/profiling"), key=lambda f: float(f.split("/")[0]))
+    if not files:
+        sys.exit("parcelCostRatio: no evolveCloud samples in the profile, no profiling")
+    text = open(files[-1]).read()
+    def total(pattern):
+        m = re.search(r'description\s+"' + pattern + r'";\s*calls\s+\d+;\s*totalTime\s+([0-9.eE+-]+)', text)
+        return float(m.group(1)) if m else 0.0
+    solve = total(r"cloud::solve")
+    execute = total(r"functionObject::[^\"]*::execute")
+    inner = inclusive(prefix + r"execute$")
+    if not (solve and execute and inner):
+        sys.exit("parcelCostRatio: no cloud::solve or execute in " + files[-1])
+    print(f"  OpenFOAM's profiling: cloud::solve {solve:.3f} s, the function object's execute {execute:.3f} s")
+    print(f"  per-parcel work (depositParcels + depleteParcels): {parcels:.1f} % of the samples, "
+          f"{parcels / inner:.2f} of execute: ratio {parcels / inner * execute / solve:.2f}")
+    print(f"  execute against cloud::solve: ratio {execute / solve:.2f}")
+    sys.exit(0)
 print(f"  OpenFOAM's tracking (evolveCloud): {cloud:.1f} % of the samples")
 print(f"  per-parcel work (depositParcels + removeCaptured + depleteParcels): {parcels:.1f} %: ratio {parcels / cloud:.2f}")
 print(f"  whole function object (execute + write): {whole:.1f} %: ratio {whole / cloud:.2f}")

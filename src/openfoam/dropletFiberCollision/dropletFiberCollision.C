@@ -1000,6 +1000,11 @@ Foam::functionObjects::dropletFiberCollision::dropletFiberCollision
 {
     read(dict);
     boxes_.reset(new dropletFiber::processorBoxes(mesh_));
+    // The table's columns per liquid species; the state's totals of them
+    if (depletion_)
+    {
+        findLiquidSpecies();
+    }
 
     // Fibers: from the restart state of the start time, else from the
     // dictionary
@@ -1016,6 +1021,7 @@ Foam::functionObjects::dropletFiberCollision::dropletFiberCollision
         Info<< type() << " " << this->name() << ": " << fiberCount()
             << " fibers restored" << nl;
     }
+    applyRemovalBeforeFirstStep();
 
     const fileName vtkDir = baseFileDir()/name/time_.timeName(time_.startTime().value());
     if (Pstream::master() && (writeVtk_ || writeGridVtk_))
@@ -1279,6 +1285,7 @@ void Foam::functionObjects::dropletFiberCollision::reportAndWriteState
         (
             Info, type() + " " + name(), time_.timeName()
         );
+        reportCloudBalance();
         depositReport_->reportAtWrite(time_.timeName());
     }
 }

@@ -149,6 +149,7 @@ void Foam::functionObjects::dropletFiberCollision::depleteParcels
     // c_p of this processor's parcels, from limitCapture (the removal
     // came before the grants)
     std::vector<double> fraction = stepCaptured_;
+    addCapturedSpecies(fraction);
     const scalar kept = writeBackToClouds(fraction);
     keepRemoval(fraction);
     // What left the parcels written back, and what flies on

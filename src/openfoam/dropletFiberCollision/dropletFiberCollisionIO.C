@@ -98,6 +98,16 @@ void Foam::functionObjects::dropletFiberCollision::writeFileHeader
         {
             writeTabbed(os, column);
         }
+        // The clouds' own figures (sprayed = airborne + evaporated +
+        // escaped + capturedTotal) and the captured mass per liquid species
+        for (const char* column : {"sprayedMass", "evaporatedMass", "escapedMass"})
+        {
+            writeTabbed(os, column);
+        }
+        for (const word& species : liquidSpecies_)
+        {
+            writeTabbed(os, "captured_" + species);
+        }
     }
     // One stage each: gather and deposit; collision (and depletion's
     // removal); the fibers' injection, step and hand-over
@@ -116,6 +126,10 @@ void Foam::functionObjects::dropletFiberCollision::reportStep
     // Over all processors (collective: before the master's writing)
     const label fibers = fiberCount();
     const scalar mass = fiberMass();
+    if (depletion_)
+    {
+        readCloudMassReport();
+    }
     Log << type() << " " << name() << ": parcels " << step.parcels
         << ", fibers " << fibers
         << ", captured " << step.capturedStep << " kg (total "
@@ -146,7 +160,14 @@ void Foam::functionObjects::dropletFiberCollision::reportStep
         {
             os  << tab << depletionStep_.demanded
                 << tab << depletionStep_.removed
-                << tab << depletionStep_.airborne;
+                << tab << depletionStep_.airborne
+                << tab << cloudMass_.sprayed
+                << tab << cloudMass_.evaporated
+                << tab << cloudMass_.escaped;
+            for (const scalar captured : capturedSpecies_)
+            {
+                os  << tab << captured;
+            }
         }
         os  << tab << step.depositionTime
             << tab << step.collisionTime

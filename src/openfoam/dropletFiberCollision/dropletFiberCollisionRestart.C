@@ -27,6 +27,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "dropletFiberCollision.H"
+#include "cloud.H"
 #include "fiberStateIO.H"
 #include "dictionaryChecks.H"
 #include "restartStateMarker.H"
@@ -302,6 +303,12 @@ void Foam::functionObjects::dropletFiberCollision::addFibersAndTotals
     totals.add("fiberMassRemoved", totals_.fiberMassRemoved);
     totals.add("fibersRemoved", totals_.fibersRemoved);
     totals.add("parcelsCapped", totals_.parcelsCapped);
+    dictionary species;
+    forAll(liquidSpecies_, i)
+    {
+        species.add(liquidSpecies_[i], capturedSpecies_[i]);
+    }
+    totals.add("capturedSpecies", species);
     state.add("totals", totals);
 }
 
@@ -756,6 +763,28 @@ void Foam::functionObjects::dropletFiberCollision::restoreInjectorCounts
 }
 
 
+void Foam::functionObjects::dropletFiberCollision::applyRemovalBeforeFirstStep()
+{
+    // In the run that wrote the state the removal came before the clouds'
+    // next step; the first execute comes after it (droplets left in would
+    // evaporate, or drive the gas, for a step). Clouds that do not exist
+    // yet (made by a function object constructed later) get it then.
+    bool exist = removalRestored_ && !cloudNames_.empty();
+    for (const word& cloudName : cloudNames_)
+    {
+        exist = exist && mesh_.foundObject<cloud>(cloudName);
+    }
+    if (exist)
+    {
+        coreCall
+        (
+            "removing the droplets captured before the restart",
+            [this]() { applyRestoredRemoval(); }
+        );
+    }
+}
+
+
 void Foam::functionObjects::dropletFiberCollision::restoreTotals
 (
     const dictionary& totals
@@ -778,6 +807,18 @@ void Foam::functionObjects::dropletFiberCollision::restoreTotals
     totals_.fibersRemoved = requiredCount(totals, "fibersRemoved");
     totals_.parcelsCapped =
         dropletFiber::getLabelInRange(totals, "parcelsCapped", 0, 0, labelMax);
+    // Per liquid species (a state without them: none captured)
+    const dictionary& species = totals.subOrEmptyDict("capturedSpecies");
+    const scalar none = 0;
+    forAll(liquidSpecies_, i)
+    {
+        capturedSpecies_[i] =
+            dropletFiber::getCheckedScalar
+            (
+                species, liquidSpecies_[i], &none,
+                [](scalar v) { return v >= 0; }, ">= 0"
+            );
+    }
 }
 
 

@@ -7,6 +7,8 @@ OpenFOAM and of dropletFiber (plain Python, standard library only).
   the last comment line holds the column names) as a list of dicts.
 - cloud_totals(case, time, cloud): parcel count, droplet count and droplet mass
   of a cloud as OpenFOAM wrote it at a time, summed over processor folders.
+- cloud_species_mass(case, time, cloud, species): the droplet mass of one liquid
+  species of a reacting or spray cloud as OpenFOAM wrote it at a time.
 """
 import math
 import os
@@ -79,3 +81,30 @@ def cloud_totals(case, time, cloud):
         droplets += sum(n)
         mass += sum(ni * ri * math.pi / 6.0 * di ** 3 for di, ni, ri in zip(d, n, rho))
     return parcels, droplets, mass
+
+
+def cloud_species_mass(case, time, cloud, species):
+    """Droplet mass of one species in `cloud` written at `time`: the sum over
+    parcels of nParticle rho pi d^3/6 times the parcel's mass fraction of the
+    species (field Y<species>(l) or Y<species>), over the case or its
+    processor* folders."""
+    roots = sorted(
+        os.path.join(case, d) for d in os.listdir(case) if d.startswith("processor")
+    ) or [case]
+    mass = 0.0
+    for root in roots:
+        cdir = os.path.join(root, time, "lagrangian", cloud)
+        if not os.path.isdir(cdir):
+            continue
+        d = read_field(os.path.join(cdir, "d"))
+        n = read_field(os.path.join(cdir, "nParticle"))
+        rho = read_field(os.path.join(cdir, "rho"))
+        # Y<species> followed by the phase's state label: (l) for a liquid
+        names = [n for n in ("Y" + species + "(l)", "Y" + species)
+                 if os.path.exists(os.path.join(cdir, n))]
+        if not names:
+            raise ValueError("%s: no field Y%s(l) or Y%s" % (cdir, species, species))
+        y = read_field(os.path.join(cdir, names[0]))
+        mass += sum(ni * ri * math.pi / 6.0 * di ** 3 * yi
+                    for di, ni, ri, yi in zip(d, n, rho, y))
+    return mass

@@ -1,0 +1,302 @@
+/*---------------------------------------------------------------------------*\
+  dropletFiber: stochastic droplet-fiber coupling for OpenFOAM
+-------------------------------------------------------------------------------
+Description
+    The clouds' own mass figures for the binder balance (sprayed =
+    airborne + evaporated + escaped + captured) and the captured mass per
+    liquid species, for the parcel types read directly: every such cloud
+    reports its injectors' mass and the escaped mass (its kinematic level,
+    KinematicCloud<Cloud<parcel>>); the reacting, reacting multiphase,
+    heterogeneous reacting and spray clouds also the phase change mass and
+    their composition (their reacting level,
+    ReactingCloud<ThermoCloud<KinematicCloud<Cloud<parcel>>>>).
+    Devolatilisation and surface reaction of reacting multiphase (coal)
+    clouds are not among the terms.
+
+\*---------------------------------------------------------------------------*/
+
+#include "cloudMassReportTemplates.H"
+#include "basicKinematicParcel.H"
+#include "basicKinematicCollidingParcel.H"
+#include "basicKinematicMPPICParcel.H"
+#include "basicThermoParcel.H"
+#include "basicReactingParcel.H"
+#include "basicReactingMultiphaseParcel.H"
+#include "basicHeterogeneousReactingParcel.H"
+#include "basicSprayParcel.H"
+#include "ThermoCloud.H"
+#include "ReactingCloud.H"
+#include "PhaseChangeModel.H"
+#include "CompositionModel.H"
+
+#include <type_traits>
+#include <utility>
+
+// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
+
+namespace
+{
+
+using namespace Foam;
+
+//- The reacting level of the clouds of ParcelType
+template<class ParcelType>
+using reactingCloudOf =
+    ReactingCloud<ThermoCloud<KinematicCloud<Cloud<ParcelType>>>>;
+
+
+//- The phase change mass as PhaseChangeModel::info prints it
+template<class CloudType>
+struct phaseChangeMassOf
+:
+    public PhaseChangeModel<CloudType>
+{
+    static scalar total(const PhaseChangeModel<CloudType>& model)
+    {
+        const scalar thisRun = model.*(&phaseChangeMassOf::dMass_);
+        return
+            model.template getBaseProperty<scalar>("mass")
+          + returnReduce(thisRun, sumOp<scalar>());
+    }
+};
+
+
+//- Parcels with phases (ReactingMultiphaseParcel: Y() the phases'
+//  fractions, YLiquid() the liquid's composition)
+template<class ParcelType, class = void>
+struct hasLiquidPhase : std::false_type {};
+
+template<class ParcelType>
+struct hasLiquidPhase
+<
+    ParcelType,
+    std::void_t<decltype(std::declval<const ParcelType&>().YLiquid())>
+>
+: std::true_type {};
+
+
+//- Adds m Y_liquid,i of parcel p to captured (idLiquid: the liquid phase)
+template<class ParcelType>
+void addLiquidMass
+(
+    const ParcelType& p,
+    const label idLiquid,
+    const scalar m,
+    scalarList& captured
+)
+{
+    if constexpr (hasLiquidPhase<ParcelType>::value)
+    {
+        const scalar liquid = m*p.Y()[idLiquid];
+        const scalarField& Y = p.YLiquid();
+        forAll(captured, i)
+        {
+            captured[i] += liquid*Y[i];
+        }
+    }
+    else
+    {
+        // One phase: Y() is its composition
+        const scalarField& Y = p.Y();
+        forAll(captured, i)
+        {
+            captured[i] += m*Y[i];
+        }
+    }
+}
+
+
+//- The phase change mass of c when it is a reacting cloud of ParcelType
+template<class ParcelType>
+bool addPhaseChange(const cloud& c, dropletFiber::cloudParcels::massReport& r)
+{
+    using cloudType = reactingCloudOf<ParcelType>;
+    const auto* typed = dynamic_cast<const cloudType*>(&c);
+    if (!typed)
+    {
+        return false;
+    }
+    r.evaporated += phaseChangeMassOf<cloudType>::total(typed->phaseChange());
+    return true;
+}
+
+
+//- The liquid species of c when it is a reacting cloud of ParcelType
+template<class ParcelType>
+bool liquidSpeciesOf(const cloud& c, wordList& names)
+{
+    const auto* typed = dynamic_cast<const reactingCloudOf<ParcelType>*>(&c);
+    if (!typed)
+    {
+        return false;
+    }
+    const label idLiquid = typed->composition().idLiquid();
+    if (idLiquid >= 0)
+    {
+        names = typed->composition().componentNames(idLiquid);
+    }
+    return true;
+}
+
+
+//- addCapturedSpecies for c when it is a reacting cloud of ParcelType
+template<class ParcelType>
+bool capturedSpeciesOf
+(
+    const cloud& c,
+    const scalar* fraction,
+    const scalar* mass,
+    const label count,
+    const particle* const* address,
+    scalarList& captured
+)
+{
+    const auto* typed = dynamic_cast<const reactingCloudOf<ParcelType>*>(&c);
+    if (!typed)
+    {
+        return false;
+    }
+    const label idLiquid = typed->composition().idLiquid();
+    if (idLiquid < 0 || typed->size() != count)
+    {
+        return true;
+    }
+    bool addressed = address != nullptr;
+    for (label i = 0; i < count && addressed; ++i)
+    {
+        addressed = address[i] != nullptr;
+    }
+    if (addressed)
+    {
+        // Only the parcels that lost droplets (appendIfCloudOf's address)
+        for (label i = 0; i < count; ++i)
+        {
+            if (fraction[i] > 0)
+            {
+                const auto& p = *static_cast<const ParcelType*>(address[i]);
+                addLiquidMass(p, idLiquid, fraction[i]*mass[i], captured);
+            }
+        }
+        return true;
+    }
+    label i = 0;
+    for (const ParcelType& p : *typed)
+    {
+        if (fraction[i] > 0)
+        {
+            addLiquidMass(p, idLiquid, fraction[i]*mass[i], captured);
+        }
+        ++i;
+    }
+    return true;
+}
+
+
+//- The operations over the reacting parcel types
+template<class... ParcelTypes>
+struct reactingParcelList
+{
+    static bool phaseChange
+    (
+        const cloud& c,
+        dropletFiber::cloudParcels::massReport& r
+    )
+    {
+        return (addPhaseChange<ParcelTypes>(c, r) || ...);
+    }
+
+    static bool species(const cloud& c, wordList& names)
+    {
+        return (liquidSpeciesOf<ParcelTypes>(c, names) || ...);
+    }
+
+    static bool captured
+    (
+        const cloud& c,
+        const scalar* fraction,
+        const scalar* mass,
+        const label count,
+        const particle* const* address,
+        scalarList& result
+    )
+    {
+        return
+        (
+            capturedSpeciesOf<ParcelTypes>
+            (
+                c, fraction, mass, count, address, result
+            )
+         || ...
+        );
+    }
+};
+
+
+using allParcels = dropletFiber::kinematicMassReportList
+<
+    basicKinematicCollidingParcel,
+    basicKinematicParcel,
+    basicKinematicMPPICParcel,
+    basicReactingMultiphaseParcel,
+    basicSprayParcel,
+    basicReactingParcel,
+    basicThermoParcel,
+    basicHeterogeneousReactingParcel
+>;
+
+using reactingParcels = reactingParcelList
+<
+    basicReactingMultiphaseParcel,
+    basicSprayParcel,
+    basicReactingParcel,
+    basicHeterogeneousReactingParcel
+>;
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
+
+bool Foam::dropletFiber::cloudParcels::addMassReport
+(
+    const cloud& c,
+    massReport& report
+)
+{
+    if (!allParcels::add(c, report))
+    {
+        return false;
+    }
+    reactingParcels::phaseChange(c, report);
+    return true;
+}
+
+
+Foam::wordList Foam::dropletFiber::cloudParcels::liquidSpecies
+(
+    const cloud& c
+)
+{
+    wordList names;
+    reactingParcels::species(c, names);
+    return names;
+}
+
+
+void Foam::dropletFiber::cloudParcels::addCapturedSpecies
+(
+    const cloud& c,
+    const scalar* capturedFraction,
+    const scalar* mass,
+    const label count,
+    const particle* const* address,
+    scalarList& captured
+)
+{
+    reactingParcels::captured
+    (
+        c, capturedFraction, mass, count, address, captured
+    );
+}
+
+// ************************************************************************* //
