@@ -183,8 +183,10 @@ def columns(run, work):
     out = os.path.join(case, "postProcessing", "dropletFiber", "0")
     path = os.path.join(out, "dropletFiber.dat")
     rows = table(path)
-    added = {"capturedTotalH2O": 1.25e-10, "capturedTotalRESIN": 2.5e-11, "evaporatedTotal": 3.75e-9}
-    names = list(reversed(list(rows[0]))) + list(added)
+    # The names the function object writes (README, Outputs); evaporatedMass replaces
+    # the table's own where it has one
+    added = {"captured_H2O": 1.25e-10, "captured_RESIN": 2.5e-11, "evaporatedMass": 3.75e-9}
+    names = [n for n in reversed(list(rows[0])) if n not in added] + list(added)
     with open(path, "w") as f:
         f.write("# a comment line\n# " + "\t".join(names) + "\n")
         for r in rows:

@@ -176,6 +176,8 @@ public:
     void reach(DensityGrid& grid, const Parcel& parcel, double dt, ParcelReaches& reaches) const;
     // c_p = 1 - (1 - A_p) exp(-X_p) from the whole A_p and X_p; 1 within 1e-12 of it.
     static double capturedFraction(double saturated, double depth);
+    // (1 - A)(1 - e^-X): the part of c_p off the saturated nodes, accurate for small X
+    static double capturedOffSaturated(double saturated, double depth);
     // The loss of parcel i of reaches (mass m_p, whole A_p and X_p) attributed to this
     // block's nodes: R_n += r_pn.
     void remove(const ParcelReaches& reaches, std::size_t i, double mass, double saturated, double depth);

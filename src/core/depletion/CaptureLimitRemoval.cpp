@@ -74,7 +74,15 @@ double CaptureLimit::capturedFraction(double saturated, double depth)
 {
     // The droplets off the saturated nodes' share survive the depth of the others
     const double kept = std::max(0.0, 1.0 - saturated) * std::exp(-depth);
-    return kept < allCapturedWithin ? 1.0 : 1.0 - kept;
+    return kept < allCapturedWithin ? 1.0 : std::min(1.0, saturated) + capturedOffSaturated(saturated, depth);
+}
+
+double CaptureLimit::capturedOffSaturated(double saturated, double depth)
+{
+    // (1 - A)(1 - e^-X) through expm1: 1 - e^-X would keep only eps / X of its digits
+    // for the small depths of a sparse spray, and the removal would then differ from the
+    // grants formed from the same shares by more than round-off
+    return -std::max(0.0, 1.0 - saturated) * std::expm1(-depth);
 }
 
 template <class F>
@@ -84,7 +92,8 @@ void CaptureLimit::forEachRemovalShare(const ParcelReaches& reaches, std::size_t
     // r_pn / m_p: F w on a saturated node; the rest of c_p, (1 - A)(1 - e^-X), in
     // proportion to F w x_n over the others. Their sum is c_p (to round-off).
     const ParcelReach& entry = reaches.parcels[i];
-    const double rest = capturedFraction(saturated, depth) - std::min(1.0, saturated);
+    const double captured = capturedFraction(saturated, depth);
+    const double rest = captured == 1.0 ? 1.0 - std::min(1.0, saturated) : capturedOffSaturated(saturated, depth);
     const double perDepth = depth > 0.0 ? std::max(0.0, rest) / depth : 0.0;
     const std::vector<NodeValue>& nodes = depthNodes_.nodes();
     for (std::size_t k = entry.first; k < entry.first + entry.count; ++k)
