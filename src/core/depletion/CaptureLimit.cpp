@@ -290,6 +290,21 @@ bool CaptureLimit::mayTake(const IndexBox& box) const
     return false;
 }
 
+void CaptureLimit::scaleTakenFraction(std::size_t node, double q)
+{
+    const auto entry = taken_.find(node);
+    if (entry == taken_.end())
+    {
+        return; // nothing granted here: nothing realised either
+    }
+    takenNodesStale_ = true;
+    entry->second = q * entry->second;
+    if (!(entry->second > 0.0))
+    {
+        taken_.erase(entry); // its brick stays marked: mayTake() is a bound
+    }
+}
+
 double CaptureLimit::grantedRatio(std::size_t node) const
 {
     const auto entry = granted_.find(node);
@@ -355,10 +370,11 @@ std::vector<NodeMass> CaptureLimit::takenFractions() const
 
 void CaptureLimit::setTakenFraction(std::size_t node, double fraction, const std::array<int, 3>& gridNodes)
 {
-    if (!(fraction > 0.0 && fraction <= 1.0))
+    // Above 1 after discrete hits (RealisedCapture.hpp)
+    if (!(fraction > 0.0 && std::isfinite(fraction)))
     {
         throw std::invalid_argument("CaptureLimit::setTakenFraction: fraction at node " + std::to_string(node)
-                                    + " must be in (0, 1], got " + std::to_string(fraction));
+                                    + " must be finite and > 0, got " + std::to_string(fraction));
     }
     for (int d = 0; d < 3; ++d)
     {

@@ -144,6 +144,10 @@ public:
     // --- 3. removal -------------------------------------------------------------------------------
     // f_n (0 at nodes without demand).
     double takenFraction(std::size_t node) const;
+    // f_n <- q f_n at an owned node (discrete hits: q_n = realised / granted mass,
+    // RealisedCapture.hpp; f_n may then exceed 1, c_p stays <= 1); a node left at 0 is
+    // dropped.
+    void scaleTakenFraction(std::size_t node, double q);
     // The nodes with f_n > 0 known here and their f_n (NodeMass::mass holds f_n), in node order.
     std::vector<NodeMass> takenFractions() const;
     // f_n of a node owned elsewhere (its owner's takenFractions()): a block that has them

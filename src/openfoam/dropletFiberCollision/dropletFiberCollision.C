@@ -276,6 +276,13 @@ void Foam::functionObjects::dropletFiberCollision::reportSettings() const
         << "    collision: samples per segment " << collision_.samples
         << " (1: midpoint, 0: one per grid spacing), radiusAverage "
         << dropletFiber::radiusAverageName(collision_.radiusAverage)
+        << ", mode " << dropletFiber::collisionModeName(collision_.mode)
+        << (
+               collision_.mode == ::dropletFiber::CollisionMode::Discrete
+             ? " (Poisson droplet counts, seed "
+             + std::to_string(collision_.seed) + ")"
+             : std::string(" (eq. 9's mass every step)")
+           ).c_str()
         << ", depletion " << Switch(depletion_).c_str()
         << (
                depletion_
@@ -733,9 +740,10 @@ Foam::functionObjects::dropletFiberCollision::collide(const scalar dt)
     std::vector<int> samplesPerSegment;
     const std::vector<Eigen::Vector3d> points =
         collisionSamplePoints(samplesPerSegment);
-    // Depletion: each sample's interpolated mass sum and mass too
+    // Depletion: each sample's interpolated mass sum too; every sample's
+    // mass (the hits are counted per sample)
     std::vector<double> massSums;
-    std::vector<double> sampleMasses(depletion_ ? points.size() : 0);
+    std::vector<double> sampleMasses(points.size());
     const std::vector<::dropletFiber::DropletFieldValue> fields =
         blocks_->sample
         (
@@ -769,7 +777,7 @@ Foam::functionObjects::dropletFiberCollision::collide(const scalar dt)
                     segmentVelocity,
                     dt,
                     collision_,
-                    depletion_ ? sampleMasses.data() + next : nullptr
+                    sampleMasses.data() + next
                 );
             next += std::size_t(samples);
             capture[f][j].mass = c.mass;
@@ -780,10 +788,17 @@ Foam::functionObjects::dropletFiberCollision::collide(const scalar dt)
     warnSamplesOutside(samplesOutside);
     if (depletion_)
     {
-        limitCapture
-        (
-            fields, points, massSums, sampleMasses, samplesPerSegment, capture
-        );
+        const std::vector<double> granted =
+            limitCapture
+            (
+                fields, points, massSums, sampleMasses, samplesPerSegment,
+                capture
+            );
+        countHits(fields, granted, samplesPerSegment, capture);
+    }
+    else
+    {
+        countHits(fields, sampleMasses, samplesPerSegment, capture);
     }
     return capture;
 }
@@ -1212,6 +1227,7 @@ void Foam::functionObjects::dropletFiberCollision::reportAndWriteState
     if (time_.writeTime())
     {
         coreCall("writing the restart state", [this]() { writeState(); });
+        writeBinderDistribution();
         reportConservation();
         reportBinderBalance();
         depositReport_->reportAtWrite(time_.timeName());

@@ -33,7 +33,8 @@ Description
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::functionObjects::dropletFiberCollision::limitCapture
+std::vector<double>
+Foam::functionObjects::dropletFiberCollision::limitCapture
 (
     const std::vector<::dropletFiber::DropletFieldValue>& fields,
     const std::vector<Eigen::Vector3d>& points,
@@ -85,6 +86,7 @@ void Foam::functionObjects::dropletFiberCollision::limitCapture
     {
         depletionStep_.limitedDemand = report.massDemanded - report.massGranted;
     }
+    return granted;
 }
 
 

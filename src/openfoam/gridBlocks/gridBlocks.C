@@ -596,6 +596,9 @@ std::vector<double> Foam::dropletFiber::gridBlocks::grantCapture
     {
         granted[p] = limit.grantedMass(local[p]);
     }
+    grantLocal_ = local;
+    grantRemote_ = remote;
+    grantAskedFor_ = askedFor;
     if (!Pstream::parRun())
     {
         return granted;
