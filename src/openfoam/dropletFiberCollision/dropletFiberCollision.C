@@ -239,8 +239,7 @@ void Foam::functionObjects::dropletFiberCollision::reportSettings() const
 {
     const auto& g = gridSettings_.spec;
     const auto& kernel = gridSettings_.kernel;
-    Info<< type() << " " << name() << ":" << nl
-        << "    clouds: ";
+    Info<< type() << " " << name() << ":" << nl << "    clouds: ";
     if (cloudNames_.empty())
     {
         Info<< "all";
@@ -276,13 +275,7 @@ void Foam::functionObjects::dropletFiberCollision::reportSettings() const
         << "    collision: samples per segment " << collision_.samples
         << " (1: midpoint, 0: one per grid spacing), radiusAverage "
         << dropletFiber::radiusAverageName(collision_.radiusAverage)
-        << ", mode " << dropletFiber::collisionModeName(collision_.mode)
-        << (
-               collision_.mode == ::dropletFiber::CollisionMode::Discrete
-             ? " (Poisson droplet counts, seed "
-             + std::to_string(collision_.seed) + ")"
-             : std::string(" (eq. 9's mass every step)")
-           ).c_str()
+        << ", mode " << dropletFiber::collisionModeReport(collision_).c_str()
         << ", depletion " << Switch(depletion_).c_str()
         << (
                depletion_

@@ -129,6 +129,19 @@ Foam::word Foam::dropletFiber::collisionModeName
 }
 
 
+std::string Foam::dropletFiber::collisionModeReport
+(
+    const ::dropletFiber::CollisionOptions& options
+)
+{
+    return
+        options.mode == ::dropletFiber::CollisionMode::Discrete
+      ? "discrete (Poisson droplet counts, seed "
+      + std::to_string(options.seed) + ")"
+      : "expected (eq. 9's mass every step)";
+}
+
+
 Foam::word Foam::dropletFiber::radiusAverageName
 (
     const ::dropletFiber::RadiusAverage average
