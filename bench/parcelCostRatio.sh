@@ -6,8 +6,9 @@
 # call graphs, inclusive samples: a function's own and everything it calls,
 # OpenFOAM's and the C library's code included):
 #   per-parcel work: dropletFiberCollision::depositParcels (gathering the
-#     parcels, the deposit, the step into the window) + ::depleteParcels (the
-#     removal of the captured droplets), the parts that scale with the parcels;
+#     parcels, the deposit, the step into the window) + gridBlocks::removeCaptured
+#     (the parcels' depths and losses, P14) + ::depleteParcels (written back to
+#     the clouds), the parts that scale with the parcels;
 #   the whole function object: dropletFiberCollision::execute + ::write (the
 #     fibers, collision, air sampling and output included);
 #   OpenFOAM's tracking: KinematicCloud::evolveCloud (injection, tracking,
@@ -61,11 +62,12 @@ def inclusive(pattern):
     return max(hits) if hits else 0.0
 prefix = r"^Foam::functionObjects::dropletFiberCollision::"
 whole = inclusive(prefix + r"execute$") + inclusive(prefix + r"write$")
-parcels = inclusive(prefix + r"depositParcels$") + inclusive(prefix + r"depleteParcels$")
+parcels = (inclusive(prefix + r"depositParcels$") + inclusive(prefix + r"depleteParcels$")
+           + inclusive(r"^Foam::dropletFiber::gridBlocks::removeCaptured"))
 cloud = inclusive(r"KinematicCloud<.*>::evolveCloud<")
 if not cloud:
     sys.exit("parcelCostRatio: no evolveCloud samples in the profile")
 print(f"  OpenFOAM's tracking (evolveCloud): {cloud:.1f} % of the samples")
-print(f"  per-parcel work (depositParcels + depleteParcels): {parcels:.1f} %: ratio {parcels / cloud:.2f}")
+print(f"  per-parcel work (depositParcels + removeCaptured + depleteParcels): {parcels:.1f} %: ratio {parcels / cloud:.2f}")
 print(f"  whole function object (execute + write): {whole:.1f} %: ratio {whole / cloud:.2f}")
 PY

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -121,8 +122,11 @@ void CaptureLimit::clear()
 {
     demand_.clear();
     granted_.clear();
-    taken_.clear();
-    takenNodesStale_ = true;
+    depth_.clear();
+    depthNodes_.assign({}, gridNodes_);
+    removed_.clear();
+    saturated_.clear();
+    removalScale_.clear();
     takenBox_ = IndexBox{};
     forgetTakenBricks();
 }
@@ -177,25 +181,25 @@ std::vector<NodeMass> CaptureLimit::takeForeignDemand(const DensityGrid& grid)
     return foreign;
 }
 
-double CaptureLimit::interceptedFraction(const std::vector<double>& parts, double supply)
+double CaptureLimit::depthOf(const std::vector<double>& parts, double supply)
 {
     double logSurvival = 0.0;
     for (const double part : parts)
     {
         if (part >= supply)
         {
-            return 1.0; // one interceptor takes all the node holds
+            return std::numeric_limits<double>::infinity(); // one interceptor takes all
         }
         logSurvival += std::log1p(-part / supply);
     }
-    return -std::expm1(logSurvival);
+    return -logSurvival;
 }
 
 CaptureLimitReport CaptureLimit::limit(const DensityGrid& grid)
 {
     CaptureLimitReport report;
-    taken_.clear();
-    takenNodesStale_ = true;
+    depth_.clear();
+    granted_.clear();
     takenBox_ = IndexBox{};
     forgetTakenBricks();
     const std::array<int, 3> nodes = grid.spec().nodes;
@@ -205,6 +209,7 @@ CaptureLimitReport CaptureLimit::limit(const DensityGrid& grid)
         bricks_[static_cast<std::size_t>(d)]
             = static_cast<std::size_t>((nodes[d] + brickSize - 1) / brickSize);
     }
+    std::vector<NodeValue> list;
     for (const auto& [node, entry] : demand_)
     {
         if (!grid.owns(node))
@@ -212,39 +217,39 @@ CaptureLimitReport CaptureLimit::limit(const DensityGrid& grid)
             throw std::logic_error("CaptureLimit::limit: demand at node " + std::to_string(node)
                                    + ", which this grid does not own (takeForeignDemand first)");
         }
-        // s_n: the mass per step eq. 9 read at the node (the window's mean); h_n: what
-        // this step's parcels hold there. Each sample's part d_sn / s_n is the fraction of
-        // the node's droplets it intercepts over the step; independent interceptors leave
-        // prod (1 - min(1, d_sn / s_n)) (P13): exp(-x_n) for many thin fibers (x_n = d_n /
-        // s_n, the step's optical depth), 0 where one sample alone sweeps the node's mass.
-        // f_n of h_n is taken: eq. 9 to first order in x_n, in the mean over steps (h_n
-        // fluctuates about s_n in a sparse spray), exact in a uniform dense region (the
-        // linear min(1, x_n) lost kappa v dt / 2 too much), never more than the parcels hold.
-        const double demand = entry.total;
+        // s_n: the mass per step eq. 9 read at the node (the window's mean). Each sample's
+        // part d_sn / s_n is the fraction of the node's droplets it intercepts over the
+        // step; independent interceptors leave prod (1 - d_sn / s_n) (P13): exp(-x_n), x_n
+        // = d_n / s_n, for many thin fibers. The parcels cross these depths (remove).
         double sums[nQuantities];
         grid.windowTotal(node, sums);
         const int steps = grid.stepsInWindow();
         const double supply = steps > 0 ? sums[quantityMass] / steps : 0.0;
-        const double held = grid.lastStepValue(node, quantityMass);
-        const double taken = supply > 0.0 ? interceptedFraction(entry.parts, supply) : 0.0;
-        const double granted = taken * held;
-        granted_[node] = demand > 0.0 ? granted / demand : 1.0;
-        report.massDemanded += demand;
-        report.massGranted += granted;
-        report.nodesDemanded += demand > 0.0 ? 1 : 0;
-        report.nodesLimited += demand > supply ? 1 : 0;
-        if (granted > 0.0)
+        const double depth = supply > 0.0 ? depthOf(entry.parts, supply) : 0.0;
+        report.massDemanded += entry.total;
+        report.nodesDemanded += entry.total > 0.0 ? 1 : 0;
+        report.nodesLimited += entry.total > supply ? 1 : 0;
+        if (depth > 0.0)
         {
-            taken_[node] = taken;
+            depth_[node] = depth;
+            list.push_back(NodeValue{node, {}, std::isinf(depth) ? 0.0 : depth});
             markTaken(node, nodes);
         }
+    }
+    depthNodes_.assign(std::move(list), nodes);
+    const std::size_t held = depthNodes_.nodes().size();
+    removed_.assign(held, 0.0);
+    removalScale_.assign(held, 1.0);
+    saturated_.assign(held, 0);
+    for (std::size_t i = 0; i < held; ++i)
+    {
+        saturated_[i] = std::isinf(depth_.at(depthNodes_.nodes()[i].node)) ? 1 : 0;
     }
     return report;
 }
 
 void CaptureLimit::markTaken(std::size_t node, const std::array<int, 3>& nodes)
 {
-    takenNodesStale_ = true;
     IndexBox one;
     one.lo = one.hi = nodeIndicesOfFlat(nodes, node);
     takenBox_ = takenBox_.united(one);
@@ -290,40 +295,15 @@ bool CaptureLimit::mayTake(const IndexBox& box) const
     return false;
 }
 
-void CaptureLimit::scaleTakenFraction(std::size_t node, double q)
-{
-    const auto entry = taken_.find(node);
-    if (entry == taken_.end())
-    {
-        return; // nothing granted here: nothing realised either
-    }
-    takenNodesStale_ = true;
-    entry->second = q * entry->second;
-    if (!(entry->second > 0.0))
-    {
-        taken_.erase(entry); // its brick stays marked: mayTake() is a bound
-    }
-}
-
 double CaptureLimit::grantedRatio(std::size_t node) const
 {
     const auto entry = granted_.find(node);
     if (entry == granted_.end())
     {
         throw std::out_of_range("CaptureLimit: no granted ratio for node " + std::to_string(node)
-                                + " (no demand there, or its owner's answer was not set)");
+                                + " (no demand there, or grant() not called)");
     }
     return entry->second;
-}
-
-void CaptureLimit::setGrantedRatio(std::size_t node, double ratio)
-{
-    if (!(ratio >= 0.0 && ratio <= 1.0))
-    {
-        throw std::invalid_argument("CaptureLimit::setGrantedRatio: ratio at node " + std::to_string(node)
-                                    + " must be in [0, 1], got " + std::to_string(ratio));
-    }
-    granted_[node] = ratio;
 }
 
 double CaptureLimit::grantedMass(const SampleCapture& sample) const
@@ -351,101 +331,10 @@ SegmentCollision CaptureLimit::granted(const SegmentCapture& segment) const
     return result;
 }
 
-double CaptureLimit::takenFraction(std::size_t node) const
+double CaptureLimit::opticalDepth(std::size_t node) const
 {
-    const auto entry = taken_.find(node);
-    return entry == taken_.end() ? 0.0 : entry->second;
-}
-
-std::vector<NodeMass> CaptureLimit::takenFractions() const
-{
-    // taken_ in node order, as the sparse sums keep it
-    std::vector<NodeMass> fractions;
-    for (const NodeValue& entry : takenNodes().nodes())
-    {
-        fractions.push_back(NodeMass{entry.node, entry.value});
-    }
-    return fractions;
-}
-
-void CaptureLimit::setTakenFraction(std::size_t node, double fraction, const std::array<int, 3>& gridNodes)
-{
-    // Above 1 after discrete hits (RealisedCapture.hpp)
-    if (!(fraction > 0.0 && std::isfinite(fraction)))
-    {
-        throw std::invalid_argument("CaptureLimit::setTakenFraction: fraction at node " + std::to_string(node)
-                                    + " must be finite and > 0, got " + std::to_string(fraction));
-    }
-    for (int d = 0; d < 3; ++d)
-    {
-        bricks_[static_cast<std::size_t>(d)]
-            = static_cast<std::size_t>((gridNodes[d] + brickSize - 1) / brickSize);
-    }
-    taken_[node] = fraction;
-    gridNodes_ = gridNodes;
-    markTaken(node, gridNodes);
-}
-
-bool CaptureLimit::mayReach(const GridSpec& spec, const KernelSettings& kernel, const Parcel& parcel,
-                            double dt) const
-{
-    // Before the parcel's kernel is built: its nodes lie within r_max (or the cap) of its
-    // whole path, its cloud-in-cell corners within a spacing; mirrored ghost nodes are
-    // nearer still. So a parcel whose path, grown by that, misses takenBox() takes nothing.
-    double margin = influenceRadiusMax(0.5 * parcel.diameter, parcel.nParticle);
-    margin = kernel.rMaxCap > 0.0 ? std::min(margin, kernel.rMaxCap) : margin;
-    const Eigen::Vector3d end = parcel.position;
-    const Eigen::Vector3d start = parcel.position - parcel.velocity * dt;
-    IndexBox reached;
-    for (int d = 0; d < 3; ++d)
-    {
-        if (spec.flat(d))
-        {
-            reached.lo[d] = reached.hi[d] = 0;
-            continue;
-        }
-        const double h = spec.spacing(d);
-        const double grown = std::max(margin, h);
-        const double a = (std::min(start[d], end[d]) - grown - spec.lower[d]) / h;
-        const double b = (std::max(start[d], end[d]) + grown - spec.lower[d]) / h;
-        reached.lo[d] = static_cast<int>(std::max(std::floor(a), -1.0));
-        reached.hi[d] = static_cast<int>(std::min(std::ceil(b), static_cast<double>(spec.nodes[d])));
-        if (reached.hi[d] < takenBox_.lo[d] || reached.lo[d] > takenBox_.hi[d])
-        {
-            return false; // most parcels, far from the fibers: no box arithmetic
-        }
-    }
-    return mayTake(reached.intersected(spec.fullBox()));
-}
-
-double CaptureLimit::capturedFraction(DensityGrid& grid, const Parcel& parcel, double dt) const
-{
-    if (taken_.empty())
-    {
-        return 0.0;
-    }
-    if (!mayReach(grid.spec(), grid.kernelSettings(), parcel, dt))
-    {
-        return 0.0;
-    }
-    const DensityGrid::NodeBoxTest asks = [this](const IndexBox& box) { return mayTake(box); };
-    return std::min(1.0, grid.depositedShare(parcel, dt, asks, takenNodes()));
-}
-
-const SparseNodeValues& CaptureLimit::takenNodes() const
-{
-    if (takenNodesStale_)
-    {
-        std::vector<NodeValue> nodes;
-        nodes.reserve(taken_.size());
-        for (const auto& [node, fraction] : taken_)
-        {
-            nodes.push_back(NodeValue{node, {}, fraction});
-        }
-        takenNodes_.assign(std::move(nodes), gridNodes_);
-        takenNodesStale_ = false;
-    }
-    return takenNodes_;
+    const auto entry = depth_.find(node);
+    return entry == depth_.end() ? 0.0 : entry->second;
 }
 
 } // namespace dropletFiber

@@ -6,43 +6,49 @@
 //     corner densities; its captured mass m_s (eq. 9) is split over the corners in
 //     proportion to (corner weight x corner density), d_sc = m_s w_c rho_c / sum w rho
 //     (attributeSample), and added per node: d_n = sum of the d_sc at node n (addDemand).
-//  2. Limit (P13). Eq. 9 read the window's mass per step at the node, s_n (its mean over
-//     the window's steps); this step's parcels hold h_n there (DensityGrid::lastStepValue,
-//     the newest committed step). Each sample's part intercepts the fraction d_sn / s_n of
-//     the node's droplets over the step, independently of the others; limit() sets per node
-//         f_n = 1 - prod_s (1 - min(1, d_sn / s_n))   taken fraction of h_n (0 where
-//               s_n = 0): exp(-x_n) for many thin fibers, x_n = d_n / s_n the step's
-//               optical depth (the droplets survive the step's rate); 1 where one sample
-//               alone sweeps more than the node holds
-//         g_n = f_n h_n / d_n   granted ratio (> 1 where this step holds more than
-//                               the mean: eq. 9 is met in the mean over steps, to O(x_n))
-//     and a sample's mass becomes sum_c d_sc g_{n_c} (grantedMass), its momentum that
-//     times the sample's droplet velocity. Captured = sum_n f_n h_n <= sum_n h_n. In a
-//     uniform dense region the survival is exact at any time step; where the rate
-//     changes within a step's reach (a mat's faces) a parcel passes more by Var(x) / 2
-//     per step (P18), first order in dt.
-//  3. Removal (P14). Parcel p, which deposited w_pn F_p of its mass on node n (the
-//     deposit's weight times the part of the step inside the box), loses the fraction
-//         c_p = sum_n w_pn F_p f_n
-//     of its droplets (capturedFraction; nParticle *= 1 - c_p, droplet size and velocity
-//     unchanged). Removed = sum_p c_p m_p = sum_n f_n h_n: the mass
-//     the fibers capture equals the mass leaving the spray, to round-off.
+//  2. Optical depth (P13). Eq. 9 read the window's mass per step at the node, s_n (its
+//     mean over the window's steps). Each sample's part d_sn / s_n is the fraction of the
+//     node's droplets it intercepts over the step, independently of the others; limit()
+//     sets per node the step's optical depth
+//         x_n = -ln prod_s (1 - d_sn / s_n)   (sum_s d_sn / s_n = d_n / s_n for thin fibers;
+//                                              0 where s_n = 0), or "saturated" where one
+//                                              sample alone sweeps more than the node holds
+//  3. Removal, per parcel (P14). Parcel p, which deposited w_pn F_p of its mass on node n
+//     (the deposit's weight times the part of the step inside the box), crosses the depth
+//     X_p = F_p sum_n w_pn x_n over the unsaturated nodes and loses its share on the
+//     saturated ones, A_p = F_p sum_n w_pn there:
+//         c_p = 1 - (1 - A_p) exp(-X_p)                         (capturedFraction)
+//     of its droplets (nParticle *= 1 - c_p, droplet size and velocity unchanged). Its loss
+//     is attributed to the nodes: r_pn = m_p F_p w_pn on a saturated node, and
+//     r_pn = m_p (1 - A_p)(1 - exp(-X_p)) F_p w_pn x_n / X_p on the others (remove); the
+//     node's removed mass R_n = sum_p r_pn. A parcel keeps exp(-sum w x), not
+//     sum w exp(-x): no error where the rate changes within its step's reach (a mat's
+//     faces); what is left is second order in dt (docs/model.md sec. 7, P18).
+//  4. Grant. g_n = R_n / d_n (grant) and a sample's mass becomes sum_c d_sc g_{n_c}
+//     (grantedMass), its momentum that times the sample's droplet velocity. Captured =
+//     sum_n R_n = sum_p c_p m_p, removed: to round-off.
 //
 // The averaging window is not changed: it holds what was deposited (the window's later
 // steps see the depleted parcels).
 //
 // Parallel runs (grid blocks, DensityGrid.hpp): demand at a node is kept by its owner
 // (takeForeignDemand -> send -> addDemand); limit() runs on each block over its owned
-// nodes; g_n of remote corners is asked of their owners (grantedRatio there,
-// setGrantedRatio here); c_p is a sum over nodes, so each block evaluates the part over
-// the nodes it owns for every parcel whose deposit box (DensityGrid::depositBox) meets its
-// takenBox(), and the parts of one parcel from several blocks add up (clamp the sum to 1);
-// or a block imports the owners' f_n (takenFractions -> setTakenFraction) for the nodes its
-// parcels' deposit boxes reach and evaluates whole c_p itself.
+// nodes. A_p and X_p are sums over nodes: each block evaluates their parts over the nodes
+// it owns (reach) for every parcel whose deposit box (DensityGrid::depositBox) meets its
+// takenBox(); the parts of one parcel from several blocks add up on the parcel's
+// processor, which forms c_p and sends (A_p, X_p) back to the blocks holding its copies;
+// each block then attributes the removal to its nodes (remove) and grants (grant), and
+// answers the samples' owners with their granted parts.
+//
+// Discrete hits: where the fibers realise at node n q_n times the granted R_n, the
+// parcels must lose sum_n r_pn q_n instead: scaleRemoval(node, q_n) on the owner, then
+// removedFraction() over the blocks (the parts add up) replaces c_p; with every q_n = 1
+// (expected hits) it is c_p to round-off.
 #pragma once
 
 #include "collision/CollisionMass.hpp"
 #include "grid/DensityGrid.hpp"
+#include "grid/DepositedShare.hpp"
 #include "grid/MultilinearWeights.hpp"
 #include "grid/SparseNodeValues.hpp"
 
@@ -85,9 +91,9 @@ struct NodeMass
 struct CaptureLimitReport
 {
     std::int64_t nodesDemanded = 0; // nodes with demand > 0
-    std::int64_t nodesLimited = 0;  // of which demand > the window's mass per step (f_n = 1)
+    std::int64_t nodesLimited = 0;  // of which demand > the window's mass per step (x_n > 1)
     double massDemanded = 0.0;      // sum d_n (eq. 9 without the limit), kg
-    double massGranted = 0.0;       // sum f_n h_n: captured, and removed from the spray, kg
+    double massGranted = 0.0;       // sum R_n: captured, and removed from the spray, kg
 
     CaptureLimitReport& operator+=(const CaptureLimitReport& other);
 };
@@ -113,6 +119,27 @@ SegmentCapture segmentCapture(const DensityGrid& grid, const Eigen::Vector3d& a,
                               double fiberRadius, const Eigen::Vector3d& segmentVelocity, double dt,
                               const CollisionOptions& options = CollisionOptions{});
 
+// One parcel's reach into the nodes with depth (the nodes a block owns): the parts of its
+// saturated share A_p and optical depth X_p, and its weights at those nodes.
+struct ParcelReach
+{
+    double saturated = 0.0;           // F_p sum w_pn over the saturated nodes
+    double depth = 0.0;               // F_p sum w_pn x_n over the others
+    std::size_t first = 0, count = 0; // its weights in ParcelReaches::weights
+};
+
+// The reaches of a step's parcels, in the order evaluated (reach() appends one each).
+struct ParcelReaches
+{
+    std::vector<ParcelReach> parcels;
+    std::vector<NodeWeight> weights; // F_p w_pn, per node with depth (CaptureLimit's places)
+    void clear()
+    {
+        parcels.clear();
+        weights.clear();
+    }
+};
+
 class CaptureLimit
 {
 public:
@@ -127,52 +154,66 @@ public:
     // call's part apart (the owner multiplies their survivals, P13), in the order added.
     std::vector<NodeMass> takeForeignDemand(const DensityGrid& grid);
 
-    // --- 2. the limit, on the owner ------------------------------------------------------------
-    // f_n and g_n of every node with demand, from the grid's newest committed step. Throws
-    // std::logic_error if demand at a node the grid does not own is left.
+    // --- 2. optical depth, on the owner ----------------------------------------------------
+    // x_n of every node with demand, from the window's mass per step. Throws
+    // std::logic_error if demand at a node the grid does not own is left. The report's
+    // massGranted is grant()'s.
     CaptureLimitReport limit(const DensityGrid& grid);
-    // g_n of a node with demand (limit() on its owner, or setGrantedRatio); throws
-    // std::out_of_range for a node without one.
+    // x_n (0 at nodes without demand or supply; infinity where saturated).
+    double opticalDepth(std::size_t node) const;
+    // The owned nodes with x_n > 0 (a block tells the others; empty: nothing to remove here).
+    const IndexBox& takenBox() const { return takenBox_; }
+    // True when the box (grid indices) may hold a node with x_n > 0: it meets a brick of
+    // brickSize^3 nodes that holds one.
+    bool mayTake(const IndexBox& box) const;
+    static constexpr int brickSize = 4;
+
+    // --- 3. removal ---------------------------------------------------------------------------
+    // Appends the parcel's reach over the nodes this block owns (the whole grid: A_p and X_p
+    // themselves). The same parcel and dt as deposited this step. A parcel whose deposit
+    // nodes meet no brick with x_n > 0 costs a clip and a box, not its weights; the others'
+    // weights are evaluated at the nodes with x_n > 0 only (DensityGrid::depositedShare).
+    void reach(DensityGrid& grid, const Parcel& parcel, double dt, ParcelReaches& reaches) const;
+    // c_p = 1 - (1 - A_p) exp(-X_p) from the whole A_p and X_p; 1 within 1e-12 of it.
+    static double capturedFraction(double saturated, double depth);
+    // The loss of parcel i of reaches (mass m_p, whole A_p and X_p) attributed to this
+    // block's nodes: R_n += r_pn.
+    void remove(const ParcelReaches& reaches, std::size_t i, double mass, double saturated, double depth);
+    // --- 4. grant ------------------------------------------------------------------------------
+    // g_n = R_n / d_n at every node with demand (1 where d_n = 0); report.massGranted = sum R_n.
+    void grant(CaptureLimitReport& report);
+    // g_n of a node with demand (grant() on its owner); throws std::out_of_range for a node
+    // without one.
     double grantedRatio(std::size_t node) const;
-    // g_n of a node owned elsewhere (its owner's answer).
-    void setGrantedRatio(std::size_t node, double ratio);
     // The sample's mass after the limit: sum_c d_sc g_{n_c}; momentum = that * velocity.
     double grantedMass(const SampleCapture& sample) const;
     // The segment's mass and momentum after the limit.
     SegmentCollision granted(const SegmentCapture& segment) const;
 
-    // --- 3. removal -------------------------------------------------------------------------------
-    // f_n (0 at nodes without demand).
-    double takenFraction(std::size_t node) const;
-    // f_n <- q f_n at an owned node (discrete hits: q_n = realised / granted mass,
-    // RealisedCapture.hpp; f_n may then exceed 1, c_p stays <= 1); a node left at 0 is
-    // dropped.
-    void scaleTakenFraction(std::size_t node, double q);
-    // The nodes with f_n > 0 known here and their f_n (NodeMass::mass holds f_n), in node order.
-    std::vector<NodeMass> takenFractions() const;
-    // f_n of a node owned elsewhere (its owner's takenFractions()): a block that has them
-    // for every node its parcels' deposit boxes reach evaluates their whole c_p itself,
-    // instead of sending them to the owners.
-    void setTakenFraction(std::size_t node, double fraction, const std::array<int, 3>& gridNodes);
-    // The owned nodes with f_n > 0 (a block tells the others; empty: nothing to remove here).
-    const IndexBox& takenBox() const { return takenBox_; }
-    // True when the box (grid indices) may hold a node with f_n > 0: it meets a brick of
-    // brickSize^3 nodes that holds one.
-    bool mayTake(const IndexBox& box) const;
-    // c_p over the nodes this block owns (the whole grid: c_p itself), in [0, 1]. The same
-    // parcel and dt as deposited this step. A parcel whose deposit nodes meet no brick
-    // with f_n > 0 costs a clip and a box, not its weights; the others' weights are
-    // evaluated at the nodes with f_n > 0 only (DensityGrid::depositedShare, sparse).
-    double capturedFraction(DensityGrid& grid, const Parcel& parcel, double dt) const;
-    static constexpr int brickSize = 4;
+    // Serial runs (one grid owning every node): reach, c_p, remove for every parcel, then
+    // grant; returns c_p per parcel. The reaches kept in *kept if given (discrete hits,
+    // RealisedCapture.hpp).
+    std::vector<double> removeFromParcels(DensityGrid& grid, const std::vector<Parcel>& parcels, double dt,
+                                          CaptureLimitReport& report, ParcelReaches* kept = nullptr);
+
+    // --- discrete hits: a per-node factor on the removal -----------------------------------
+    // The fibers realised q times the granted R_n at an owned node (after grant()).
+    void scaleRemoval(std::size_t node, double q);
+    // sum_n r_pn q_n / m_p over this block's nodes for parcel i (whole A_p and X_p): the
+    // parts add up over the blocks to the fraction parcel p must lose (c_p where every q_n = 1).
+    double removedFraction(const ParcelReaches& reaches, std::size_t i, double saturated, double depth) const;
 
 private:
-    // False when the parcel's deposit cannot reach a node with f_n > 0 (a cheap bound from
+    // r_pn / m_p at each of parcel i's nodes here, in the order reached: f(place, share).
+    template <class F>
+    void forEachRemovalShare(const ParcelReaches& reaches, std::size_t i, double saturated, double depth,
+                             F&& f) const;
+    // False when the parcel's deposit cannot reach a node with x_n > 0 (a cheap bound from
     // r_max, checked before its weights are evaluated).
     bool mayReach(const GridSpec& spec, const KernelSettings& kernel, const Parcel& parcel, double dt) const;
     // Clears takenBrick_ (the bricks set only).
     void forgetTakenBricks();
-    // f_n > 0 at the node: takenBox_ and its brick.
+    // x_n > 0 at the node: takenBox_ and its brick.
     void markTaken(std::size_t node, const std::array<int, 3>& nodes);
     std::size_t brickIndex(int i, int j, int k) const
     {
@@ -186,20 +227,22 @@ private:
         double total = 0.0;
         std::vector<double> parts;
     };
-    // f_n = 1 - prod (1 - min(1, d_sn / s_n)) (P13)
-    static double interceptedFraction(const std::vector<double>& parts, double supply);
+    // x_n = -ln prod (1 - d_sn / s_n) (P13); infinity where a part is >= s_n
+    static double depthOf(const std::vector<double>& parts, double supply);
     std::unordered_map<std::size_t, NodeDemand> demand_;
     std::unordered_map<std::size_t, double> granted_; // g_n
-    std::unordered_map<std::size_t, double> taken_;   // f_n > 0, owned nodes
-    // taken_ in node order with grid indices (capturedFraction's sums), built on first use
-    // after taken_ changed; 40 bytes per node with f_n > 0.
-    const SparseNodeValues& takenNodes() const;
-    mutable SparseNodeValues takenNodes_;
-    mutable bool takenNodesStale_ = true;
-    std::array<int, 3> gridNodes_{}; // the grid's nodes per direction (limit, setTakenFraction)
+    std::unordered_map<std::size_t, double> depth_;   // x_n > 0, owned nodes
+    // depth_ in node order with grid indices (the parcels' sums; value x_n, 0 where
+    // saturated), built by limit(); per place the removed mass R_n, whether saturated, and
+    // the removal's factor q_n. 40 + 17 bytes per node with x_n > 0.
+    SparseNodeValues depthNodes_;
+    std::vector<double> removed_;
+    std::vector<unsigned char> saturated_;
+    std::vector<double> removalScale_;
+    std::array<int, 3> gridNodes_{}; // the grid's nodes per direction
     IndexBox takenBox_;
     std::array<std::size_t, 3> bricks_{};     // per direction, over the grid
-    std::vector<unsigned char> takenBrick_;   // per brick of the grid: 1 when it holds f_n > 0
+    std::vector<unsigned char> takenBrick_;   // per brick of the grid: 1 when it holds x_n > 0
     std::vector<std::size_t> takenBrickList_; // the bricks set, to clear them
 };
 

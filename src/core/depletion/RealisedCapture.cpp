@@ -1,9 +1,17 @@
 #include "depletion/RealisedCapture.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace dropletFiber
 {
+
+namespace
+{
+// A parcel left with less than this fraction of its droplets has lost them all
+// (CaptureLimitRemoval.cpp's rule for c_p)
+constexpr double allCapturedWithin = 1e-12;
+} // namespace
 
 void RealisedCapture::add(const SampleCapture& sample, double realisedOverGranted, const CaptureLimit& limit)
 {
@@ -27,7 +35,7 @@ void RealisedCapture::scaleRemoval(CaptureLimit& limit) const
     {
         if (parts.granted > 0.0)
         {
-            limit.scaleTakenFraction(node, parts.realised / parts.granted);
+            limit.scaleRemoval(node, parts.realised / parts.granted);
         }
     }
 }
@@ -40,6 +48,23 @@ double RealisedCapture::realisedMass() const
         sum += entry.second.realised;
     }
     return sum;
+}
+
+double realisedRemoval(double summedParts)
+{
+    // The whole-droplet excess of P32 stays with the fibers
+    return summedParts > 1.0 - allCapturedWithin ? 1.0 : std::max(0.0, summedParts);
+}
+
+std::vector<double> realisedFractions(const CaptureLimit& limit, const ParcelReaches& reaches)
+{
+    std::vector<double> fraction(reaches.parcels.size(), 0.0);
+    for (std::size_t p = 0; p < reaches.parcels.size(); ++p)
+    {
+        const ParcelReach& entry = reaches.parcels[p];
+        fraction[p] = realisedRemoval(limit.removedFraction(reaches, p, entry.saturated, entry.depth));
+    }
+    return fraction;
 }
 
 } // namespace dropletFiber

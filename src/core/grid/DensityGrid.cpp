@@ -114,8 +114,25 @@ double DensityGrid::depositedShare(const Parcel& parcel, double dt, const NodeBo
     return shareOf(parcel, dt, sink);
 }
 
+double DensityGrid::depositedShare(const Parcel& parcel, double dt, const NodeBoxTest& asks,
+                                   const SparseNodeValues& fractions, std::vector<NodeWeight>& weights)
+{
+    StepStatistics unused;
+    SparseFractionSum sink(unused, asks, fractions, spec_.nodes);
+    const std::size_t first = weights.size();
+    sink.keepWeights(&weights);
+    double inside = 0.0;
+    const double share = shareOf(parcel, dt, sink, &inside);
+    // The weights as the sum has them, times the part of the step inside the box
+    for (std::size_t i = first; i < weights.size(); ++i)
+    {
+        weights[i].weight *= inside;
+    }
+    return share;
+}
+
 template <class Sink>
-double DensityGrid::shareOf(const Parcel& parcel, double dt, Sink& sink)
+double DensityGrid::shareOf(const Parcel& parcel, double dt, Sink& sink, double* inside)
 {
     checkParcel(parcel, dt);
     if (emptyParcel(parcel))
@@ -129,6 +146,10 @@ double DensityGrid::shareOf(const Parcel& parcel, double dt, Sink& sink)
         return 0.0;
     }
     weights_.weigh(parcel, path, sink);
+    if (inside != nullptr)
+    {
+        *inside = path.fraction;
+    }
     return path.fraction * sink.sum();
 }
 

@@ -140,6 +140,10 @@ public:
     // the exact code's weighted nodes merged with them (both in node order), no per-node call.
     double depositedShare(const Parcel& parcel, double dt, const NodeBoxTest& asks,
                           const SparseNodeValues& fractions);
+    // The same, and the parcel's weight w_n f at each of those nodes appended to weights
+    // (their places in fractions.nodes(); the sum is sum over them of weight x value).
+    double depositedShare(const Parcel& parcel, double dt, const NodeBoxTest& asks,
+                          const SparseNodeValues& fractions, std::vector<NodeWeight>& weights);
     // The deposits from now on keep the separable tables of the parcels whose (folded)
     // weighted box meets `region` (grid indices; empty: none, the default), for the sparse
     // depositedShare of the same step (KeptTables.hpp). Only the time of depositedShare
@@ -270,9 +274,9 @@ public:
 
 private:
     // depositedShare's steps: deposit()'s, the weights into the sink's sum (the part f of
-    // the step inside the box times it).
+    // the step inside the box times it; that part into *inside if given).
     template <class Sink>
-    double shareOf(const Parcel& parcel, double dt, Sink& sink);
+    double shareOf(const Parcel& parcel, double dt, Sink& sink, double* inside = nullptr);
     // restoreWindow() from a deposit log: its steps deposited again and committed.
     void replayLog(const WindowState& state);
 

@@ -55,6 +55,7 @@ void SparseFractionSum::addListed(const NodeOmegas& weightedNodes, double invers
         if (next->node == node)
         {
             sum_ += omega * inverseSum * next->value;
+            keep(static_cast<std::size_t>(next - nodes.begin()), omega * inverseSum);
         }
     }
     statistics().nodesWeighted += static_cast<std::int64_t>(weightedNodes.size());
@@ -75,9 +76,20 @@ void SparseFractionSum::addSeparable(SeparableWeight& rows, const SeparableTable
                              if (weight > 0.0)
                              {
                                  sum_ += weight * node.value;
+                                 keep(static_cast<std::size_t>(&node - fractions_.nodes().data()), weight);
                                  statistics().nodesWeighted += 1;
                              }
                          });
+}
+
+void SparseFractionSum::add(std::size_t node, double weight)
+{
+    const std::size_t position = fractions_.position(node);
+    if (position < fractions_.nodes().size())
+    {
+        sum_ += weight * fractions_.nodes()[position].value;
+        keep(position, weight);
+    }
 }
 
 } // namespace dropletFiber

@@ -36,6 +36,13 @@ double SparseNodeValues::at(std::size_t node) const
     return entry != nodes_.end() && entry->node == node ? entry->value : 0.0;
 }
 
+std::size_t SparseNodeValues::position(std::size_t node) const
+{
+    const auto entry = lowerBound(nodes_.begin(), node);
+    return entry != nodes_.end() && entry->node == node ? static_cast<std::size_t>(entry - nodes_.begin())
+                                                        : nodes_.size();
+}
+
 std::vector<NodeValue>::const_iterator
 SparseNodeValues::lowerBound(std::vector<NodeValue>::const_iterator from, std::size_t node) const
 {

@@ -35,6 +35,8 @@ public:
     void assign(std::vector<NodeValue> nodes, const std::array<int, 3>& gridNodes);
     // The value at a node (0 where none is held): a binary search.
     double at(std::size_t node) const;
+    // The node's place in nodes() (nodes().size() where none is held): a binary search.
+    std::size_t position(std::size_t node) const;
     // The held nodes inside the box (grid indices, within the grid of `gridNodes` nodes per
     // direction), in node order: per layer k of the box, the range between its first and last
     // node, filtered.

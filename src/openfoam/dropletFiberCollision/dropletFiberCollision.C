@@ -784,7 +784,7 @@ Foam::functionObjects::dropletFiberCollision::collide(const scalar dt)
         const std::vector<double> granted =
             limitCapture
             (
-                fields, points, massSums, sampleMasses, samplesPerSegment,
+                fields, points, massSums, sampleMasses, samplesPerSegment, dt,
                 capture
             );
         countHits(fields, granted, samplesPerSegment, capture);

@@ -41,6 +41,7 @@ Foam::functionObjects::dropletFiberCollision::limitCapture
     const std::vector<double>& massSums,
     const std::vector<double>& sampleMasses,
     const std::vector<int>& samplesPerSegment,
+    const scalar dt,
     ::dropletFiber::CaptureSources& capture
 )
 {
@@ -59,7 +60,8 @@ Foam::functionObjects::dropletFiberCollision::limitCapture
     const std::vector<double> granted =
         blocks_->grantCapture
         (
-            *grid_, points, shares, captureLimit_, report, parallelStatistics_
+            *grid_, points, shares, stepParcels_, dt, captureLimit_, report,
+            stepCaptured_, parallelStatistics_
         );
     depletionStep_ = depletionSummary();
     depletionStep_.demanded = demanded;
@@ -144,11 +146,9 @@ void Foam::functionObjects::dropletFiberCollision::depleteParcels
     const scalar dt
 )
 {
-    std::vector<double> fraction =
-        blocks_->capturedFractions
-        (
-            *grid_, captureLimit_, stepParcels_, dt, parallelStatistics_
-        );
+    // c_p of this processor's parcels, from limitCapture (the removal
+    // came before the grants)
+    std::vector<double> fraction = stepCaptured_;
     const scalar kept = writeBackToClouds(fraction);
     keepRemoval(fraction);
     // What left the parcels written back, and what flies on

@@ -10,7 +10,7 @@ Description
     fiber id, segment, sample, time index), whose mass N m_hit and momentum
     N m_hit u_droplet the segment receives instead of the expected ones.
     With depletion the parcels lose what was realised (gridBlocks::
-    realiseCapture scales each node's taken fraction by q_n).
+    realiseCapture scales each parcel's part of a node's removal by q_n).
 
 \*---------------------------------------------------------------------------*/
 
@@ -81,7 +81,9 @@ void Foam::functionObjects::dropletFiberCollision::countHits
     }
     if (realise)
     {
-        blocks_->realiseCapture(captureLimit_, ratios, parallelStatistics_);
+        // The parcels lose what was realised instead of c_p (P31)
+        stepCaptured_ =
+            blocks_->realiseCapture(captureLimit_, ratios, parallelStatistics_);
     }
 }
 

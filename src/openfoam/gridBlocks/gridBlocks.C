@@ -545,11 +545,14 @@ void Foam::dropletFiber::gridBlocks::attributeDemand
 
 std::vector<double> Foam::dropletFiber::gridBlocks::grantCapture
 (
-    const ::dropletFiber::DensityGrid& grid,
+    ::dropletFiber::DensityGrid& grid,
     const std::vector<Eigen::Vector3d>& points,
     const std::vector<double>& massShares,
+    const std::vector<::dropletFiber::Parcel>& parcels,
+    const double dt,
     ::dropletFiber::CaptureLimit& limit,
     ::dropletFiber::CaptureLimitReport& report,
+    std::vector<double>& captured,
     parallelStatistics& statistics
 )
 {
@@ -589,8 +592,10 @@ std::vector<double> Foam::dropletFiber::gridBlocks::grantCapture
             }
         }
     }
-    // P13 on the nodes owned here, then each request's granted part back
+    // P13 on the nodes owned here, the parcels' removal (P14), then each
+    // request's granted part back
     report = limit.limit(grid);
+    captured = removeCaptured(grid, limit, parcels, dt, report, statistics);
     std::vector<double> granted(points.size(), 0.0);
     for (std::size_t p = 0; p < points.size(); ++p)
     {
@@ -624,66 +629,136 @@ std::vector<double> Foam::dropletFiber::gridBlocks::grantCapture
 }
 
 
-std::vector<double> Foam::dropletFiber::gridBlocks::capturedFractions
+std::vector<double> Foam::dropletFiber::gridBlocks::removeCaptured
 (
     ::dropletFiber::DensityGrid& grid,
-    const ::dropletFiber::CaptureLimit& limit,
+    ::dropletFiber::CaptureLimit& limit,
     const std::vector<::dropletFiber::Parcel>& parcels,
     const double dt,
+    ::dropletFiber::CaptureLimitReport& report,
     parallelStatistics& statistics
 )
 {
-    // c_p over this block's nodes for its own parcels
-    std::vector<double> fraction(parcels.size(), 0.0);
-    for (std::size_t p = 0; p < parcels.size(); ++p)
+    // A_p and X_p over this block's nodes: its parcels, then the copies
+    reaches_.clear();
+    for (const ::dropletFiber::Parcel& parcel : parcels)
     {
-        fraction[p] = limit.capturedFraction(grid, parcels[p], dt);
+        limit.reach(grid, parcel, dt, reaches_);
     }
+    for (const ::dropletFiber::Parcel& copy : copies_)
+    {
+        limit.reach(grid, copy, dt, reaches_);
+    }
+    const std::size_t own = parcels.size();
+    std::vector<double> saturated(own, 0.0);
+    std::vector<double> depth(own, 0.0);
+    for (std::size_t p = 0; p < own; ++p)
+    {
+        saturated[p] = reaches_.parcels[p].saturated;
+        depth[p] = reaches_.parcels[p].depth;
+    }
+    std::vector<double> copySums;
     if (Pstream::parRun())
     {
-        addCopiesFractions(grid, limit, dt, fraction, statistics);
+        exchangeReachSums(own, saturated, depth, copySums, statistics);
     }
-    // Clamped; a parcel left with a round-off's share of its droplets (the
-    // weights of a parcel whose nodes all gave everything sum to 1 within
-    // ~1e-16) has lost them all
-    for (double& f : fraction)
+    // c_p from the whole sums; each block attributes the losses to its nodes
+    std::vector<double> captured(own, 0.0);
+    for (std::size_t p = 0; p < own; ++p)
     {
-        f = f > 1 - allCapturedWithin ? 1.0 : f;
-    }
-    return fraction;
-}
-
-
-void Foam::dropletFiber::gridBlocks::addCopiesFractions
-(
-    ::dropletFiber::DensityGrid& grid,
-    const ::dropletFiber::CaptureLimit& limit,
-    const double dt,
-    std::vector<double>& fraction,
-    parallelStatistics& statistics
-)
-{
-    // The copies received, their parts sent back in the order
-    // received
-    std::size_t next = 0;
-    forAll(outgoing_, proci)
-    {
-        outgoing_[proci].clear();
-        for (std::size_t i = 0; i < copiesFrom_[proci]; ++i)
+        captured[p] =
+            ::dropletFiber::CaptureLimit::capturedFraction(saturated[p], depth[p]);
+        if (reaches_.parcels[p].count > 0)
         {
-            outgoing_[proci].append
+            limit.remove
             (
-                limit.capturedFraction(grid, copies_[next++], dt)
+                reaches_, p, ::dropletFiber::parcelMass(parcels[p]),
+                saturated[p], depth[p]
             );
         }
     }
-    const List<List<scalar>> parts =
-        exchangeLists(statistics, parallelStatistics::traffic::parcels);
+    for (std::size_t c = 0; c < copies_.size(); ++c)
+    {
+        if (reaches_.parcels[own + c].count > 0)
+        {
+            limit.remove
+            (
+                reaches_, own + c, ::dropletFiber::parcelMass(copies_[c]),
+                copySums[2*c], copySums[2*c + 1]
+            );
+        }
+    }
+    limit.grant(report);
+    keepWholeReachSums(saturated, depth, copySums);
+    return captured;
+}
+
+
+void Foam::dropletFiber::gridBlocks::keepWholeReachSums
+(
+    const std::vector<double>& saturated,
+    const std::vector<double>& depth,
+    const std::vector<double>& copySums
+)
+{
+    // The parcels' first, then the copies', as reached
+    const std::size_t own = saturated.size();
+    for (std::size_t i = 0; i < reaches_.parcels.size(); ++i)
+    {
+        ::dropletFiber::ParcelReach& entry = reaches_.parcels[i];
+        entry.saturated = i < own ? saturated[i] : copySums[2*(i - own)];
+        entry.depth = i < own ? depth[i] : copySums[2*(i - own) + 1];
+    }
+}
+
+
+void Foam::dropletFiber::gridBlocks::exchangeReachSums
+(
+    const std::size_t ownParcels,
+    std::vector<double>& saturated,
+    std::vector<double>& depth,
+    std::vector<double>& copySums,
+    parallelStatistics& statistics
+)
+{
+    const auto what = parallelStatistics::traffic::parcels;
+    // The copies' parts to their processors, in the order received
+    std::size_t next = ownParcels;
+    forAll(outgoing_, proci)
+    {
+        outgoing_[proci].clear();
+        for (std::size_t i = 0; i < copiesFrom_[proci]; ++i, ++next)
+        {
+            outgoing_[proci].append(reaches_.parcels[next].saturated);
+            outgoing_[proci].append(reaches_.parcels[next].depth);
+        }
+    }
+    const List<List<scalar>> parts = exchangeLists(statistics, what);
     forAll(parts, proci)
     {
         for (std::size_t i = 0; i < sentCopies_[proci].size(); ++i)
         {
-            fraction[sentCopies_[proci][i]] += parts[proci][label(i)];
+            saturated[sentCopies_[proci][i]] += parts[proci][label(2*i)];
+            depth[sentCopies_[proci][i]] += parts[proci][label(2*i + 1)];
+        }
+    }
+    // The sums back to the blocks holding the copies
+    forAll(outgoing_, proci)
+    {
+        outgoing_[proci].clear();
+        for (const std::size_t p : sentCopies_[proci])
+        {
+            outgoing_[proci].append(saturated[p]);
+            outgoing_[proci].append(depth[p]);
+        }
+    }
+    const List<List<scalar>> sums = exchangeLists(statistics, what);
+    copySums.clear();
+    forAll(sums, proci)
+    {
+        for (label i = 0; i < label(2*copiesFrom_[proci]); ++i)
+        {
+            copySums.push_back(sums[proci][i]);
         }
     }
 }

@@ -1,10 +1,11 @@
 // Depletion with discrete hits (docs/model.md sec. 7, P31-P32): the parcels lose what the
 // fibers realised, N m_droplet per sample, not the granted mass. A monodisperse spray
-// crosses a 2D box through fixed fibers; each step the removal (P14 with f_n scaled by
-// q_n, RealisedCapture) equals the realised capture to 1e-12, with thin fibers (one to
-// two droplets per parcel, a few hundred hits) and with fibers thick enough to take most
-// of the droplets (in every step where no parcel is emptied; never more than the parcels
-// hold).
+// crosses a 2D box through fixed fibers; each step the removal (P14 with each parcel's
+// part r_pn of a node's loss scaled by q_n, RealisedCapture) equals the realised capture
+// to 1e-12, with thin fibers (one to two droplets per parcel, a few hundred hits) and
+// with fibers thick enough to take most of the droplets (in every step where no parcel
+// is emptied; never more than the parcels hold). With every sample's ratio 1 the scaled
+// removal is P14's closed-form c_p: the attribution P19 adds up to it.
 #include "collision/DiscreteHits.hpp"
 #include "depletion/RealisedCapture.hpp"
 
@@ -21,6 +22,7 @@ namespace
 struct Balance
 {
     double realised = 0.0, removed = 0.0, granted = 0.0, worstStep = 0.0;
+    double worstUnscaled = 0.0; // |c'_p - c_p| with every q_n = 1
     int emptyingSteps = 0;
     bool emptied = false; // this step
 };
@@ -58,7 +60,10 @@ std::pair<double, double> captureAndRemove(DensityGrid& density, std::vector<Par
         limit.addDemand(segments.back());
     }
     limit.limit(density);
-    RealisedCapture realised;
+    CaptureLimitReport report;
+    ParcelReaches reaches;
+    const std::vector<double> expected = limit.removeFromParcels(density, parcels, dt, report, &reaches);
+    RealisedCapture realised, asGranted;
     double caught = 0.0;
     for (std::size_t f = 0; f < segments.size(); ++f)
     {
@@ -71,14 +76,24 @@ std::pair<double, double> captureAndRemove(DensityGrid& density, std::vector<Par
             balance.granted += granted;
             caught += hits.mass;
             realised.add(sample, granted > 0.0 ? hits.mass / granted : 0.0, limit);
+            asGranted.add(sample, 1.0, limit);
         }
     }
+    // Realised = granted (q_n = 1): the attributed parts add up to P14's closed form c_p
+    asGranted.scaleRemoval(limit);
+    const std::vector<double> unscaled = realisedFractions(limit, reaches);
+    for (std::size_t i = 0; i < parcels.size(); ++i)
+    {
+        balance.worstUnscaled = std::max(balance.worstUnscaled, std::fabs(unscaled[i] - expected[i]));
+    }
     realised.scaleRemoval(limit);
+    const std::vector<double> fraction = realisedFractions(limit, reaches);
     double removed = 0.0;
     balance.emptied = false;
-    for (Parcel& p : parcels)
+    for (std::size_t i = 0; i < parcels.size(); ++i)
     {
-        const double c = limit.capturedFraction(density, p, dt);
+        Parcel& p = parcels[i];
+        const double c = fraction[i];
         EXPECT_LE(c, 1.0);
         balance.emptied = balance.emptied || c == 1.0;
         removed += c * parcelMass(p);
@@ -152,6 +167,7 @@ TEST(DiscreteDepletion, ParcelsLoseWhatTheHitsRealisedThinFibers)
     EXPECT_EQ(b.emptyingSteps, 0);
     EXPECT_LT(b.worstStep, 1e-12);
     EXPECT_NEAR(b.removed, b.realised, 1e-12 * b.realised);
+    EXPECT_LT(b.worstUnscaled, 1e-14);
     // The realised capture is the granted one in the mean: the run's hits (a few hundred)
     // within 5 sampling errors, 1 / sqrt(hits)
     const double hits = b.realised / (4.0 / 3.0 * M_PI * 1e-15 * 1000.0);
@@ -163,5 +179,6 @@ TEST(DiscreteDepletion, ParcelsLoseWhatTheHitsRealisedThickFibers)
     const Balance b = runSpray(4e-4, 40.0);
     ASSERT_GT(b.realised, 0.0);
     EXPECT_LT(b.worstStep, 1e-12);
+    EXPECT_LT(b.worstUnscaled, 1e-14);
     EXPECT_NEAR(b.removed, b.realised, 1e-12 * b.realised);
 }

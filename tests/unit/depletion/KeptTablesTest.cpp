@@ -1,6 +1,6 @@
 // The removal with the deposit's kept separable tables (DensityGrid::keepTablesNear,
 // KeptTables) against the removal that rebuilds them (a grid that keeps none): c_p
-// (CaptureLimit::capturedFraction) to the bit, parcel by parcel, on 2D and 3D grids,
+// (CaptureLimit::reach: X_p, A_p and the weights) to the bit, parcel by parcel, on 2D and 3D grids,
 // stationary and moving parcels, folded kernels at the faces, the whole grid and blocks,
 // the region of the whole grid and a small one. The spray holds twins: parcels on the same
 // path as another with only nParticle, or only the diameter, changed (a depleted parcel's
@@ -150,9 +150,18 @@ Compared compareRemoval(const GridSpec& spec, int processors, const std::vector<
         limit.limit(*grids[g].rebuilding);
         for (const Parcel& parcel : parcels)
         {
-            const double rebuilt = limit.capturedFraction(*grids[g].rebuilding, parcel, dt);
-            EXPECT_TRUE(sameBits(limit.capturedFraction(*grids[g].keeping, parcel, dt), rebuilt));
-            compared.taken += g == 0 && rebuilt > 0.0 ? 1 : 0;
+            ParcelReaches rebuilding, keeping;
+            limit.reach(*grids[g].rebuilding, parcel, dt, rebuilding);
+            limit.reach(*grids[g].keeping, parcel, dt, keeping);
+            const ParcelReach& rebuilt = rebuilding.parcels.front();
+            EXPECT_TRUE(sameBits(keeping.parcels.front().depth, rebuilt.depth));
+            EXPECT_TRUE(sameBits(keeping.parcels.front().saturated, rebuilt.saturated));
+            EXPECT_EQ(keeping.weights.size(), rebuilding.weights.size());
+            for (std::size_t k = 0; k < std::min(keeping.weights.size(), rebuilding.weights.size()); ++k)
+            {
+                EXPECT_TRUE(sameBits(keeping.weights[k].weight, rebuilding.weights[k].weight));
+            }
+            compared.taken += g == 0 && rebuilt.count > 0 ? 1 : 0;
         }
         compared.kept += grids[g].keeping->keptTables().parcels();
         compared.found += grids[g].keeping->keptTables().found();

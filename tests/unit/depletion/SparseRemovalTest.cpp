@@ -1,6 +1,7 @@
-// The removal's sum c_p = F_p sum_n w_pn f_n (docs/model.md sec. 7, P14) as
-// CaptureLimit::capturedFraction evaluates it (the parcel's weights at the nodes with
-// f_n > 0 only: DensityGrid::depositedShare with SparseNodeValues) against the
+// The removal's sums X_p = F_p sum_n w_pn x_n and A_p = F_p sum_n w_pn over the saturated
+// nodes (docs/model.md sec. 7, P14) as CaptureLimit::reach evaluates them (the parcel's
+// weights at the nodes with x_n > 0 only: DensityGrid::depositedShare with SparseNodeValues,
+// the weights kept) against the
 // straightforward evaluation: the parcel deposited alone on a fresh grid, the mass deposit()
 // put on every node divided by the parcel's mass, times f_n, summed over every node. Random
 // clouds of wide (separable), narrow (exact), unresolved (cloud-in-cell) parcels, moving and
@@ -17,6 +18,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <map>
 #include <memory>
 #include <random>
@@ -89,9 +91,28 @@ void addDemand(const GridSpec& spec, const DensityGrid& whole, unsigned seed, Ca
     }
 }
 
-// sum over every node of (the mass deposit() puts there / the parcel's mass) f_n.
+// x_n where finite (0 where saturated), and 1 on the saturated nodes
+double depthAt(const CaptureLimit& limit, std::size_t node)
+{
+    const double x = limit.opticalDepth(node);
+    return std::isinf(x) ? 0.0 : x;
+}
+double saturatedAt(const CaptureLimit& limit, std::size_t node)
+{
+    return std::isinf(limit.opticalDepth(node)) ? 1.0 : 0.0;
+}
+
+ParcelReach reachOf(const CaptureLimit& limit, DensityGrid& grid, const Parcel& parcel)
+{
+    ParcelReaches reaches;
+    limit.reach(grid, parcel, dt, reaches);
+    return reaches.parcels.front();
+}
+
+// sum over every node of (the mass deposit() puts there / the parcel's mass) value(n).
+template <class Value>
 double sumOverEveryNode(const GridSpec& spec, const KernelSettings& settings, const Parcel& parcel,
-                        const CaptureLimit& limit)
+                        const Value& value)
 {
     DensityGrid alone(spec, settings, 1);
     alone.deposit(parcel, dt);
@@ -99,7 +120,7 @@ double sumOverEveryNode(const GridSpec& spec, const KernelSettings& settings, co
     double sum = 0.0;
     for (std::size_t node = 0; node < spec.nodeCount(); ++node)
     {
-        sum += alone.lastStepValue(node, quantityMass) * limit.takenFraction(node);
+        sum += alone.lastStepValue(node, quantityMass) * value(node);
     }
     return sum / parcelMass(parcel);
 }
@@ -109,8 +130,8 @@ double sumOverEveryNode(const GridSpec& spec, const KernelSettings& settings, co
 // dense region sum (to the bit).
 struct Taken
 {
-    int separable = 0; // parcels with c_p > 0 and separable weights
-    int exact = 0;     // with c_p > 0 and the exact code's kernel weights
+    int separable = 0; // parcels reaching a node with x_n > 0 and separable weights
+    int exact = 0;     // reaching one and the exact code's kernel weights
 };
 Taken checkRemoval(const GridSpec& spec, int processors, unsigned seed)
 {
@@ -135,26 +156,32 @@ Taken checkRemoval(const GridSpec& spec, int processors, unsigned seed)
     Taken taken;
     for (const Parcel& parcel : parcels)
     {
-        const double expected = sumOverEveryNode(spec, settings, parcel, wholeLimit);
-        const double fraction = wholeLimit.capturedFraction(whole, parcel, dt);
-        EXPECT_NEAR(fraction, std::min(1.0, expected), 1e-13);
+        const auto depth = [&](std::size_t node) { return depthAt(wholeLimit, node); };
+        const auto saturated = [&](std::size_t node) { return saturatedAt(wholeLimit, node); };
+        const double expected = sumOverEveryNode(spec, settings, parcel, depth);
+        const double expectedSaturated = sumOverEveryNode(spec, settings, parcel, saturated);
+        const ParcelReach reach = reachOf(wholeLimit, whole, parcel);
+        EXPECT_NEAR(reach.depth, expected, 1e-13 * (1.0 + expected));
+        EXPECT_NEAR(reach.saturated, expectedSaturated, 1e-13);
         // The dense region sum: every node of the taken box, weights row by row
-        const DensityGrid::NodeFraction fractionAt
-            = [&](std::size_t node) { return wholeLimit.takenFraction(node); };
-        EXPECT_EQ(fraction,
-                  std::min(1.0, whole.depositedShare(parcel, dt, askAll, fractionAt, wholeLimit.takenBox())));
-        double parts = 0.0;
+        const DensityGrid::NodeFraction depthOfNode = depth;
+        EXPECT_EQ(reach.depth, whole.depositedShare(parcel, dt, askAll, depthOfNode, wholeLimit.takenBox()));
+        double parts = 0.0, saturatedParts = 0.0;
         for (std::size_t b = 0; b < blocks.size(); ++b)
         {
-            parts += blockLimits[b].capturedFraction(*blocks[b], parcel, dt);
+            const ParcelReach part = reachOf(blockLimits[b], *blocks[b], parcel);
+            parts += part.depth;
+            saturatedParts += part.saturated;
         }
-        EXPECT_NEAR(std::min(1.0, parts), std::min(1.0, expected), 1e-13);
+        EXPECT_NEAR(parts, expected, 1e-13 * (1.0 + expected));
+        EXPECT_NEAR(saturatedParts, expectedSaturated, 1e-13);
+        const bool reached = expected > 0.0 || expectedSaturated > 0.0;
         DensityGrid one(spec, settings, 1);
         one.deposit(parcel, dt);
         const StepStatistics& statistics = one.stepStatistics();
         const bool kernel = statistics.parcelsCloudInCell == 0 && statistics.parcelsFallback == 0;
-        taken.separable += expected > 0.0 && statistics.parcelsSeparable > 0 ? 1 : 0;
-        taken.exact += expected > 0.0 && kernel && statistics.parcelsSeparable == 0 ? 1 : 0;
+        taken.separable += reached && statistics.parcelsSeparable > 0 ? 1 : 0;
+        taken.exact += reached && kernel && statistics.parcelsSeparable == 0 ? 1 : 0;
     }
     return taken;
 }

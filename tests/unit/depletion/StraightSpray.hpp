@@ -1,7 +1,7 @@
 // Test helper (not a test file): a monodisperse spray crossing a 2D box in +y at constant
 // velocity (straight paths), through fixed fibers along z (across the flow, one segment of
 // the box's depth each), with the step of the function object in core terms:
-//     move -> inject -> deposit -> commit -> eq. 9 per fiber -> limit -> remove droplets
+//     move -> inject -> deposit -> commit -> eq. 9 per fiber -> depths -> remove droplets -> grant
 // Streams: four per node spacing across x, at x = (j/4 + 1/8) h, one parcel per stream and
 // step injected at the lower face: the pattern repeats every spacing and is symmetric about
 // every node column, so an x-uniform set of fibers sees an x-uniform spray. Parcels are
@@ -118,21 +118,23 @@ private:
             segments.push_back(segmentCapture(density, a, b, fiberRadius, Eigen::Vector3d::Zero(), dt));
             limit.addDemand(segments.back());
         }
-        limits += limit.limit(density);
+        CaptureLimitReport report = limit.limit(density);
+        // P14: the same parcels and dt as deposited this step; the fibers granted what left them.
+        std::vector<double> fraction(parcels.size(), 0.0);
+        if (depletion)
+        {
+            fraction = limit.removeFromParcels(density, parcels, dt, report);
+        }
+        limits += report;
         for (std::size_t f = 0; f < fibers.size(); ++f)
         {
             const double mass = depletion ? limit.granted(segments[f]).mass : segments[f].collision.mass;
             captured += mass;
             fiberCaptured[f] += measuring ? mass : 0.0;
         }
-        if (!depletion)
+        for (std::size_t p = 0; p < parcels.size(); ++p)
         {
-            return;
-        }
-        for (Parcel& p : parcels)
-        {
-            // P14: the same parcel and dt as deposited this step.
-            p.nParticle *= 1.0 - limit.capturedFraction(density, p, dt);
+            parcels[p].nParticle *= 1.0 - fraction[p];
         }
     }
 };
