@@ -293,7 +293,7 @@ def depletion(d, out):
 
 def dense_mats(c, dense):
     """Dense mats 6 spacings thick (DenseMatTest): |P_grid / exp(-S) - 1| against the travel per
-    step, the step's survival beside the faces' leading-order term P18."""
+    step, the per-parcel removal beside a node rule's faces' term P18 (dotted)."""
     colours = ["tab:blue", "tab:orange", "tab:green", "tab:red", "tab:purple"]
     for colour, S in zip(colours, sorted(set(dense["S"]))):
         pick = [i for i, v in enumerate(dense["S"]) if v == S]

@@ -2,19 +2,21 @@
   dropletFiber: stochastic droplet-fiber coupling for OpenFOAM
 -------------------------------------------------------------------------------
 Description
-    Depletion (entry collision.depletion; docs/model.md sec. 7, P12-P14):
-    the mass the fibers capture in a step is taken from the parcels that
-    carried it. After the collision samples (collide()):
+    Depletion (entry collision.depletion; docs/model.md sec. 7, P12-P14,
+    P19): the mass the fibers capture in a step is taken from the parcels
+    that carried it. After the collision samples (collide()):
       - each sample's mass m_s (eq. 9) is attributed to the corners of its
         cell in proportion to their part of the interpolated density (P12),
-        by the corners' owners (gridBlocks::grantCapture);
-      - a node gives at most what this step's parcels deposited on it
-        (P13): each segment is given the granted mass of its samples, its
-        momentum that times the samples' droplet velocity;
-      - each parcel loses the fraction c_p of its droplets that its deposit
-        put on the nodes the fibers took from (P14): nParticle is reduced,
-        a parcel with c_p = 1 is removed from its cloud. Droplet size and
-        velocity are unchanged.
+        by the corners' owners (gridBlocks::grantCapture), and gives the
+        nodes their optical depth for the step (P13);
+      - each parcel crosses the depths of the nodes its deposit reached and
+        loses c_p = 1 - (1 - A_p) exp(-X_p) of its droplets (P14), its loss
+        attributed to those nodes (P19; gridBlocks::removeCaptured);
+      - each segment is given what its samples' nodes lost, its momentum
+        that times the samples' droplet velocity;
+      - written back (depleteParcels): nParticle is reduced, a parcel with
+        c_p = 1 is removed from its cloud. Droplet size and velocity are
+        unchanged.
     Mass captured = mass removed, to round-off. Clouds of the parcel types
     of the stock solvers (kinematic, colliding, MPPIC, thermo, reacting,
     reacting multiphase, heterogeneous reacting, spray: cloudParcels) are

@@ -98,7 +98,7 @@ const Sweep& sweep()
         Sweep all{};
         std::ofstream table = validationTable("depletionDenseMat");
         table.precision(10);
-        table << "S,travel,model,theory,relativeError,nodeRuleFaceErrorLeadingOrder\n";
+        table << "S,travel,model,theory,relativeError,faceErrorLeadingOrder\n";
         for (std::size_t i = 0; i < depths.size(); ++i)
         {
             std::printf("S %.3f:", depths[i]);
