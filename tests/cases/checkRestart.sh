@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
 # Restart: run 0 -> T equals run 0 -> T/2, then restart from T/2 -> T.
-# Usage: checkRestart.sh CASE_DIR WORK_DIR T_HALF T [parallel|serial [TOL]]
+# Usage: checkRestart.sh CASE_DIR WORK_DIR T_HALF T [parallel|serial [TOL [SKIP]]]
 # Compares the restart state written at T (fibers, injector counters, totals,
 # averaging window) to TOL relative (default 1e-10), and the per-step table rows
-# after T/2; parallel: both runs on 2 ranks, each processor's state compared.
+# after T/2 (SKIP: table columns left out, compareTables.py --skip); parallel:
+# both runs on 2 ranks, each processor's state compared.
 set -euo pipefail
 caseDir="$1"; work="$2"; half="$3"; end="$4"; mode="${5:-serial}"; tol="${6:-1e-10}"
+skip=(); [ -n "${7:-}" ] && skip=(--skip "$7")
 here="$(cd "${0%/*}" && pwd)"
 # shellcheck disable=SC1091
 . "$here/../../bin/functions.sh"
@@ -55,6 +57,6 @@ for dir in "${dirs[@]}"; do
             "$work/split/$dir/$end/$state.gridWindowValues" "$tol"
     fi
 done
-"$PY" "$here/compareTables.py" --after "$half" \
+"$PY" "$here/compareTables.py" --after "$half" "${skip[@]}" \
     "$work/full/postProcessing/dropletFiber/0/dropletFiber.dat" \
     "$work/split/postProcessing/dropletFiber/$half/dropletFiber.dat" "$tol"
