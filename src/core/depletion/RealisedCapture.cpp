@@ -50,6 +50,12 @@ double RealisedCapture::realisedMass() const
     return sum;
 }
 
+double RealisedCapture::realisedAt(std::size_t node) const
+{
+    const auto entry = nodes_.find(node);
+    return entry == nodes_.end() ? 0.0 : entry->second.realised;
+}
+
 double realisedRemoval(double summedParts)
 {
     // The whole-droplet excess of P32 stays with the fibers

@@ -38,6 +38,8 @@ public:
     void scaleRemoval(CaptureLimit& limit) const;
     // sum_n realised_n over the nodes added (the removal to come), kg.
     double realisedMass() const;
+    // realised_n at one node (0 where no sample was added), kg.
+    double realisedAt(std::size_t node) const;
 
 private:
     struct NodeParts

@@ -19,6 +19,7 @@ Description
 #include "PstreamReduceOps.H"
 #include "collision/DiscreteHits.hpp"
 #include "fiber/BinderDistribution.hpp"
+#include "collisionSettings.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 

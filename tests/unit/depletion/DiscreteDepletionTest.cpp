@@ -2,15 +2,17 @@
 // fibers realised, N m_droplet per sample, not the granted mass. A monodisperse spray
 // crosses a 2D box through fixed fibers; each step the removal (P14 with each parcel's
 // part r_pn of a node's loss scaled by q_n, RealisedCapture) equals the realised capture
-// to 1e-12, with thin fibers (one to two droplets per parcel, a few hundred hits) and
-// with fibers thick enough to take most of the droplets (in every step where no parcel
-// is emptied; never more than the parcels hold). With every sample's ratio 1 the scaled
-// removal is P14's closed-form c_p: the attribution P19 adds up to it.
+// to 1e-12, with thin fibers (one to two droplets per parcel, a few hundred hits), with
+// fibers thick enough to take most of the droplets (in every step where no parcel is
+// emptied; never more than the parcels hold), and with parcels of less than a droplet,
+// whose nodes give more than their parcels deposited there. With every sample's ratio 1
+// the scaled removal is P14's closed-form c_p: the attribution P19 adds up to it.
 #include "collision/DiscreteHits.hpp"
 #include "depletion/RealisedCapture.hpp"
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -23,7 +25,7 @@ struct Balance
 {
     double realised = 0.0, removed = 0.0, granted = 0.0, worstStep = 0.0;
     double worstUnscaled = 0.0; // |c'_p - c_p| with every q_n = 1
-    int emptyingSteps = 0;
+    int emptyingSteps = 0, nodesAboveOne = 0;
     bool emptied = false; // this step
 };
 
@@ -88,6 +90,12 @@ std::pair<double, double> captureAndRemove(DensityGrid& density, std::vector<Par
     }
     realised.scaleRemoval(limit);
     const std::vector<double> fraction = realisedFractions(limit, reaches);
+    // Nodes whose hits took more than this step's parcels deposited there (P32)
+    const std::array<int, 3> n = density.spec().nodes;
+    for (std::size_t node = 0; node < static_cast<std::size_t>(n[0] * n[1] * n[2]); ++node)
+    {
+        balance.nodesAboveOne += realised.realisedAt(node) > density.lastStepValue(node, quantityMass) ? 1 : 0;
+    }
     double removed = 0.0;
     balance.emptied = false;
     for (std::size_t i = 0; i < parcels.size(); ++i)
@@ -172,6 +180,19 @@ TEST(DiscreteDepletion, ParcelsLoseWhatTheHitsRealisedThinFibers)
     // within 5 sampling errors, 1 / sqrt(hits)
     const double hits = b.realised / (4.0 / 3.0 * M_PI * 1e-15 * 1000.0);
     EXPECT_NEAR(b.realised / b.granted, 1.0, 5.0 / std::sqrt(hits));
+}
+
+// Parcels of 0.12 to 0.24 droplets: nodes hold less than a droplet in a step, a hit
+// takes more than its node holds (f_n > 1, P32), and the parcels that reached the node
+// give it without any being emptied: the balance is still exact.
+TEST(DiscreteDepletion, NodesHoldingLessThanAHitGiveItFromTheirParcels)
+{
+    const Balance b = runSpray(2e-5, 0.12);
+    ASSERT_GT(b.realised, 0.0);
+    EXPECT_GT(b.nodesAboveOne, 0);
+    EXPECT_EQ(b.emptyingSteps, 0);
+    EXPECT_LT(b.worstStep, 1e-12);
+    EXPECT_NEAR(b.removed, b.realised, 1e-12 * b.realised);
 }
 
 TEST(DiscreteDepletion, ParcelsLoseWhatTheHitsRealisedThickFibers)
