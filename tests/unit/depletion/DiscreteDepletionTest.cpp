@@ -94,7 +94,8 @@ std::pair<double, double> captureAndRemove(DensityGrid& density, std::vector<Par
     const std::array<int, 3> n = density.spec().nodes;
     for (std::size_t node = 0; node < static_cast<std::size_t>(n[0] * n[1] * n[2]); ++node)
     {
-        balance.nodesAboveOne += realised.realisedAt(node) > density.lastStepValue(node, quantityMass) ? 1 : 0;
+        balance.nodesAboveOne
+            += realised.realisedAt(node) > density.lastStepValue(node, quantityMass) ? 1 : 0;
     }
     double removed = 0.0;
     balance.emptied = false;
