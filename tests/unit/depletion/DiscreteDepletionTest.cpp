@@ -184,8 +184,9 @@ TEST(DiscreteDepletion, ParcelsLoseWhatTheHitsRealisedThinFibers)
 }
 
 // Parcels of 0.12 to 0.24 droplets: nodes hold less than a droplet in a step, a hit
-// takes more than its node holds (f_n > 1, P32), and the parcels that reached the node
-// give it without any being emptied: the balance is still exact.
+// takes more than this step's parcels deposited at its node (realised_n > h_n, P32), and
+// the parcels that crossed the node give it without any being emptied: the balance is
+// still exact.
 TEST(DiscreteDepletion, NodesHoldingLessThanAHitGiveItFromTheirParcels)
 {
     const Balance b = runSpray(2e-5, 0.12);
