@@ -61,6 +61,8 @@ expectError fibers/drag stokes "Entry 'drag' is 'stokes': allowed are"
 expectError fibers/holders cell "Entry 'holders' is 'cell': allowed are"
 expectError collision "{ sampling everywhere; }" "Entry 'sampling' is 'everywhere'"
 expectError collision "{ depletion maybe; }" "Entry 'depletion' is 'maybe': allowed are true or false"
+expectError collision "{ mode poisson; }" "Entry 'mode' is 'poisson': allowed are 2\\(expected discrete\\)"
+expectError collision "{ mode discrete; seed -3; }" "Entry 'seed' is -3"
 expectError air "{ rho -1.2; }" "Entry 'rho' is -1.2"
 expectError air "{ mu noSuchField; }" "Entry 'mu' names field 'noSuchField', which does not exist"
 # A field of the wrong kind is named as such

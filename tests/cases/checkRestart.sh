@@ -1,11 +1,14 @@
 #!/usr/bin/env bash
 # Restart: run 0 -> T equals run 0 -> T/2, then restart from T/2 -> T.
-# Usage: checkRestart.sh CASE_DIR WORK_DIR T_HALF T [parallel|serial [TOL]]
+# Usage: checkRestart.sh CASE_DIR WORK_DIR T_HALF T [parallel|serial [TOL [SKIP]]]
 # Compares the restart state written at T (fibers, injector counters, totals,
 # averaging window) to TOL relative (default 1e-10), and the per-step table rows
-# after T/2; parallel: both runs on 2 ranks, each processor's state compared.
+# after T/2 (maxSegmentLengthError apart, below; SKIP: more table columns left
+# out, compareTables.py --skip); parallel: both runs on 2 ranks, each processor's
+# state compared.
 set -euo pipefail
 caseDir="$1"; work="$2"; half="$3"; end="$4"; mode="${5:-serial}"; tol="${6:-1e-10}"
+skip="maxSegmentLengthError${7:+,$7}"
 here="$(cd "${0%/*}" && pwd)"
 # shellcheck disable=SC1091
 . "$here/../../bin/functions.sh"
@@ -58,7 +61,7 @@ done
 # maxSegmentLengthError is round-off by nature (~1e-14: the largest deviation of a
 # segment's length): the continued run's may differ from the first's in its last digits
 # (the parcels' positions read back move the capture by round-off); it must stay < 1e-10
-"$PY" "$here/compareTables.py" --after "$half" --skip maxSegmentLengthError \
+"$PY" "$here/compareTables.py" --after "$half" --skip "$skip" \
     "$work/full/postProcessing/dropletFiber/0/dropletFiber.dat" \
     "$work/split/postProcessing/dropletFiber/$half/dropletFiber.dat" "$tol"
 "$PY" - "$work/split/postProcessing/dropletFiber/$half/dropletFiber.dat" <<'PYEOF'

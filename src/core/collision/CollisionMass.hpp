@@ -30,6 +30,8 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry> // cross products (eq. 9)
 
+#include <cstdint>
+
 namespace dropletFiber
 {
 
@@ -39,12 +41,23 @@ enum class RadiusAverage
     Number // number-weighted mean radius, eq. 10 of the paper
 };
 
+// What a segment receives per step (docs/model.md sec. 3, discrete hits): the expected
+// mass of eq. 9 (the paper), or a whole number of droplets drawn from the Poisson law of
+// that mean (DiscreteHits.hpp).
+enum class CollisionMode
+{
+    Expected,
+    Discrete
+};
+
 struct CollisionOptions
 {
     RadiusAverage radiusAverage = RadiusAverage::Mass;
     // Sample points along the segment: 1 = midpoint (the paper); n > 1 = n equal
     // sub-segments; 0 = automatic, one per grid spacing spanned (at least 1).
     int samples = 1;
+    CollisionMode mode = CollisionMode::Expected;
+    std::uint32_t seed = 0; // key of the discrete hits' random numbers
 };
 
 struct SegmentCollision

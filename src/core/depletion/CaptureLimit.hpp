@@ -193,9 +193,10 @@ public:
     SegmentCollision granted(const SegmentCapture& segment) const;
 
     // Serial runs (one grid owning every node): reach, c_p, remove for every parcel, then
-    // grant; returns c_p per parcel.
+    // grant; returns c_p per parcel. The reaches kept in *kept if given (discrete hits,
+    // RealisedCapture.hpp).
     std::vector<double> removeFromParcels(DensityGrid& grid, const std::vector<Parcel>& parcels, double dt,
-                                          CaptureLimitReport& report);
+                                          CaptureLimitReport& report, ParcelReaches* kept = nullptr);
 
     // --- discrete hits: a per-node factor on the removal -----------------------------------
     // The fibers realised q times the granted R_n at an owned node (after grant()).

@@ -143,9 +143,12 @@ void CaptureLimit::grant(CaptureLimitReport& report)
 }
 
 std::vector<double> CaptureLimit::removeFromParcels(DensityGrid& grid, const std::vector<Parcel>& parcels,
-                                                    double dt, CaptureLimitReport& report)
+                                                    double dt, CaptureLimitReport& report,
+                                                    ParcelReaches* kept)
 {
-    ParcelReaches reaches;
+    ParcelReaches local;
+    ParcelReaches& reaches = kept != nullptr ? *kept : local;
+    reaches.clear();
     std::vector<double> fraction(parcels.size(), 0.0);
     for (std::size_t p = 0; p < parcels.size(); ++p)
     {

@@ -26,6 +26,7 @@ Fiber::Fiber(const Eigen::Matrix3Xd& points, const FiberMaterial& material, cons
         state_.restLengths(j) = (points.col(j + 1) - points.col(j)).norm();
     }
     state_.segmentCapturedMass = Eigen::VectorXd::Zero(n - 1);
+    state_.segmentHits = Eigen::VectorXd::Zero(n - 1);
     state_.tension = Eigen::VectorXd::Zero(n - 1);
     state_.externalForce = Eigen::Matrix3Xd::Zero(3, n);
     state_.material = material;
@@ -45,6 +46,10 @@ Fiber Fiber::immobileFiber(const Eigen::Matrix3Xd& points, const FiberMaterial& 
 
 Fiber::Fiber(const FiberState& state) : state_(state)
 {
+    if (state_.segmentHits.size() == 0 && state_.positions.cols() > 1)
+    {
+        state_.segmentHits = Eigen::VectorXd::Zero(state_.positions.cols() - 1);
+    }
     validate();
 }
 
@@ -87,6 +92,10 @@ void Fiber::validate() const
         fail("segmentCapturedMass: wrong number of segments");
     if (state_.tension.size() != n - 1)
         fail("tension: wrong number of segments");
+    if (state_.segmentHits.size() != n - 1)
+        fail("segmentHits: wrong number of segments");
+    if (state_.segmentHits.size() > 0 && state_.segmentHits.minCoeff() < 0.0)
+        fail("negative hit count");
     if (!(state_.restLengths.minCoeff() > 0.0))
         fail("zero-length segment (coincident points)");
     if (!(state_.material.radius > 0.0))

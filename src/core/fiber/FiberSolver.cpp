@@ -53,6 +53,7 @@ void applyCapture(Fiber& fiber, const std::vector<SegmentSource>& sources)
             throw std::invalid_argument("capture: negative mass");
         const auto jj = static_cast<Eigen::Index>(j);
         state.segmentCapturedMass(jj) += source.mass;
+        state.segmentHits(jj) += source.hits;
         pointMomentum.col(jj) += 0.5 * source.momentum;
         pointMomentum.col(jj + 1) += 0.5 * source.momentum;
     }

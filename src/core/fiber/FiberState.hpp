@@ -31,6 +31,10 @@ struct FiberState
     // sec. 8): part of the state so that a restart continues the same realisation;
     // empty (0 columns) without turbulence, or before the first turbulent step.
     Eigen::Matrix3Xd turbulentVelocity;
+    // Droplets caught per segment since the fiber was made (collision mode discrete: whole
+    // numbers; expected: the expected counts), for the binder distribution output
+    // (docs/model.md sec. 3, discrete hits). A state without them (empty) reads as zeros.
+    Eigen::VectorXd segmentHits;
 };
 
 } // namespace dropletFiber

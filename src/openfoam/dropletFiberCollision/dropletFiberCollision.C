@@ -239,8 +239,7 @@ void Foam::functionObjects::dropletFiberCollision::reportSettings() const
 {
     const auto& g = gridSettings_.spec;
     const auto& kernel = gridSettings_.kernel;
-    Info<< type() << " " << name() << ":" << nl
-        << "    clouds: ";
+    Info<< type() << " " << name() << ":" << nl << "    clouds: ";
     if (cloudNames_.empty())
     {
         Info<< "all";
@@ -276,6 +275,7 @@ void Foam::functionObjects::dropletFiberCollision::reportSettings() const
         << "    collision: samples per segment " << collision_.samples
         << " (1: midpoint, 0: one per grid spacing), radiusAverage "
         << dropletFiber::radiusAverageName(collision_.radiusAverage)
+        << ", mode " << dropletFiber::collisionModeReport(collision_).c_str()
         << ", depletion " << Switch(depletion_).c_str()
         << (
                depletion_
@@ -798,9 +798,10 @@ Foam::functionObjects::dropletFiberCollision::collide(const scalar dt)
         [&]() { points = collisionSamplePoints(samplesPerSegment); }
     );
     parallelStatistics_.countCollisionSamples(points.size());
-    // Depletion: each sample's interpolated mass sum and mass too
+    // Depletion: each sample's interpolated mass sum too; every sample's
+    // mass (the hits are counted per sample)
     std::vector<double> massSums;
-    std::vector<double> sampleMasses(depletion_ ? points.size() : 0);
+    std::vector<double> sampleMasses(points.size());
     const std::vector<::dropletFiber::DropletFieldValue> fields =
         blocks_->sample
         (
@@ -818,18 +819,24 @@ Foam::functionObjects::dropletFiberCollision::collide(const scalar dt)
             samplesOutside = collisionMasses
             (
                 dt, fields, samplesPerSegment,
-                depletion_ ? sampleMasses.data() : nullptr, capture
+                sampleMasses.data(), capture
             );
         }
     );
     warnSamplesOutside(samplesOutside);
     if (depletion_)
     {
-        limitCapture
-        (
-            fields, points, massSums, sampleMasses, samplesPerSegment, dt,
-            capture
-        );
+        const std::vector<double> granted =
+            limitCapture
+            (
+                fields, points, massSums, sampleMasses, samplesPerSegment, dt,
+                capture
+            );
+        countHits(fields, granted, samplesPerSegment, capture);
+    }
+    else
+    {
+        countHits(fields, sampleMasses, samplesPerSegment, capture);
     }
     return capture;
 }
@@ -1279,6 +1286,7 @@ void Foam::functionObjects::dropletFiberCollision::reportAndWriteState
     if (time_.writeTime())
     {
         coreCall("writing the restart state", [this]() { writeState(); });
+        writeBinderDistribution();
         reportConservation();
         reportBinderBalance();
         parallelStatistics_.reportBalance

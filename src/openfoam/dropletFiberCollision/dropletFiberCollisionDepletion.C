@@ -35,7 +35,8 @@ Description
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::functionObjects::dropletFiberCollision::limitCapture
+std::vector<double>
+Foam::functionObjects::dropletFiberCollision::limitCapture
 (
     const std::vector<::dropletFiber::DropletFieldValue>& fields,
     const std::vector<Eigen::Vector3d>& points,
@@ -89,6 +90,7 @@ void Foam::functionObjects::dropletFiberCollision::limitCapture
     {
         depletionStep_.limitedDemand = report.massDemanded - report.massGranted;
     }
+    return granted;
 }
 
 

@@ -44,7 +44,11 @@ std::vector<::dropletFiber::VtkField> fiberPointFields(const bool turbulent)
 
 std::vector<::dropletFiber::VtkField> fiberCellFields()
 {
-    return {{"tension", 1, {}}, {"segmentCapturedMass", 1, {}}};
+    return
+    {
+        {"tension", 1, {}}, {"segmentCapturedMass", 1, {}},
+        {"segmentHits", 1, {}}
+    };
 }
 
 
@@ -352,6 +356,7 @@ void Foam::functionObjects::dropletFiberCollision::writeHeldFibersVtk
     ::dropletFiber::VtkField fiberId{"fiberId", 1, {}};
     ::dropletFiber::VtkField tension{"tension", 1, {}};
     ::dropletFiber::VtkField segmentCaptured{"segmentCapturedMass", 1, {}};
+    ::dropletFiber::VtkField segmentHits{"segmentHits", 1, {}};
     ::dropletFiber::VtkField turbulent{"turbulentVelocity", 3, {}};
     for (std::size_t f = 0; f < held_.size(); ++f)
     {
@@ -379,6 +384,7 @@ void Foam::functionObjects::dropletFiberCollision::writeHeldFibersVtk
         {
             tension.values.push_back(fiber.tension()(j));
             segmentCaptured.values.push_back(segCaptured(j));
+            segmentHits.values.push_back(fiber.state().segmentHits(j));
         }
     }
     std::vector<::dropletFiber::VtkField> pointFields
@@ -391,7 +397,8 @@ void Foam::functionObjects::dropletFiberCollision::writeHeldFibersVtk
     }
     ::dropletFiber::writePolylines
     (
-        file, t, points, offsets, pointFields, {tension, segmentCaptured}
+        file, t, points, offsets, pointFields,
+        {tension, segmentCaptured, segmentHits}
     );
 }
 

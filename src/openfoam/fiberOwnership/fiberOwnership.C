@@ -81,6 +81,7 @@ scalarList packState(const ::dropletFiber::FiberState& s)
     // The turbulent fluctuation travels with its fiber (0 or n columns)
     values.append(scalar(s.turbulentVelocity.cols()));
     append(s.turbulentVelocity, values);
+    append(s.segmentHits, values);
     return scalarList(std::move(values));
 }
 
@@ -111,6 +112,8 @@ scalarList packState(const ::dropletFiber::FiberState& s)
     s.immobile = values[k++] != 0;
     s.turbulentVelocity.resize(3, Eigen::Index(values[k++]));
     extract(values, k, s.turbulentVelocity);
+    s.segmentHits.resize(n - 1);
+    extract(values, k, s.segmentHits);
     return s;
 }
 

@@ -626,6 +626,9 @@ std::vector<double> Foam::dropletFiber::gridBlocks::grantCapture
     {
         granted[p] = limit.grantedMass(local[p]);
     }
+    grantLocal_ = local;
+    grantRemote_ = remote;
+    grantAskedFor_ = askedFor;
     if (!Pstream::parRun())
     {
         return granted;
@@ -711,7 +714,26 @@ std::vector<double> Foam::dropletFiber::gridBlocks::removeCaptured
         }
     }
     limit.grant(report);
+    keepWholeReachSums(saturated, depth, copySums);
     return captured;
+}
+
+
+void Foam::dropletFiber::gridBlocks::keepWholeReachSums
+(
+    const std::vector<double>& saturated,
+    const std::vector<double>& depth,
+    const std::vector<double>& copySums
+)
+{
+    // The parcels' first, then the copies', as reached
+    const std::size_t own = saturated.size();
+    for (std::size_t i = 0; i < reaches_.parcels.size(); ++i)
+    {
+        ::dropletFiber::ParcelReach& entry = reaches_.parcels[i];
+        entry.saturated = i < own ? saturated[i] : copySums[2*(i - own)];
+        entry.depth = i < own ? depth[i] : copySums[2*(i - own) + 1];
+    }
 }
 
 

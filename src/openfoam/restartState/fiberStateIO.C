@@ -146,6 +146,12 @@ Foam::dictionary Foam::dropletFiber::fiberStateDict
         "externalForce",
         toScalarList(s.externalForce.data(), s.externalForce.size())
     );
+    // Droplets caught per segment (the binder distribution output)
+    d.add
+    (
+        "segmentHits",
+        toScalarList(s.segmentHits.data(), s.segmentHits.size())
+    );
     // The turbulent fluctuation (docs/model.md sec. 8), when the fiber has
     // one: a restart continues its realisation
     if (s.turbulentVelocity.cols())
@@ -196,6 +202,15 @@ Foam::dictionary Foam::dropletFiber::fiberStateDict
     s.segmentCapturedMass = Eigen::Map<const Eigen::VectorXd>(captured.cdata(), segments);
     readInto(d, "tension", row, 1, segments);
     s.tension = row.transpose();
+    // Optional: states written before the hits were counted read as none
+    if (d.found("segmentHits"))
+    {
+        const scalarList hits = checkedList
+        (
+            d, "segmentHits", segments, [](scalar v) { return v >= 0; }, " >= 0"
+        );
+        s.segmentHits = Eigen::Map<const Eigen::VectorXd>(hits.cdata(), segments);
+    }
     // Optional: states written without turbulent air have none
     if (d.found("turbulentVelocity"))
     {

@@ -16,7 +16,8 @@ using namespace Foam;
 //- The entries of collision: read by readSamples and readCollisionSettings
 const wordList collisionKeys
 {
-    "sampling", "samplesPerSegment", "radiusAverage", "depletion"
+    "sampling", "samplesPerSegment", "radiusAverage", "depletion", "mode",
+    "seed"
 };
 
 
@@ -95,6 +96,16 @@ const dictionary& radiusAverageDict
         radius == "number"
       ? ::dropletFiber::RadiusAverage::Number
       : ::dropletFiber::RadiusAverage::Mass;
+    // expected: eq. 9's mass every step (the paper); discrete: a Poisson
+    // number of droplets of that mean (docs/model.md sec. 3, P30)
+    const word mode =
+        getChoice(collisionDict, "mode", "expected", {"expected", "discrete"});
+    options.mode =
+        mode == "discrete"
+      ? ::dropletFiber::CollisionMode::Discrete
+      : ::dropletFiber::CollisionMode::Expected;
+    options.seed =
+        std::uint32_t(getLabelInRange(collisionDict, "seed", 0, 0, labelMax));
     return options;
 }
 
@@ -106,6 +117,28 @@ bool Foam::dropletFiber::readDepletion(const dictionary& dict)
     const dictionary collisionDict = dict.subOrEmptyDict("collision");
     checkKeys(collisionDict, collisionKeys);
     return getSwitch(collisionDict, "depletion", true);
+}
+
+
+Foam::word Foam::dropletFiber::collisionModeName
+(
+    const ::dropletFiber::CollisionMode mode
+)
+{
+    return mode == ::dropletFiber::CollisionMode::Discrete ? "discrete" : "expected";
+}
+
+
+std::string Foam::dropletFiber::collisionModeReport
+(
+    const ::dropletFiber::CollisionOptions& options
+)
+{
+    return
+        options.mode == ::dropletFiber::CollisionMode::Discrete
+      ? "discrete (Poisson droplet counts, seed "
+      + std::to_string(options.seed) + ")"
+      : "expected (eq. 9's mass every step)";
 }
 
 

@@ -1,0 +1,61 @@
+// RealisedCapture: with discrete hits (collision mode discrete, docs/model.md sec. 3 and 7,
+// P31-P32) the fibers catch N m_hit per sample instead of its granted mass; depletion
+// removes what was caught. Per sample the ratio r_s = realised / granted is attributed to
+// its nodes in proportion to their granted parts d_sc g_n (CaptureLimit.hpp, P12-P14):
+//     realised_n = sum_s r_s d_sc g_n,   granted_n = sum_s d_sc g_n = R_n = sum_p r_pn,
+//     q_n = realised_n / R_n                                                      (P31)
+// and every parcel's part r_pn of node n's removal is scaled by q_n: parcel p loses
+//     c'_p = sum_n r_pn q_n / m_p    (CaptureLimit::removedFraction; c_p where all q_n = 1)
+// so the parcels lose sum_n q_n R_n = sum_s N_s m_hit,s: the realised capture. The split
+// of a node's loss over its parcels is the per-parcel rule's (P14), only its size changes.
+// The owner of node n forms q_n (its samples' ratios come from the processors holding
+// the fibers, scaleRemoval); the parts of c'_p add up over the blocks p's deposit reached.
+//
+// Whole droplets from a smeared deposit: a node may lose less than one droplet's mass
+// this step (R_n < m_hit), so c'_p may exceed 1 (P32). Each parcel gives at most all it
+// has (realisedRemoval): the balance is exact unless a parcel is emptied, where the rest
+// stays with the fiber uncounted by the removal (removedStep < capturedStep in the table).
+#pragma once
+
+#include "depletion/CaptureLimit.hpp"
+
+#include <cstddef>
+#include <map>
+#include <vector>
+
+namespace dropletFiber
+{
+
+class RealisedCapture
+{
+public:
+    void clear() { nodes_.clear(); }
+    // Sample's realised over granted mass (>= 0), over its nodes' granted parts (every
+    // node of sample must have a granted ratio in limit: the owned part of a sample).
+    void add(const SampleCapture& sample, double realisedOverGranted, const CaptureLimit& limit);
+    // q_n on every node a sample was added for (CaptureLimit::scaleRemoval; all samples of
+    // the step must have been added, with ratio 0 for those that caught nothing).
+    void scaleRemoval(CaptureLimit& limit) const;
+    // sum_n realised_n over the nodes added (the removal to come), kg.
+    double realisedMass() const;
+    // realised_n at one node (0 where no sample was added), kg.
+    double realisedAt(std::size_t node) const;
+
+private:
+    struct NodeParts
+    {
+        double realised = 0.0;
+        double granted = 0.0;
+    };
+    std::map<std::size_t, NodeParts> nodes_; // node order: the same sums on every run
+};
+
+// The fraction a parcel loses from its summed parts of sum_n r_pn q_n / m_p: at most 1,
+// and 1 within 1e-12 of it (CaptureLimit::capturedFraction's rule).
+double realisedRemoval(double summedParts);
+
+// Serial runs (one grid; reaches as CaptureLimit::removeFromParcels kept them, whole
+// A_p and X_p): c'_p of every parcel after scaleRemoval.
+std::vector<double> realisedFractions(const CaptureLimit& limit, const ParcelReaches& reaches);
+
+} // namespace dropletFiber

@@ -1,0 +1,38 @@
+// BinderDistribution: how the captured binder lies along the fibers (docs/model.md sec. 3,
+// discrete hits), over all fiber length, segment by segment (sigma_j = captured mass of
+// segment j / its rest length l_j, L = sum l_j):
+//     bare fraction    sum of l_j with no captured mass / L
+//     mean sigma       sum m_j / L                                  kg/m
+//     CoV of sigma     sqrt(sum l_j (sigma_j - mean)^2 / L) / mean   (length-weighted)
+//     hits per length  sum of the segments' hits / L                1/m
+// The sums add up over fibers and processors (BinderSums::add, then the figures once).
+#pragma once
+
+#include "fiber/Fiber.hpp"
+
+#include <array>
+
+namespace dropletFiber
+{
+
+struct BinderSums
+{
+    // length, bare length, captured mass, sum l sigma^2 (= m^2 / l), hits, segments
+    std::array<double, 6> values{};
+
+    void add(const Fiber& fiber);
+    BinderSums& operator+=(const BinderSums& other);
+};
+
+struct BinderFigures
+{
+    double length = 0.0;
+    double bareFraction = 0.0;
+    double meanSigma = 0.0;
+    double sigmaVariation = 0.0; // coefficient of variation (0 where the mean is 0)
+    double hitsPerLength = 0.0;
+};
+
+BinderFigures binderFigures(const BinderSums& sums);
+
+} // namespace dropletFiber
