@@ -93,7 +93,8 @@ void CaptureLimit::forEachRemovalShare(const ParcelReaches& reaches, std::size_t
     // proportion to F w x_n over the others. Their sum is c_p (to round-off).
     const ParcelReach& entry = reaches.parcels[i];
     const double captured = capturedFraction(saturated, depth);
-    const double rest = captured == 1.0 ? 1.0 - std::min(1.0, saturated) : capturedOffSaturated(saturated, depth);
+    const double rest
+        = captured == 1.0 ? 1.0 - std::min(1.0, saturated) : capturedOffSaturated(saturated, depth);
     const double perDepth = depth > 0.0 ? std::max(0.0, rest) / depth : 0.0;
     const std::vector<NodeValue>& nodes = depthNodes_.nodes();
     for (std::size_t k = entry.first; k < entry.first + entry.count; ++k)
