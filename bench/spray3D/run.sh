@@ -35,6 +35,10 @@
 #     default: the cost of default settings.
 # The share is the function object's wall time (its table's deposition and
 # fiber columns) over the solver's ExecutionTime (bench/tutorialShare.py).
+# A profile: SPRAY3D_DIR=DIR bench/spray3D/run.sh, then in DIR 'foamListTimes -rm'
+# and, with the malloc thresholds fixed (MALLOC_MMAP_THRESHOLD_=67108864
+# MALLOC_TRIM_THRESHOLD_=268435456), 'perf record -e cpu-clock -F 500 --call-graph
+# dwarf,16384 pimpleFoam; perf report --children'.
 #------------------------------------------------------------------------------
 set -euo pipefail
 here="$(cd "${0%/*}" && pwd)"
