@@ -3,12 +3,9 @@
 -------------------------------------------------------------------------------
 Description
     The direct route of cloudParcels::append for the kinematic cloud types of
-    lagrangian/intermediate: clouds of basicKinematicParcel,
-    basicKinematicCollidingParcel (icoUncoupledKinematicCloud,
-    icoUncoupledKinematicParcelFoam, kinematicParcelFoam) and
-    basicKinematicMPPICParcel (MPPICFoam). Their parcels are read straight
-    from the cloud: five values per parcel, the same values in the same order
-    as their writeObjects gives (particle::position(), KinematicParcel's U,
+    lagrangian/intermediate (kinematicParcelTypes.H). Their parcels are read
+    straight from the cloud: five values per parcel, the same values in the
+    same order as their writeObjects gives (particle::position(), KinematicParcel's U,
     d, nParticle, rho).
     The generic route builds ~16 fields per parcel in a scratch registry
     every step: it was a fifth of the function object's time in the
@@ -22,21 +19,17 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "cloudParcelsTemplates.H"
-#include "basicKinematicParcel.H"
-#include "basicKinematicCollidingParcel.H"
-#include "basicKinematicMPPICParcel.H"
+#include "kinematicParcelTypes.H"
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
 
 namespace
 {
-    //- The kinematic family's parcel types
-    using kinematicParcels = Foam::dropletFiber::parcelTypeList
-    <
-        Foam::basicKinematicCollidingParcel,
-        Foam::basicKinematicParcel,
-        Foam::basicKinematicMPPICParcel
-    >;
+    using kinematicParcels =
+        Foam::dropletFiber::directRoute
+        <
+            Foam::dropletFiber::kinematicParcelTypes
+        >;
 }
 
 

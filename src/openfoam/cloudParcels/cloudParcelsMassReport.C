@@ -16,14 +16,8 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "cloudMassReportTemplates.H"
-#include "basicKinematicParcel.H"
-#include "basicKinematicCollidingParcel.H"
-#include "basicKinematicMPPICParcel.H"
-#include "basicThermoParcel.H"
-#include "basicReactingParcel.H"
-#include "basicReactingMultiphaseParcel.H"
-#include "basicHeterogeneousReactingParcel.H"
-#include "basicSprayParcel.H"
+#include "kinematicParcelTypes.H"
+#include "thermoParcelTypes.H"
 #include "ThermoCloud.H"
 #include "ReactingCloud.H"
 #include "PhaseChangeModel.H"
@@ -59,6 +53,20 @@ struct phaseChangeMassOf
           + returnReduce(thisRun, sumOp<scalar>());
     }
 };
+
+
+//- Parcels with a composition (ReactingParcel's Y(): their clouds have a
+//  reacting level)
+template<class ParcelType, class = void>
+struct hasComposition : std::false_type {};
+
+template<class ParcelType>
+struct hasComposition
+<
+    ParcelType,
+    std::void_t<decltype(std::declval<const ParcelType&>().Y())>
+>
+: std::true_type {};
 
 
 //- Parcels with phases (ReactingMultiphaseParcel: Y() the phases'
@@ -192,65 +200,35 @@ bool capturedSpeciesOf
 }
 
 
-//- The operations over the reacting parcel types
-template<class... ParcelTypes>
-struct reactingParcelList
+//- The parcel types read directly: both families
+using directParcelTypes =
+    dropletFiber::kinematicParcelTypes::followedBy
+    <
+        dropletFiber::thermoParcelTypes
+    >;
+
+
+//- operation(parcelTypeTag<P>()) for the parcel types P read directly whose
+//  clouds have a reacting level (those with a composition), in order, until
+//  one returns true; whether one did
+template<class Operation>
+bool firstReacting(Operation&& operation)
 {
-    static bool phaseChange
+    return dropletFiber::thermoParcelTypes::firstOf
     (
-        const cloud& c,
-        dropletFiber::cloudParcels::massReport& r
-    )
-    {
-        return (addPhaseChange<ParcelTypes>(c, r) || ...);
-    }
-
-    static bool species(const cloud& c, wordList& names)
-    {
-        return (liquidSpeciesOf<ParcelTypes>(c, names) || ...);
-    }
-
-    static bool captured
-    (
-        const cloud& c,
-        const scalar* fraction,
-        const scalar* mass,
-        const label count,
-        const particle* const* address,
-        scalarList& result
-    )
-    {
-        return
-        (
-            capturedSpeciesOf<ParcelTypes>
-            (
-                c, fraction, mass, count, address, result
-            )
-         || ...
-        );
-    }
-};
-
-
-using allParcels = dropletFiber::kinematicMassReportList
-<
-    basicKinematicCollidingParcel,
-    basicKinematicParcel,
-    basicKinematicMPPICParcel,
-    basicReactingMultiphaseParcel,
-    basicSprayParcel,
-    basicReactingParcel,
-    basicThermoParcel,
-    basicHeterogeneousReactingParcel
->;
-
-using reactingParcels = reactingParcelList
-<
-    basicReactingMultiphaseParcel,
-    basicSprayParcel,
-    basicReactingParcel,
-    basicHeterogeneousReactingParcel
->;
+        [&](auto type)
+        {
+            if constexpr (hasComposition<typename decltype(type)::type>::value)
+            {
+                return operation(type);
+            }
+            else
+            {
+                return false;
+            }
+        }
+    );
+}
 
 } // End anonymous namespace
 
@@ -263,12 +241,25 @@ bool Foam::dropletFiber::cloudParcels::addMassReport
     massReport& report
 )
 {
-    if (!allParcels::add(c, report))
+    const bool direct = directParcelTypes::firstOf
+    (
+        [&](auto type)
+        {
+            using parcelType = typename decltype(type)::type;
+            return dropletFiber::addKinematicMassReport<parcelType>(c, report);
+        }
+    );
+    if (direct)
     {
-        return false;
+        firstReacting
+        (
+            [&](auto type)
+            {
+                return addPhaseChange<typename decltype(type)::type>(c, report);
+            }
+        );
     }
-    reactingParcels::phaseChange(c, report);
-    return true;
+    return direct;
 }
 
 
@@ -278,7 +269,13 @@ Foam::wordList Foam::dropletFiber::cloudParcels::liquidSpecies
 )
 {
     wordList names;
-    reactingParcels::species(c, names);
+    firstReacting
+    (
+        [&](auto type)
+        {
+            return liquidSpeciesOf<typename decltype(type)::type>(c, names);
+        }
+    );
     return names;
 }
 
@@ -293,9 +290,15 @@ void Foam::dropletFiber::cloudParcels::addCapturedSpecies
     scalarList& captured
 )
 {
-    reactingParcels::captured
+    firstReacting
     (
-        c, capturedFraction, mass, count, address, captured
+        [&](auto type)
+        {
+            return capturedSpeciesOf<typename decltype(type)::type>
+            (
+                c, capturedFraction, mass, count, address, captured
+            );
+        }
     );
 }
 

@@ -3,15 +3,8 @@
 -------------------------------------------------------------------------------
 Description
     The direct route of cloudParcels for the parcel types of the evaporating,
-    reacting and spray clouds the stock v1912 solvers create:
-      - basicReactingMultiphaseParcel: reactingParcelFoam,
-        simpleReactingParcelFoam (basicReactingMultiphaseCloud); coalParcel
-        (coalChemistryFoam, simpleCoalParcelFoam) is the same type;
-      - basicReactingParcel (basicReactingCloud: fireFoam);
-      - basicThermoParcel (basicThermoCloud: coalChemistryFoam's limestone);
-      - basicHeterogeneousReactingParcel (reactingHeterogenousParcelFoam);
-      - basicSprayParcel (basicSprayCloud: sprayFoam, simpleSprayFoam,
-        sprayDyMFoam, engineFoam).
+    reacting and spray clouds the stock v1912 solvers create
+    (thermoParcelTypes.H).
     All derive from KinematicParcel<particle>: the five values read (position,
     U, d, nParticle, rho) and the depletion's write-back (nParticle reduced,
     emptied parcels deleted) are the kinematic parcels' (cloudParcelsTemplates.H).
@@ -22,25 +15,17 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "cloudParcelsTemplates.H"
-#include "basicThermoParcel.H"
-#include "basicReactingParcel.H"
-#include "basicReactingMultiphaseParcel.H"
-#include "basicHeterogeneousReactingParcel.H"
-#include "basicSprayParcel.H"
+#include "thermoParcelTypes.H"
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
 
 namespace
 {
-    //- The stock solvers' thermo, reacting and spray parcel types
-    using thermoParcels = Foam::dropletFiber::parcelTypeList
-    <
-        Foam::basicReactingMultiphaseParcel,
-        Foam::basicSprayParcel,
-        Foam::basicReactingParcel,
-        Foam::basicThermoParcel,
-        Foam::basicHeterogeneousReactingParcel
-    >;
+    using thermoParcels =
+        Foam::dropletFiber::directRoute
+        <
+            Foam::dropletFiber::thermoParcelTypes
+        >;
 }
 
 
