@@ -583,19 +583,20 @@ std::vector<double> Foam::dropletFiber::gridBlocks::grantCapture
 {
     const auto what = parallelStatistics::traffic::gridQueries;
     limit.clear();
-    std::vector<std::vector<std::size_t>> askedFor(outgoing_.size());
+    // Built in the members that realiseCapture (discrete hits,
+    // gridBlocksHits.C) reads after: no copy, in either collision mode
+    std::vector<::dropletFiber::SampleCapture>& local = grantLocal_;
+    auto& remote = grantRemote_;
+    auto& askedFor = grantAskedFor_;
+    askedFor.assign(outgoing_.size(), {});
+    remote.assign(outgoing_.size(), {});
     forAll(outgoing_, proci)
     {
         outgoing_[proci].clear();
     }
     // P12: the demand at this block's corners, the rest asked of the owners
-    std::vector<::dropletFiber::SampleCapture> local;
     attributeDemand(grid, points, massShares, limit, local, askedFor);
     List<List<scalar>> requests(outgoing_.size());
-    std::vector<std::vector<::dropletFiber::SampleCapture>> remote
-    (
-        outgoing_.size()
-    );
     if (Pstream::parRun())
     {
         requests = exchangeLists(statistics, what);
@@ -626,9 +627,6 @@ std::vector<double> Foam::dropletFiber::gridBlocks::grantCapture
     {
         granted[p] = limit.grantedMass(local[p]);
     }
-    grantLocal_ = local;
-    grantRemote_ = remote;
-    grantAskedFor_ = askedFor;
     if (!Pstream::parRun())
     {
         return granted;
