@@ -6,7 +6,6 @@ set -uo pipefail
 . "$(cd "${0%/*}" && pwd)/lib/prepareCase.sh"
 prepareCaseCopy "$1" "$2"
 cp system/controlDict system/controlDict.good
-passed=0; failed=0
 fo=functions/dropletFiber
 
 # Every run starts at time 0 (startFrom latestTime: a run that went on to
@@ -28,15 +27,7 @@ expectError() {
     fi
     freshStart
     pimpleFoam > log.bad 2>&1
-    local status=$?
-    if [ $status -ne 0 ] && grep -q "FOAM FATAL IO ERROR" log.bad && grep -q -E "$pattern" log.bad; then
-        passed=$((passed+1))
-        echo "ok: $entry = $value -> $(grep -A1 'FOAM FATAL IO ERROR' log.bad | tail -1)"
-    else
-        failed=$((failed+1))
-        echo "FAILED: $entry = $value (exit $status); log:"
-        grep -A4 "FOAM FATAL" log.bad || tail -5 log.bad
-    fi
+    expectFatalIOError $? log.bad "$pattern" "$entry = $value"
 }
 
 expectError fibers/radius -1e-4 "Entry 'radius' is -0.0001"
@@ -107,10 +98,10 @@ if [ $status -eq 0 ] \
     && grep -q "Entry 'radiusAverage' in 'grid' is read from its old place" log.oldPlace \
     && grep -q "radiusAverage number" log.oldPlace
 then
-    passed=$((passed+1))
+    checksPassed=$((checksPassed + 1))
     echo "ok: grid/radiusAverage = number -> read (radiusAverage number), with a warning to move it"
 else
-    failed=$((failed+1))
+    checksFailed=$((checksFailed + 1))
     echo "FAILED: grid/radiusAverage = number (exit $status): no warning, or not read; log:"
     grep -B2 -A4 "radiusAverage" log.oldPlace | head -20
 fi
@@ -128,10 +119,10 @@ if [ $status -eq 0 ] \
     && grep -q "Enlarge grid lower (0.06 0 0)" log.outside \
     && [ "$(grep -c "lie outside the grid box" log.outside)" -eq 1 ]
 then
-    passed=$((passed+1))
+    checksPassed=$((checksPassed + 1))
     echo "ok: grid/lower = (0.06 0 0) -> warned once: $(grep -m1 "lie outside the grid box" log.outside)"
 else
-    failed=$((failed+1))
+    checksFailed=$((checksFailed + 1))
     echo "FAILED: grid/lower = (0.06 0 0) (exit $status): no single warning about samples outside the grid; log:"
     grep -A3 "outside the grid" log.outside | head -10
 fi
@@ -161,10 +152,10 @@ if [ $status -ne 0 ] \
     && grep -q "FOAM FATAL IO ERROR" log.runTimeTypo \
     && grep -q -E "$(unknown samplng collision "did you mean 'sampling'\\?")" log.runTimeTypo
 then
-    passed=$((passed+1))
+    checksPassed=$((checksPassed + 1))
     echo "ok: collision = { samplng integrated; } edited during the run -> $(grep -A1 'FOAM FATAL IO ERROR' log.runTimeTypo | tail -1)"
 else
-    failed=$((failed+1))
+    checksFailed=$((checksFailed + 1))
     echo "FAILED: collision = { samplng integrated; } edited during the run (exit $status): not stopped at the edit; log:"
     grep -A4 "FOAM FATAL" log.runTimeTypo || tail -5 log.runTimeTypo
 fi
@@ -185,14 +176,13 @@ if [ $status -ne 0 ] \
     && grep -q "FOAM FATAL IO ERROR" log.runTimeDepletion \
     && grep -q "Entry 'collision.depletion' was edited during the run (true -> false)" log.runTimeDepletion
 then
-    passed=$((passed+1))
+    checksPassed=$((checksPassed + 1))
     echo "ok: collision = { depletion false; } edited during the run -> stopped"
 else
-    failed=$((failed+1))
+    checksFailed=$((checksFailed + 1))
     echo "FAILED: collision = { depletion false; } edited during the run (exit $status): not stopped at the edit; log:"
     grep -A4 "FOAM FATAL" log.runTimeDepletion || tail -5 log.runTimeDepletion
 fi
 
 cp system/controlDict.good system/controlDict
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+checkSummary

@@ -7,7 +7,8 @@
 set -uo pipefail
 # shellcheck disable=SC1091
 . "$(cd "${0%/*}" && pwd)/lib/prepareCase.sh"
-PY=/usr/bin/python3; [ -x "$PY" ] || PY=python3
+# shellcheck disable=SC1091
+. "$(cd "${0%/*}" && pwd)/lib/editFile.sh"
 work="$2"
 prepareCaseCopy "$1" "$work/good"
 app="$(foamDictionary -entry application -value system/controlDict)"
@@ -15,18 +16,6 @@ sed -i "s/^endTime .*/endTime         0.1;/" system/controlDict
 "$app" > "log.$app" 2>&1 || { tail -20 "log.$app"; echo "FAILED: the run to 0.1"; exit 1; }
 sed -i "s/^endTime .*/endTime         0.11;/" system/controlDict
 state=0.1/uniform/dropletFiber/dropletFiber
-
-# edit FILE PATTERN REPLACEMENT: replace the first match of a Python regex
-edit() {
-    "$PY" - "$@" <<'PY'
-import re, sys
-path, pattern, replacement = sys.argv[1:4]
-text = open(path).read()
-new = re.sub(pattern, replacement, text, count=1, flags=re.S)
-assert new != text, "no match for " + pattern
-open(path, "w").write(new)
-PY
-}
 
 # setWindowValue FILE INDEX VALUE: one value of the binary averaging window
 setWindowValue() {

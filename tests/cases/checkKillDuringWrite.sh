@@ -13,7 +13,6 @@ set -uo pipefail
 # shellcheck disable=SC1091
 . "$(cd "${0%/*}" && pwd)/lib/prepareCase.sh"
 here="$(cd "${0%/*}" && pwd)"
-PY=/usr/bin/python3; [ -x "$PY" ] || PY=python3
 work="$2"
 prepareCaseCopy "$1" "$work/full"
 app="$(foamDictionary -entry application -value system/controlDict)"

@@ -64,12 +64,5 @@ done
 "$PY" "$here/compareTables.py" --after "$half" --skip "$skip" \
     "$work/full/postProcessing/dropletFiber/0/dropletFiber.dat" \
     "$work/split/postProcessing/dropletFiber/$half/dropletFiber.dat" "$tol"
-"$PY" - "$work/split/postProcessing/dropletFiber/$half/dropletFiber.dat" <<'PYEOF'
-import sys
-rows = [l.split() for l in open(sys.argv[1]) if l.strip() and not l.startswith("#")]
-header = [l for l in open(sys.argv[1]) if l.startswith("#")][-1][1:].split("\t")
-col = [h.strip() for h in header if h.strip()].index("maxSegmentLengthError")
-worst = max(float(r[col]) for r in rows)
-print("continued run: largest segment-length error %.3g (must stay < 1e-10)" % worst)
-sys.exit(0 if worst < 1e-10 else 1)
-PYEOF
+"$PY" "$here/checkSegmentLengthError.py" \
+    "$work/split/postProcessing/dropletFiber/$half/dropletFiber.dat" "continued run"

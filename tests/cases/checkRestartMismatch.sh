@@ -6,26 +6,13 @@
 # CASE_DIR WORK_DIR (fiberStream: writes at 0.05 and 0.1, injector 'spinner', 100/s)
 set -uo pipefail
 # shellcheck disable=SC1091
-. "$(cd "${0%/*}" && pwd)/lib/prepareCase.sh"
-# shellcheck disable=SC1091
 . "$(cd "${0%/*}" && pwd)/lib/restartCopies.sh"
-PY=/usr/bin/python3; [ -x "$PY" ] || PY=python3
+# shellcheck disable=SC1091
+. "$(cd "${0%/*}" && pwd)/lib/editFile.sh"
 work="$2"
 prepareCaseCopy "$1" "$work/good"
 runTo 0.1
 state=0.1/uniform/dropletFiber/dropletFiber
-
-# edit FILE PATTERN REPLACEMENT: replace the first match of a Python regex
-edit() {
-    "$PY" - "$@" <<'PY'
-import re, sys
-path, pattern, replacement = sys.argv[1:4]
-text = open(path).read()
-new = re.sub(pattern, replacement, text, count=1, flags=re.S)
-assert new != text, "no match for " + pattern
-open(path, "w").write(new)
-PY
-}
 
 # The state of 0.05 in the folder of 0.1 (its window is of the same grid)
 restartCopy otherTime "cp 0.05/uniform/dropletFiber/* 0.1/uniform/dropletFiber/" 0.11

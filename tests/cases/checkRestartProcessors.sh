@@ -12,7 +12,6 @@ caseDir="$1"; work="$2"; half="$3"; end="$4"
 here="$(cd "${0%/*}" && pwd)"
 # shellcheck disable=SC1091
 . "$here/lib/prepareCase.sh"
-PY=/usr/bin/python3; [ -x "$PY" ] || PY=python3
 state=uniform/dropletFiber/dropletFiber
 
 # Serial 0 -> T, and serial 0 -> T/2 continued on 2 ranks

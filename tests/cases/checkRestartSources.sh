@@ -7,8 +7,6 @@
 # writes at 0.05, 0.1, 0.15; fixed fiber 'across' held fixed, injector 'spinner')
 set -uo pipefail
 # shellcheck disable=SC1091
-. "$(cd "${0%/*}" && pwd)/lib/prepareCase.sh"
-# shellcheck disable=SC1091
 . "$(cd "${0%/*}" && pwd)/lib/restartCopies.sh"
 work="$2"
 prepareCaseCopy "$1" "$work/good"

@@ -8,8 +8,6 @@
 # (fiberStream: writes at 0.1)
 set -uo pipefail
 # shellcheck disable=SC1091
-. "$(cd "${0%/*}" && pwd)/lib/prepareCase.sh"
-# shellcheck disable=SC1091
 . "$(cd "${0%/*}" && pwd)/lib/restartCopies.sh"
 work="$2"
 prepareCaseCopy "$1" "$work/good"

@@ -9,7 +9,6 @@ rasCase="$(cd "$1" && pwd)"; laminarCase="$(cd "$2" && pwd)"; work="$3"
 mkdir -p "$work"; work="$(cd "$work" && pwd)"
 # shellcheck disable=SC1091
 . "$(cd "${0%/*}" && pwd)/lib/prepareCase.sh"
-passed=0; failed=0
 fo=functions/dropletFiber/fibers/turbulence
 
 # expectError CASE_COPY VALUE PATTERN: fibers.turbulence set to VALUE, a few
@@ -20,15 +19,7 @@ expectError() {
     cp system/controlDict.good system/controlDict
     foamDictionary system/controlDict -entry "$fo" -add "$value" > /dev/null
     icoUncoupledKinematicParcelFoam > log.bad 2>&1
-    local status=$?
-    if [ $status -ne 0 ] && grep -q "FOAM FATAL IO ERROR" log.bad && grep -q -E "$pattern" log.bad; then
-        passed=$((passed+1))
-        echo "ok: turbulence $value -> $(grep -A1 'FOAM FATAL IO ERROR' log.bad | tail -1)"
-    else
-        failed=$((failed+1))
-        echo "FAILED: turbulence $value (exit $status); log:"
-        grep -A4 "FOAM FATAL" log.bad || tail -5 log.bad
-    fi
+    expectFatalIOError $? log.bad "$pattern" "turbulence $value"
 }
 
 for which in ras laminar; do
@@ -50,10 +41,6 @@ expectError "$work/laminar" "{ model ornsteinUhlenbeck; }" \
 cd "$work/laminar" || exit 1
 cp system/controlDict.good system/controlDict
 icoUncoupledKinematicParcelFoam > log.good 2>&1
-if grep -q "fibers.turbulence: none (default with the case's turbulence model 'laminar')" log.good; then
-    passed=$((passed+1))
-else
-    failed=$((failed+1)); echo "FAILED: the laminar run's log does not say the turbulent air is off by default"
-fi
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+check "grep -q \"fibers.turbulence: none (default with the case's turbulence model 'laminar')\" log.good" \
+    "the laminar run's log does not say the turbulent air is off by default"
+checkSummary

@@ -16,7 +16,6 @@ set -uo pipefail
 here="$(cd "${0%/*}" && pwd)"
 # shellcheck disable=SC1091
 . "$here/lib/prepareCase.sh"
-PY=/usr/bin/python3; [ -x "$PY" ] || PY=python3
 work="$2"; half="$3"; mode="${4:-serial}"
 state=uniform/dropletFiber/dropletFiber
 run=(); dirs=(.)

@@ -1,8 +1,11 @@
 # shellcheck shell=bash
 # Helpers of the case checks that run the solver themselves (sourced, not run).
+# Sourcing sets PY (python3).
 #
 # prepareCaseCopy CASE_DIR WORK_DIR: load OpenFOAM, copy the case to WORK_DIR
 # (replacing it), restore 0/ and make the mesh; leaves the shell in WORK_DIR.
+
+PY=/usr/bin/python3; [ -x "$PY" ] || PY=python3
 
 prepareCaseCopy() {
     local caseDir="$1" work="$2" here
@@ -35,4 +38,20 @@ check() {
 checkSummary() {
     echo "$checksPassed passed, $checksFailed failed"
     [ "$checksFailed" -eq 0 ]
+}
+
+# expectFatalIOError STATUS LOG PATTERN WHAT: the run of WHAT (its exit STATUS, its
+# LOG) stopped with a FatalIOError saying PATTERN (an extended regular expression),
+# counted as a check; prints the error's line, or the log's error when it failed
+expectFatalIOError() {
+    local status="$1" log="$2" pattern="$3" what="$4"
+    if [ "$status" -ne 0 ] && grep -q "FOAM FATAL IO ERROR" "$log" \
+        && grep -q -E -- "$pattern" "$log"; then
+        checksPassed=$((checksPassed + 1))
+        echo "ok: $what -> $(grep -A1 'FOAM FATAL IO ERROR' "$log" | tail -1)"
+    else
+        checksFailed=$((checksFailed + 1))
+        echo "FAILED: $what (exit $status); log:"
+        grep -A4 "FOAM FATAL" "$log" || tail -5 "$log"
+    fi
 }

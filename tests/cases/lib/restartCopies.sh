@@ -1,6 +1,7 @@
 # shellcheck shell=bash
-# Helpers of the restart checks (sourced after prepareCase.sh): a run of the case
-# copy to a time, copies of it changed and restarted, and what their logs must say.
+# Helpers of the restart checks (sourced; sources prepareCase.sh): a run of the
+# case copy to a time, copies of it changed and restarted, and what their logs
+# must say.
 #
 # runTo END [parallel]: run the case in the current directory to END (on 2 ranks:
 #   decomposed first); endTime is left at END
@@ -11,6 +12,9 @@
 #   every PATTERN (extended regular expressions), without crash and without a step
 # expectRuns NAME PATTERN...: the restart NAME ran to its end, its log saying
 #   every PATTERN
+
+# shellcheck disable=SC1091
+. "$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)/prepareCase.sh"
 
 setEndTime() { sed -i "s/^endTime .*/endTime         $1;/" system/controlDict; }
 

@@ -13,18 +13,10 @@
 set -euo pipefail
 work="$1"
 here="$(cd "${0%/*}" && pwd)"
-root="$(cd "$here/../../.." && pwd)"
-. "$root/bin/functions.sh"
-loadFoamEnvironment
-PY=/usr/bin/python3; [ -x "$PY" ] || PY=python3
+# shellcheck disable=SC1091
+. "$here/../../cases/lib/tutorialRun.sh"
 
-rm -rf "$work"; mkdir -p "$(dirname "$work")"
-cp -r "$root/tutorials/channelSprayRAS" "$work"
-(cd "$work" && ./Allclean > /dev/null)
-if ! (cd "$work" && ./Allrun -short); then
-    tail -n 30 "$work"/log.* ; die "Allrun -short failed"
-fi
-"$root/bin/checkFunctionObjectRan" "$work" || die "the run of $work went on without the function object"
+runTutorialCopy channelSprayRAS "$work" -short
 log="$work/log.pimpleFoam"
 grep -q "fibers.turbulence: ornsteinUhlenbeck (default with the case's turbulence model 'RAS')" "$log" \
     || die "the log does not say the fibers' turbulent air is on by default"
