@@ -21,6 +21,7 @@ import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
 from foamfiles import read_table  # noqa: E402
+from checks import check, finish  # noqa: E402
 
 case = sys.argv[1]
 dt, U, H, depth = 0.002, 1.0, 0.05, 0.01
@@ -32,14 +33,7 @@ expected = 2.0 * rho * (r_fiber + d / 2.0) * length * U * dt
 
 rows = read_table(os.path.join(case, "postProcessing/dropletFiber/0/dropletFiber.dat"))
 steady = [r for r in rows if r["Time"] >= 0.1 - 1e-9]
-passed = failed = 0
 
-
-def check(ok, what):
-    global passed, failed
-    passed += ok
-    failed += not ok
-    print(("ok: " if ok else "FAILED: ") + what)
 
 
 mean = sum(r["capturedStep"] for r in steady) / max(len(steady), 1)
@@ -55,5 +49,4 @@ first, last = rows[0], rows[-1]
 gain = last["fiberMass"] - (first["fiberMass"] - first["capturedStep"])
 check(abs(gain - last["capturedTotal"]) <= 1e-9 * last["fiberMass"],
       "fiber mass gain %.10g = captured total %.10g" % (gain, last["capturedTotal"]))
-print("%d passed, %d failed" % (passed, failed))
-sys.exit(1 if failed else 0)
+finish()

@@ -20,6 +20,7 @@ import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
 from foamfiles import read_table  # noqa: E402
+from checks import check, failures, finish  # noqa: E402
 
 args = sys.argv[1:]
 streams = None
@@ -28,19 +29,12 @@ if args and args[0] == "--limited":
     args = args[2:]
 case = args[0]
 rows = read_table(os.path.join(case, "postProcessing/dropletFiber/0/dropletFiber.dat"))
-passed = failed = 0
 
-
-def check(ok, what):
-    global passed, failed
-    passed += ok
-    failed += not ok
-    print(("ok: " if ok else "FAILED: ") + what)
 
 
 check(rows and "removedStep" in rows[0] and "airborneMass" in rows[0],
       "the table has the depletion columns removedStep and airborneMass")
-if failed:
+if failures():
     sys.exit(1)
 worst = max([abs(r["capturedStep"] - r["removedStep"]) / r["capturedStep"]
              for r in rows if r["capturedStep"] > 0] + [0.0])
@@ -61,5 +55,4 @@ if streams is not None:
     check(last["parcels"] <= injected - streams,
           "parcels emptied are removed: %d parcels, %d injected (at least %d fewer expected)"
           % (last["parcels"], injected, streams))
-print("%d passed, %d failed" % (passed, failed))
-sys.exit(1 if failed else 0)
+finish()

@@ -17,6 +17,13 @@ import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
 from foamfiles import read_table  # noqa: E402
+from checks import check as counted, finish  # noqa: E402
+
+
+def check(ok, what):
+    """Failures only: a row of checks per time"""
+    counted(ok, what, quiet=True)
+
 
 serial_run, parallel_run, processors = sys.argv[1], sys.argv[2], int(sys.argv[3])
 OUT = "postProcessing/dropletFiber/0"
@@ -24,15 +31,7 @@ FIBER_POINTS = 7
 table = {round(r["Time"], 9): r for r in read_table(os.path.join(serial_run, OUT, "dropletFiber.dat"))}
 serial = read_table(os.path.join(serial_run, OUT, "parallelStatistics.dat"))
 parallel = {round(r["Time"], 9): r for r in read_table(os.path.join(parallel_run, OUT, "parallelStatistics.dat"))}
-passed = failed = 0
 
-
-def check(ok, what):
-    global passed, failed
-    passed += bool(ok)
-    failed += not ok
-    if not ok:
-        print("FAILED: " + what)
 
 
 def close(a, b):
@@ -66,5 +65,4 @@ for s in serial:
                   "t=%g %s max %g mean %g" % (t, stage, row[stage + "Max"], row[stage + "Mean"]))
 for name, rows in (("serial", serial), ("parallel", list(parallel.values()))):
     check(sum(r["cpuDepositMax"] for r in rows) > 0, name + ": no deposit CPU time over the run")
-print("%d passed, %d failed" % (passed, failed))
-sys.exit(1 if failed else 0)
+finish()

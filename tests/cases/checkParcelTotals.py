@@ -13,20 +13,18 @@ import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
 from foamfiles import cloud_totals, read_table  # noqa: E402
+from checks import check as counted, finish  # noqa: E402
+
+
+def check(ok, what):
+    """Failures only: a row of checks per time"""
+    counted(ok, what, quiet=True)
+
 
 cloud, case = sys.argv[1], sys.argv[2]
 ours = read_table(os.path.join(case, "postProcessing/dropletFiber/0/dropletFiber.dat"))
 info = read_table(os.path.join(case, "postProcessing/cloudInfo/0/%s.dat" % cloud))
-passed = failed = 0
 
-
-def check(ok, what):
-    global passed, failed
-    if ok:
-        passed += 1
-    else:
-        failed += 1
-        print("FAILED:", what)
 
 
 def close(a, b, rel=1e-10):
@@ -62,5 +60,4 @@ for t in times:
           "t=%s mass %.12g vs written %.12g" % (t, row["parcelMass"], mass))
     print("t=%s: %d parcels, %.6g droplets, %.6g kg (ours and OpenFOAM's)" % (t, parcels, droplets, mass))
 
-print("%d passed, %d failed" % (passed, failed))
-sys.exit(1 if failed else 0)
+finish()

@@ -25,18 +25,12 @@ import xml.etree.ElementTree as ET
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
 from foamfiles import read_table  # noqa: E402
+from checks import check, finish  # noqa: E402
 
 case = sys.argv[1]
 name = sys.argv[2] if len(sys.argv) > 2 else "dropletFiber"
 out = os.path.join(case, "postProcessing", name, "0")
-passed = failed = 0
 
-
-def check(ok, what):
-    global passed, failed
-    passed += bool(ok)
-    failed += not ok
-    print(("ok: " if ok else "FAILED: ") + what)
 
 
 def array_values(da):
@@ -215,5 +209,4 @@ else:
         check(field in gdata and len(gdata[field][1]) == comps * n_nodes,
               "grid field %s with %d values per node (%d nodes)" % (field, comps, n_nodes))
     check(max(gdata["rho"][1]) > 0, "grid holds droplets")
-print("%d passed, %d failed" % (passed, failed))
-sys.exit(1 if failed else 0)
+finish()
