@@ -139,50 +139,31 @@ foamDictionary system/controlDict -entry OptimisationSwitches \
 foamDictionary system/controlDict -entry functions/editControlDict \
     -add "{ type timeActivatedFileUpdate; libs (\"libutilityFunctionObjects.so\"); fileToUpdate \"\$FOAM_CASE/system/controlDict\"; timeVsFile ((0.01 \"\$FOAM_CASE/system/controlDict.typo\")); }" > /dev/null
 cp system/controlDict system/controlDict.start
-foamDictionary system/controlDict -entry "$fo/collision" -set "{ samplng integrated; }" > /dev/null
-cp system/controlDict system/controlDict.typo
-cp system/controlDict.start system/controlDict
-touch -d "1 hour ago" system/controlDict
-freshStart
-pimpleFoam > log.runTimeTypo 2>&1
-status=$?
-if [ $status -ne 0 ] \
-    && grep -q "^Time = 0.01$" log.runTimeTypo \
-    && ! grep -q "^Time = 0.02$" log.runTimeTypo \
-    && grep -q "FOAM FATAL IO ERROR" log.runTimeTypo \
-    && grep -q -E "$(unknown samplng collision "did you mean 'sampling'\\?")" log.runTimeTypo
-then
-    checksPassed=$((checksPassed + 1))
-    echo "ok: collision = { samplng integrated; } edited during the run -> $(grep -A1 'FOAM FATAL IO ERROR' log.runTimeTypo | tail -1)"
-else
-    checksFailed=$((checksFailed + 1))
-    echo "FAILED: collision = { samplng integrated; } edited during the run (exit $status): not stopped at the edit; log:"
-    grep -A4 "FOAM FATAL" log.runTimeTypo || tail -5 log.runTimeTypo
-fi
+
+# expectStopAtEdit COLLISION PATTERN LOG: the run from controlDict.start, whose
+# dictionary the edit at time 0.01 sets collision to COLLISION, stops there
+# (before time 0.02) with a FatalIOError saying PATTERN
+expectStopAtEdit() {
+    local collision="$1" pattern="$2" log="$3"
+    cp system/controlDict.start system/controlDict
+    foamDictionary system/controlDict -entry "$fo/collision" -set "$collision" > /dev/null
+    cp system/controlDict system/controlDict.typo
+    cp system/controlDict.start system/controlDict
+    touch -d "1 hour ago" system/controlDict
+    freshStart
+    pimpleFoam > "$log" 2>&1
+    local status=$?
+    check "grep -q '^Time = 0.01$' $log && ! grep -q '^Time = 0.02$' $log" \
+        "collision = $collision edited during the run: not stopped at the edit"
+    expectFatalIOError "$status" "$log" "$pattern" "collision = $collision edited during the run"
+}
+expectStopAtEdit "{ samplng integrated; }" \
+    "$(unknown samplng collision "did you mean 'sampling'\\?")" log.runTimeTypo
 
 # collision.depletion is read at the start only (the table's columns follow it):
 # the same edit at time 0.01, to 'depletion false', stops the run naming it
-cp system/controlDict.start system/controlDict
-foamDictionary system/controlDict -entry "$fo/collision" -set "{ depletion false; }" > /dev/null
-cp system/controlDict system/controlDict.typo
-cp system/controlDict.start system/controlDict
-touch -d "1 hour ago" system/controlDict
-freshStart
-pimpleFoam > log.runTimeDepletion 2>&1
-status=$?
-if [ $status -ne 0 ] \
-    && grep -q "^Time = 0.01$" log.runTimeDepletion \
-    && ! grep -q "^Time = 0.02$" log.runTimeDepletion \
-    && grep -q "FOAM FATAL IO ERROR" log.runTimeDepletion \
-    && grep -q "Entry 'collision.depletion' was edited during the run (true -> false)" log.runTimeDepletion
-then
-    checksPassed=$((checksPassed + 1))
-    echo "ok: collision = { depletion false; } edited during the run -> stopped"
-else
-    checksFailed=$((checksFailed + 1))
-    echo "FAILED: collision = { depletion false; } edited during the run (exit $status): not stopped at the edit; log:"
-    grep -A4 "FOAM FATAL" log.runTimeDepletion || tail -5 log.runTimeDepletion
-fi
+expectStopAtEdit "{ depletion false; }" \
+    "Entry 'collision.depletion' was edited during the run \(true -> false\)" log.runTimeDepletion
 
 cp system/controlDict.good system/controlDict
 checkSummary

@@ -63,20 +63,24 @@ def read_table(path):
     return rows
 
 
-def cloud_totals(case, time, cloud):
-    """(parcels, droplets, mass) of `cloud` written at `time` (a directory
-    name), over the case or its processor* folders."""
+def _cloud_folders(case, time, cloud):
+    """Each folder holding `cloud` written at `time`, over the case or its
+    processor* folders, with its parcels' d, nParticle and rho."""
     roots = sorted(
         os.path.join(case, d) for d in os.listdir(case) if d.startswith("processor")
     ) or [case]
-    parcels, droplets, mass = 0, 0.0, 0.0
     for root in roots:
         cdir = os.path.join(root, time, "lagrangian", cloud)
-        if not os.path.isdir(cdir):
-            continue
-        d = read_field(os.path.join(cdir, "d"))
-        n = read_field(os.path.join(cdir, "nParticle"))
-        rho = read_field(os.path.join(cdir, "rho"))
+        if os.path.isdir(cdir):
+            yield cdir, [read_field(os.path.join(cdir, name))
+                         for name in ("d", "nParticle", "rho")]
+
+
+def cloud_totals(case, time, cloud):
+    """(parcels, droplets, mass) of `cloud` written at `time` (a directory
+    name), over the case or its processor* folders."""
+    parcels, droplets, mass = 0, 0.0, 0.0
+    for _, (d, n, rho) in _cloud_folders(case, time, cloud):
         parcels += len(d)
         droplets += sum(n)
         mass += sum(ni * ri * math.pi / 6.0 * di ** 3 for di, ni, ri in zip(d, n, rho))
@@ -88,17 +92,8 @@ def cloud_species_mass(case, time, cloud, species):
     parcels of nParticle rho pi d^3/6 times the parcel's mass fraction of the
     species (field Y<species>(l) or Y<species>), over the case or its
     processor* folders."""
-    roots = sorted(
-        os.path.join(case, d) for d in os.listdir(case) if d.startswith("processor")
-    ) or [case]
     mass = 0.0
-    for root in roots:
-        cdir = os.path.join(root, time, "lagrangian", cloud)
-        if not os.path.isdir(cdir):
-            continue
-        d = read_field(os.path.join(cdir, "d"))
-        n = read_field(os.path.join(cdir, "nParticle"))
-        rho = read_field(os.path.join(cdir, "rho"))
+    for cdir, (d, n, rho) in _cloud_folders(case, time, cloud):
         # Y<species> followed by the phase's state label: (l) for a liquid
         names = [n for n in ("Y" + species + "(l)", "Y" + species)
                  if os.path.exists(os.path.join(cdir, n))]
