@@ -13,6 +13,7 @@
 // one end, dt = 1 ms. One warm-up step per configuration is not timed.
 #include "BenchCommon.hpp"
 
+#include "BenchFibers.hpp"
 #include "fiber/FiberSolver.hpp"
 
 #include <cmath>
@@ -21,36 +22,6 @@
 #include <vector>
 
 using namespace dropletFiber;
-
-namespace
-{
-
-// The fibers of fiberStepBench (same positions, orientations, bend, end conditions).
-std::vector<Fiber> makeFibers(int fiberCount, int pointCount)
-{
-    std::vector<Fiber> fibers;
-    fibers.reserve(static_cast<std::size_t>(fiberCount));
-    const FiberMaterial glass{5e-6, 2500.0, 7e10};
-    for (int f = 0; f < fiberCount; ++f)
-    {
-        const double a = 0.7 * f, b = 0.3 * f;
-        const Eigen::Vector3d start(0.02 * std::cos(a), 0.02 * std::sin(a), 0.001 * f);
-        const Eigen::Vector3d direction(std::cos(b), std::sin(b), 0.3 * std::sin(a));
-        Eigen::Matrix3Xd points(3, pointCount);
-        const int segments = pointCount - 1;
-        for (int i = 0; i < pointCount; ++i)
-        {
-            const double s = static_cast<double>(i) / segments;
-            points.col(i) = start + 0.01 * s * direction.normalized()
-                + Eigen::Vector3d(0.0, 0.0, 5e-4 * std::sin(M_PI * s));
-        }
-        const EndCondition startEnd = f % 3 == 0 ? EndCondition::pinnedEnd() : EndCondition::freeEnd();
-        fibers.emplace_back(points, glass, startEnd, EndCondition::freeEnd());
-    }
-    return fibers;
-}
-
-} // namespace
 
 int main(int argc, char** argv)
 {
@@ -86,7 +57,7 @@ int main(int argc, char** argv)
         for (int pointsN : pointCounts)
         {
             const double totalPoints = static_cast<double>(fibersN) * pointsN;
-            std::vector<Fiber> fibers = makeFibers(fibersN, pointsN);
+            std::vector<Fiber> fibers = bench::makeFibers(fibersN, pointsN);
             const AirSample air = uniformAir(fibers, Eigen::Vector3d(0.5, 0.2, 0.0), 1.2, 1.8e-5);
             FiberSolver solver(settings);
             const auto warm = bench::Clock::now();

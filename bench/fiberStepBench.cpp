@@ -9,6 +9,7 @@
 // advancing u' (TurbulentAir) against the fiber step without it, and of the step with it
 // (which moves the fibers otherwise: its Newton iterations differ, so the ratio of the
 // two steps is not the cost of u' alone).
+#include "BenchFibers.hpp"
 #include "fiber/FiberSolver.hpp"
 #include "fiber/TurbulentAir.hpp"
 
@@ -22,37 +23,11 @@ using namespace dropletFiber;
 namespace
 {
 
-std::vector<Fiber> makeFibers(int fiberCount, int pointCount)
-{
-    std::vector<Fiber> fibers;
-    fibers.reserve(static_cast<std::size_t>(fiberCount));
-    const FiberMaterial glass{5e-6, 2500.0, 7e10};
-    for (int f = 0; f < fiberCount; ++f)
-    {
-        // Deterministic spread of positions and orientations.
-        const double a = 0.7 * f, b = 0.3 * f;
-        const Eigen::Vector3d start(0.02 * std::cos(a), 0.02 * std::sin(a), 0.001 * f);
-        const Eigen::Vector3d direction(std::cos(b), std::sin(b), 0.3 * std::sin(a));
-        Eigen::Matrix3Xd points(3, pointCount);
-        const int segments = pointCount - 1;
-        for (int i = 0; i < pointCount; ++i)
-        {
-            // a gentle bend so bending is active from the start
-            const double s = static_cast<double>(i) / segments;
-            points.col(i) = start + 0.01 * s * direction.normalized()
-                + Eigen::Vector3d(0.0, 0.0, 5e-4 * std::sin(M_PI * s));
-        }
-        const EndCondition startEnd = f % 3 == 0 ? EndCondition::pinnedEnd() : EndCondition::freeEnd();
-        fibers.emplace_back(points, glass, startEnd, EndCondition::freeEnd());
-    }
-    return fibers;
-}
-
 // Seconds per step of u' alone, of the fiber step without and with u' (k = 0.01,
 // epsilon = 0.1: u' of 0.08 m/s on a 0.5 m/s cross-wind).
 void turbulenceCost(int fibersN, int pointsN, const FiberSolverSettings& settings, double dt)
 {
-    std::vector<Fiber> plain = makeFibers(fibersN, pointsN), turbulent = plain;
+    std::vector<Fiber> plain = bench::makeFibers(fibersN, pointsN), turbulent = plain;
     const AirSample air = uniformAir(plain, Eigen::Vector3d(0.5, 0.2, 0.0), 1.2, 1.8e-5);
     const Eigen::Index n = air.pointCount();
     const TurbulenceSample k{Eigen::VectorXd::Constant(n, 0.01), Eigen::VectorXd::Constant(n, 0.1)};
@@ -104,7 +79,7 @@ int main()
         {
             const int fibersN = fiberCounts[a], pointsN = pointCounts[b];
             const long totalPoints = static_cast<long>(fibersN) * pointsN;
-            std::vector<Fiber> fibers = makeFibers(fibersN, pointsN);
+            std::vector<Fiber> fibers = bench::makeFibers(fibersN, pointsN);
             const AirSample air = uniformAir(fibers, Eigen::Vector3d(0.5, 0.2, 0.0), 1.2, 1.8e-5);
             FiberSolver solver(settings);
             solver.step(fibers, dt, air); // warm-up (first-touch allocations)
