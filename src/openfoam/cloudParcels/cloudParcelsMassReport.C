@@ -55,32 +55,24 @@ struct phaseChangeMassOf
 };
 
 
-//- Parcels with a composition (ReactingParcel's Y(): their clouds have a
-//  reacting level)
-template<class ParcelType, class = void>
-struct hasComposition : std::false_type {};
+//- Whether ParcelType has the member that Member names (the detection
+//  idiom)
+template<class ParcelType, template<class> class Member, class = void>
+struct hasMember : std::false_type {};
 
-template<class ParcelType>
-struct hasComposition
-<
-    ParcelType,
-    std::void_t<decltype(std::declval<const ParcelType&>().Y())>
->
+template<class ParcelType, template<class> class Member>
+struct hasMember<ParcelType, Member, std::void_t<Member<ParcelType>>>
 : std::true_type {};
 
-
-//- Parcels with phases (ReactingMultiphaseParcel: Y() the phases'
-//  fractions, YLiquid() the liquid's composition)
-template<class ParcelType, class = void>
-struct hasLiquidPhase : std::false_type {};
-
+//- A composition, ReactingParcel's Y(): the parcel's cloud has a reacting
+//  level
 template<class ParcelType>
-struct hasLiquidPhase
-<
-    ParcelType,
-    std::void_t<decltype(std::declval<const ParcelType&>().YLiquid())>
->
-: std::true_type {};
+using compositionOf = decltype(std::declval<const ParcelType&>().Y());
+
+//- Phases, ReactingMultiphaseParcel's YLiquid(): Y() holds the phases'
+//  fractions, YLiquid() the liquid's composition
+template<class ParcelType>
+using liquidPhaseOf = decltype(std::declval<const ParcelType&>().YLiquid());
 
 
 //- Adds m Y_liquid,i of parcel p to captured (idLiquid: the liquid phase)
@@ -93,7 +85,7 @@ void addLiquidMass
     scalarList& captured
 )
 {
-    if constexpr (hasLiquidPhase<ParcelType>::value)
+    if constexpr (hasMember<ParcelType, liquidPhaseOf>::value)
     {
         const scalar liquid = m*p.Y()[idLiquid];
         const scalarField& Y = p.YLiquid();
@@ -218,7 +210,8 @@ bool firstReacting(Operation&& operation)
     (
         [&](auto type)
         {
-            if constexpr (hasComposition<typename decltype(type)::type>::value)
+            using parcelType = typename decltype(type)::type;
+            if constexpr (hasMember<parcelType, compositionOf>::value)
             {
                 return operation(type);
             }
