@@ -60,6 +60,14 @@ noCrash() {
     ! grep -q -E "sigFpe::sigHandler|^Floating point exception|new cannot satisfy|terminate called|Segmentation fault" "$1"
 }
 
+# runStops LOG WHAT: the run (log LOG) stops with a FatalIOError, without a crash
+runStops() {
+    run "$1"
+    local status=$?
+    check "[ $status -ne 0 ] && noCrash $1 && grep -q 'FOAM FATAL IO ERROR' $1" \
+        "$2: exit $status, no FatalIOError, or a crash"
+}
+
 # --- Overflow: 20,000 fibers per second, no endTime. Births at k * 50 us:
 # 41 by t = 0.002 (k = 0..40), 81 by t = 0.004; with the fixed fiber 82.
 mutate fibers/injectors/spinner/rate 20000 fibers/injectors/spinner/endTime REMOVE
@@ -81,25 +89,19 @@ grep -m1 "memory per processor" log.highRate
 # A rate no memory holds (2e9 fibers of 11 points per step of 0.002 s) stops
 # at the start, naming the rate
 mutate fibers/injectors/spinner/rate 1e12 fibers/injectors/spinner/endTime REMOVE
-run log.hugeRate
-status=$?
-check "[ $status -ne 0 ] && noCrash log.hugeRate && grep -q 'FOAM FATAL IO ERROR' log.hugeRate" "rate 1e12: exit $status, no FatalIOError, or a crash"
+runStops log.hugeRate "rate 1e12"
 check "grep -q \"Entry 'rate' 1e+12 of injector 'spinner': the fibers injected in one step of 0.002 s need an estimated 8.8e+06 MB\" log.hugeRate" "rate 1e12: message does not name the rate and the estimate"
 grep -A2 "FOAM FATAL IO ERROR" log.hugeRate | tail -2
 
 # --- Memory: a spacing typo (1e-9 m: 1e16 nodes) stops, naming spacing and the estimate
 mutate grid/nodes REMOVE grid/spacing 1e-9
-run log.tinySpacing
-status=$?
-check "[ $status -ne 0 ] && noCrash log.tinySpacing && grep -q 'FOAM FATAL IO ERROR' log.tinySpacing" "spacing 1e-9: exit $status, no FatalIOError, or a crash"
+runStops log.tinySpacing "spacing 1e-9"
 check "grep -q \"Entry 'spacing' 1e-09 gives nodes (200000001 50000001 1), 1.000000025e+16 nodes in all: the grid would need an estimated 6.8e+12 MB in all (averagingSteps 5)\" log.tinySpacing" "spacing 1e-9: message without the node counts and the estimate"
 grep -A2 "FOAM FATAL IO ERROR" log.tinySpacing | tail -2
 
 # 2.5e9 nodes, within the grid's index range, but not in this machine's memory
 mutate grid/nodes REMOVE grid/spacing 2e-6
-run log.smallSpacing
-status=$?
-check "[ $status -ne 0 ] && noCrash log.smallSpacing && grep -q 'FOAM FATAL IO ERROR' log.smallSpacing" "spacing 2e-6: exit $status, no FatalIOError, or a crash"
+runStops log.smallSpacing "spacing 2e-6"
 # (W + 2) x 56 + 8 = 400 bytes per node, W = 5: 2500125001 nodes 1.0e+06 MB held, plus
 # 5 x 56 per node while writing: 1.7e+06 MB; in parallel the largest of the two blocks
 # (at least half the nodes)
