@@ -16,6 +16,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "cloudMassReportTemplates.H"
+#include "cloudParcelsTemplates.H"
 #include "kinematicParcelTypes.H"
 #include "thermoParcelTypes.H"
 #include "ThermoCloud.H"
@@ -161,33 +162,14 @@ bool capturedSpeciesOf
     {
         return true;
     }
-    bool addressed = address != nullptr;
-    for (label i = 0; i < count && addressed; ++i)
-    {
-        addressed = address[i] != nullptr;
-    }
-    if (addressed)
-    {
-        // Only the parcels that lost droplets (appendIfCloudOf's address)
-        for (label i = 0; i < count; ++i)
+    dropletFiber::forEachCapturedParcel<ParcelType>
+    (
+        *typed, fraction, count, address,
+        [&](const ParcelType& p, const scalar f, const label i)
         {
-            if (fraction[i] > 0)
-            {
-                const auto& p = *static_cast<const ParcelType*>(address[i]);
-                addLiquidMass(p, idLiquid, fraction[i]*mass[i], captured);
-            }
+            addLiquidMass(p, idLiquid, f*mass[i], captured);
         }
-        return true;
-    }
-    label i = 0;
-    for (const ParcelType& p : *typed)
-    {
-        if (fraction[i] > 0)
-        {
-            addLiquidMass(p, idLiquid, fraction[i]*mass[i], captured);
-        }
-        ++i;
-    }
+    );
     return true;
 }
 
