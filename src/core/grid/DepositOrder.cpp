@@ -29,24 +29,27 @@ bool depositsBefore(const Parcel& a, const Parcel& b)
 
 std::vector<DepositEntry> depositOrder(const std::vector<Parcel>& own, const std::vector<Parcel>& copies)
 {
-    // The keys once (a sort compares each parcel ~log N times)
-    std::vector<std::pair<Key, DepositEntry>> keyed;
-    keyed.reserve(own.size() + copies.size());
-    for (std::size_t i = 0; i < own.size(); ++i)
+    // Sorted by the first key word (x's bits) with the entry's place, 16 bytes each: the
+    // whole keys are compared only where the first words tie
+    const std::size_t ownCount = own.size();
+    const auto parcel = [&](std::size_t place) -> const Parcel&
+    { return place < ownCount ? own[place] : copies[place - ownCount]; };
+    std::vector<std::pair<std::uint64_t, std::size_t>> keyed(ownCount + copies.size());
+    for (std::size_t place = 0; place < keyed.size(); ++place)
     {
-        keyed.push_back({keyOf(own[i]), DepositEntry{false, i}});
-    }
-    for (std::size_t i = 0; i < copies.size(); ++i)
-    {
-        keyed.push_back({keyOf(copies[i]), DepositEntry{true, i}});
+        keyed[place] = {keyOf(parcel(place))[0], place};
     }
     std::sort(keyed.begin(), keyed.end(),
-              [](const auto& a, const auto& b) { return a.first < b.first; });
-    std::vector<DepositEntry> order;
-    order.reserve(keyed.size());
-    for (const auto& entry : keyed)
+              [&](const auto& a, const auto& b)
+              {
+                  return a.first != b.first ? a.first < b.first
+                                            : keyOf(parcel(a.second)) < keyOf(parcel(b.second));
+              });
+    std::vector<DepositEntry> order(keyed.size());
+    for (std::size_t i = 0; i < keyed.size(); ++i)
     {
-        order.push_back(entry.second);
+        const std::size_t place = keyed[i].second;
+        order[i] = place < ownCount ? DepositEntry{false, place} : DepositEntry{true, place - ownCount};
     }
     return order;
 }

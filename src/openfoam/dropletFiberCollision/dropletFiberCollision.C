@@ -1002,6 +1002,8 @@ Foam::functionObjects::dropletFiberCollision::dropletFiberCollision
     cloudNames_(),
     gatherWriteObjects_(false),
     lastTimeIndex_(-1),
+    clock_(0),
+    clockIndex_(-1),
     parcels_(),
     depletion_(true),
     depletionSteps_(0),
@@ -1173,7 +1175,8 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
 
     // 3. New fibers
     clockValue fiberStart(true);
-    coreCall("injecting fibers", [&]() { injectFibers(time_.value()); });
+    const scalar t = continuousTime();
+    coreCall("injecting fibers", [&]() { injectFibers(t); });
     step.fiberTime = fiberStart.elapsed();
 
     // 4. Collision mass of every segment; with depletion taken from the parcels
