@@ -761,15 +761,21 @@ void Foam::dropletFiber::gridBlocks::grantedSlots
     std::array<double, 8>& slots
 )
 {
+    // The capture's entries are its corners with a part, in corner order: each
+    // to the next corner of its node (a node twice among the corners, at a
+    // folded face, keeps its two entries apart)
+    int c = 0;
     for (int k = 0; k < capture.count; ++k)
     {
-        for (int c = 0; c < corners.count; ++c)
+        while (c < corners.count && corners.node[c] != capture.node[k])
         {
-            if (corners.node[c] == capture.node[k])
-            {
-                slots[c] = capture.mass[k]*limit.grantedRatio(capture.node[k]);
-            }
+            ++c;
         }
+        if (c == corners.count)
+        {
+            break;
+        }
+        slots[c++] = capture.mass[k]*limit.grantedRatio(capture.node[k]);
     }
 }
 
