@@ -127,10 +127,10 @@ SegmentCapture segmentCapture(const DensityGrid& grid, const Eigen::Vector3d& a,
 // same A_p and X_p, to the bit, whatever the blocks (serial = parallel).
 struct ParcelReach
 {
-    double saturated = 0.0;           // F_p sum w_pn over the saturated nodes
-    double depth = 0.0;               // F_p sum w_pn x_n over the others
+    double saturated = 0.0;               // F_p sum w_pn over the saturated nodes
+    double depth = 0.0;                   // F_p sum w_pn x_n over the others
     FixedPointSum saturatedSum, depthSum; // the same, exact (saturated, depth: their values)
-    std::size_t first = 0, count = 0; // its weights in ParcelReaches::weights
+    std::size_t first = 0, count = 0;     // its weights in ParcelReaches::weights
 };
 
 // The reaches of a step's parcels, in the order evaluated (reach() appends one each).

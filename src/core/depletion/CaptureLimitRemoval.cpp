@@ -125,7 +125,9 @@ void CaptureLimit::remove(const ParcelReaches& reaches, std::size_t i, double ma
                           double depth)
 {
     forEachRemovalShare(reaches, i, saturated, depth,
-                        [&](std::uint32_t place, double share) { removedTerms_.push_back({place, mass * share}); });
+                        [&](std::uint32_t place, double share) {
+                            removedTerms_.push_back({place, mass * share});
+                        });
 }
 
 double CaptureLimit::removedFraction(const ParcelReaches& reaches, std::size_t i, double saturated,

@@ -98,8 +98,8 @@ double FixedPointSum::value() const
         magnitude = (magnitude >> dropped) | Unsigned(sticky ? 1 : 0);
     }
     // 64 bits rounded to 53 with the sticky bit: exact round-to-nearest of the whole
-    const double rounded = std::ldexp(static_cast<double>(static_cast<std::uint64_t>(magnitude)),
-                                      dropped - fractionBits);
+    const double rounded
+        = std::ldexp(static_cast<double>(static_cast<std::uint64_t>(magnitude)), dropped - fractionBits);
     return negative ? -rounded : rounded;
 }
 
@@ -110,7 +110,8 @@ std::array<double, FixedPointSum::pieceCount> FixedPointSum::pieces() const
     std::array<double, pieceCount> out{};
     for (int i = 0; i < pieceCount; ++i)
     {
-        out[static_cast<std::size_t>(i)] = static_cast<double>(static_cast<std::uint64_t>((bits >> (pieceBits * i)) & mask));
+        out[static_cast<std::size_t>(i)]
+            = static_cast<double>(static_cast<std::uint64_t>((bits >> (pieceBits * i)) & mask));
     }
     return out;
 }
@@ -123,7 +124,8 @@ FixedPointSum FixedPointSum::fromPieces(const double* pieces)
         const double piece = pieces[i];
         if (!(piece >= 0.0 && piece < std::ldexp(1.0, pieceBits) && piece == std::floor(piece)))
         {
-            throw std::invalid_argument("FixedPointSum::fromPieces: a piece is not a whole number below 2^43");
+            throw std::invalid_argument(
+                "FixedPointSum::fromPieces: a piece is not a whole number below 2^43");
         }
         bits |= Unsigned(static_cast<std::uint64_t>(piece)) << (pieceBits * i);
     }

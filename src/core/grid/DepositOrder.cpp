@@ -40,8 +40,7 @@ std::vector<DepositEntry> depositOrder(const std::vector<Parcel>& own, const std
         keyed[place] = {keyOf(parcel(place))[0], place};
     }
     std::sort(keyed.begin(), keyed.end(),
-              [&](const auto& a, const auto& b)
-              {
+              [&](const auto& a, const auto& b) {
                   return a.first != b.first ? a.first < b.first
                                             : keyOf(parcel(a.second)) < keyOf(parcel(b.second));
               });

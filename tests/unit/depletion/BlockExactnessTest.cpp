@@ -34,8 +34,8 @@ struct Blocks
 
 // Each parcel held by a random block; every block deposits its own and the others' that
 // reach it, in key order (keyOrder) or own first, then copies (the plain order)
-Blocks depositOnBlocks(const GridSpec& spec, const GridPartition& partition, const std::vector<Parcel>& parcels,
-                       bool keyOrder, unsigned seed)
+Blocks depositOnBlocks(const GridSpec& spec, const GridPartition& partition,
+                       const std::vector<Parcel>& parcels, bool keyOrder, unsigned seed)
 {
     Blocks blocks;
     const auto count = static_cast<std::size_t>(partition.processors());
@@ -237,6 +237,7 @@ TEST(BlockExactness, DepletionOverBlocksGivesTheWholeGridsFractionsAndGrants)
             fraction.add(limits[b].removedFractionSum(reaches[b], p, entry.saturated, entry.depth));
         }
         const ParcelReach& whole = wholeReaches.parcels[p];
-        EXPECT_EQ(fraction.value(), wholeLimit.removedFraction(wholeReaches, p, whole.saturated, whole.depth));
+        EXPECT_EQ(fraction.value(),
+                  wholeLimit.removedFraction(wholeReaches, p, whole.saturated, whole.depth));
     }
 }

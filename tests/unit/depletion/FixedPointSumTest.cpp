@@ -92,7 +92,7 @@ TEST(FixedPointSum, AgreesWithALongDoubleSum)
             magnitude += std::fabs(x);
         }
         const double bound = 1000.0 * std::ldexp(static_cast<double>(magnitude), -63)
-                           + 1000.0 * std::ldexp(1.0, -104) + std::fabs(static_cast<double>(reference)) * 0x1p-53;
+            + 1000.0 * std::ldexp(1.0, -104) + std::fabs(static_cast<double>(reference)) * 0x1p-53;
         EXPECT_NEAR(sumOf(terms), static_cast<double>(reference), bound);
     }
 }
