@@ -222,7 +222,8 @@ void Foam::dropletFiber::gridBlocks::depositCopies
     const std::vector<::dropletFiber::Parcel>& parcels,
     const double dt,
     parallelStatistics& statistics,
-    const std::function<void(std::size_t)>& depositOwn
+    const std::function<void(std::size_t)>& depositOwn,
+    const bool keyOrder
 )
 {
     using stage = parallelStatistics::stage;
@@ -253,13 +254,14 @@ void Foam::dropletFiber::gridBlocks::depositCopies
         }
     }
     // Own parcels and copies in key order: every node's sum in the same
-    // order on every decomposition (DepositOrder.hpp)
+    // order on every decomposition (DepositOrder.hpp); else own parcels in
+    // the cloud's order, then the copies in processor order
     statistics.timed
     (
         stage::deposit,
         [&]()
         {
-            for (const auto& entry : ::dropletFiber::depositOrder(parcels, copies_))
+            for (const auto& entry : depositSequence(parcels, keyOrder))
             {
                 if (entry.copy)
                 {
@@ -272,6 +274,31 @@ void Foam::dropletFiber::gridBlocks::depositCopies
             }
         }
     );
+}
+
+
+std::vector<::dropletFiber::DepositEntry>
+Foam::dropletFiber::gridBlocks::depositSequence
+(
+    const std::vector<::dropletFiber::Parcel>& parcels,
+    const bool keyOrder
+) const
+{
+    if (keyOrder)
+    {
+        return ::dropletFiber::depositOrder(parcels, copies_);
+    }
+    std::vector<::dropletFiber::DepositEntry> sequence;
+    sequence.reserve(parcels.size() + copies_.size());
+    for (std::size_t i = 0; i < parcels.size(); ++i)
+    {
+        sequence.push_back({false, i});
+    }
+    for (std::size_t i = 0; i < copies_.size(); ++i)
+    {
+        sequence.push_back({true, i});
+    }
+    return sequence;
 }
 
 
