@@ -195,6 +195,19 @@ double CaptureLimit::depthOf(const std::vector<double>& parts, double supply)
     return -logSurvival;
 }
 
+void CaptureLimit::sortParts(NodeDemand& entry)
+{
+    // The parts come in the order the samples were attributed, which differs between
+    // serial and parallel runs (local samples first, then other processors'): in value
+    // order, their sum and product are the same bits on every run
+    std::sort(entry.parts.begin(), entry.parts.end());
+    entry.total = 0.0;
+    for (const double part : entry.parts)
+    {
+        entry.total += part;
+    }
+}
+
 CaptureLimitReport CaptureLimit::limit(const DensityGrid& grid)
 {
     CaptureLimitReport report;
@@ -210,8 +223,9 @@ CaptureLimitReport CaptureLimit::limit(const DensityGrid& grid)
             = static_cast<std::size_t>((nodes[d] + brickSize - 1) / brickSize);
     }
     std::vector<NodeValue> list;
-    for (const auto& [node, entry] : demand_)
+    for (auto& [node, entry] : demand_)
     {
+        sortParts(entry);
         if (!grid.owns(node))
         {
             throw std::logic_error("CaptureLimit::limit: demand at node " + std::to_string(node)
@@ -239,6 +253,7 @@ CaptureLimitReport CaptureLimit::limit(const DensityGrid& grid)
     depthNodes_.assign(std::move(list), nodes);
     const std::size_t held = depthNodes_.nodes().size();
     removed_.assign(held, 0.0);
+    removedTerms_.clear();
     removalScale_.assign(held, 1.0);
     saturated_.assign(held, 0);
     for (std::size_t i = 0; i < held; ++i)

@@ -47,6 +47,7 @@
 #pragma once
 
 #include "collision/CollisionMass.hpp"
+#include "depletion/FixedPointSum.hpp"
 #include "grid/DensityGrid.hpp"
 #include "grid/DepositedShare.hpp"
 #include "grid/MultilinearWeights.hpp"
@@ -58,6 +59,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace dropletFiber
@@ -120,12 +122,15 @@ SegmentCapture segmentCapture(const DensityGrid& grid, const Eigen::Vector3d& a,
                               const CollisionOptions& options = CollisionOptions{});
 
 // One parcel's reach into the nodes with depth (the nodes a block owns): the parts of its
-// saturated share A_p and optical depth X_p, and its weights at those nodes.
+// saturated share A_p and optical depth X_p, and its weights at those nodes. The parts are
+// exact sums (FixedPointSum): added up over the blocks the parcel reached, they give the
+// same A_p and X_p, to the bit, whatever the blocks (serial = parallel).
 struct ParcelReach
 {
-    double saturated = 0.0;           // F_p sum w_pn over the saturated nodes
-    double depth = 0.0;               // F_p sum w_pn x_n over the others
-    std::size_t first = 0, count = 0; // its weights in ParcelReaches::weights
+    double saturated = 0.0;               // F_p sum w_pn over the saturated nodes
+    double depth = 0.0;                   // F_p sum w_pn x_n over the others
+    FixedPointSum saturatedSum, depthSum; // the same, exact (saturated, depth: their values)
+    std::size_t first = 0, count = 0;     // its weights in ParcelReaches::weights
 };
 
 // The reaches of a step's parcels, in the order evaluated (reach() appends one each).
@@ -204,6 +209,10 @@ public:
     // sum_n r_pn q_n / m_p over this block's nodes for parcel i (whole A_p and X_p): the
     // parts add up over the blocks to the fraction parcel p must lose (c_p where every q_n = 1).
     double removedFraction(const ParcelReaches& reaches, std::size_t i, double saturated, double depth) const;
+    // The same as an exact sum (FixedPointSum; each term at most 2: the fraction is clamped
+    // to 1 anyway), whose parts add up over the blocks to the bit.
+    FixedPointSum removedFractionSum(const ParcelReaches& reaches, std::size_t i, double saturated,
+                                     double depth) const;
 
 private:
     // r_pn / m_p at each of parcel i's nodes here, in the order reached: f(place, share).
@@ -213,6 +222,8 @@ private:
     // False when the parcel's deposit cannot reach a node with x_n > 0 (a cheap bound from
     // r_max, checked before its weights are evaluated).
     bool mayReach(const GridSpec& spec, const KernelSettings& kernel, const Parcel& parcel, double dt) const;
+    // entry's exact A_p and X_p parts (and their values) from its weights.
+    void sumReach(const std::vector<NodeWeight>& weights, ParcelReach& entry) const;
     // Clears takenBrick_ (the bricks set only).
     void forgetTakenBricks();
     // x_n > 0 at the node: takenBox_ and its brick.
@@ -229,6 +240,10 @@ private:
         double total = 0.0;
         std::vector<double> parts;
     };
+    // The parts in value order and their total (the same bits whatever the order added).
+    static void sortParts(NodeDemand& entry);
+    // removed_ from removedTerms_ (remove()'s r_pn), summed per node in value order.
+    void sumRemovedTerms();
     // x_n = -ln prod (1 - d_sn / s_n) (P13); infinity where a part is >= s_n
     static double depthOf(const std::vector<double>& parts, double supply);
     std::unordered_map<std::size_t, NodeDemand> demand_;
@@ -239,6 +254,7 @@ private:
     // the removal's factor q_n. 40 + 17 bytes per node with x_n > 0.
     SparseNodeValues depthNodes_;
     std::vector<double> removed_;
+    std::vector<std::pair<std::uint32_t, double>> removedTerms_; // (place, r_pn), until grant()
     std::vector<unsigned char> saturated_;
     std::vector<double> removalScale_;
     std::array<int, 3> gridNodes_{}; // the grid's nodes per direction

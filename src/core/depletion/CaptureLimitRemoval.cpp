@@ -58,16 +58,33 @@ void CaptureLimit::reach(DensityGrid& grid, const Parcel& parcel, double dt, Par
     if (!depth_.empty() && mayReach(grid.spec(), grid.kernelSettings(), parcel, dt))
     {
         const DensityGrid::NodeBoxTest asks = [this](const IndexBox& box) { return mayTake(box); };
-        // X_p's part: the sparse values are x_n (0 on saturated nodes, counted apart)
-        entry.depth = grid.depositedShare(parcel, dt, asks, depthNodes_, reaches.weights);
+        // The weights at the nodes with depth (x_n, 0 on saturated nodes, counted apart)
+        grid.depositedShare(parcel, dt, asks, depthNodes_, reaches.weights);
         entry.count = reaches.weights.size() - entry.first;
-        for (std::size_t k = entry.first; k < reaches.weights.size(); ++k)
-        {
-            const NodeWeight& w = reaches.weights[k];
-            entry.saturated += saturated_[w.position] != 0 ? w.weight : 0.0;
-        }
+        sumReach(reaches.weights, entry);
     }
     reaches.parcels.push_back(entry);
+}
+
+void CaptureLimit::sumReach(const std::vector<NodeWeight>& weights, ParcelReach& entry) const
+{
+    // Exact sums of the terms F w_pn x_n and F w_pn: the same bits however the nodes are
+    // split over blocks and in whatever order each block meets them
+    const std::vector<NodeValue>& nodes = depthNodes_.nodes();
+    for (std::size_t k = entry.first; k < entry.first + entry.count; ++k)
+    {
+        const NodeWeight& w = weights[k];
+        if (saturated_[w.position] != 0)
+        {
+            entry.saturatedSum.add(w.weight);
+        }
+        else
+        {
+            entry.depthSum.add(w.weight * nodes[w.position].value);
+        }
+    }
+    entry.saturated = entry.saturatedSum.value();
+    entry.depth = entry.depthSum.value();
 }
 
 double CaptureLimit::capturedFraction(double saturated, double depth)
@@ -108,15 +125,26 @@ void CaptureLimit::remove(const ParcelReaches& reaches, std::size_t i, double ma
                           double depth)
 {
     forEachRemovalShare(reaches, i, saturated, depth,
-                        [&](std::uint32_t place, double share) { removed_[place] += mass * share; });
+                        [&](std::uint32_t place, double share) {
+                            removedTerms_.push_back({place, mass * share});
+                        });
 }
 
 double CaptureLimit::removedFraction(const ParcelReaches& reaches, std::size_t i, double saturated,
                                      double depth) const
 {
-    double fraction = 0.0;
+    return removedFractionSum(reaches, i, saturated, depth).value();
+}
+
+FixedPointSum CaptureLimit::removedFractionSum(const ParcelReaches& reaches, std::size_t i, double saturated,
+                                               double depth) const
+{
+    // A term above 2 makes the fraction 1 whatever the others (realisedRemoval): clamped
+    // there, the exact sum stays within its range
+    FixedPointSum fraction;
     forEachRemovalShare(reaches, i, saturated, depth,
-                        [&](std::uint32_t place, double share) { fraction += share * removalScale_[place]; });
+                        [&](std::uint32_t place, double share)
+                        { fraction.add(std::min(2.0, share * removalScale_[place])); });
     return fraction;
 }
 
@@ -131,8 +159,22 @@ void CaptureLimit::scaleRemoval(std::size_t node, double q)
     removalScale_[place] = q;
 }
 
+void CaptureLimit::sumRemovedTerms()
+{
+    // R_n = sum_p r_pn with its terms in value order: the parcels (own and copies) reach a
+    // node in an order that differs between serial and parallel runs, the sorted terms not
+    std::sort(removedTerms_.begin(), removedTerms_.end());
+    std::fill(removed_.begin(), removed_.end(), 0.0);
+    for (const auto& [place, term] : removedTerms_)
+    {
+        removed_[place] += term;
+    }
+    removedTerms_.clear();
+}
+
 void CaptureLimit::grant(CaptureLimitReport& report)
 {
+    sumRemovedTerms();
     report.massGranted = 0.0;
     for (const auto& [node, entry] : demand_)
     {

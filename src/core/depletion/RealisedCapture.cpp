@@ -23,16 +23,27 @@ void RealisedCapture::add(const SampleCapture& sample, double realisedOverGrante
     {
         const auto u = static_cast<std::size_t>(c);
         const double granted = sample.mass[u] * limit.grantedRatio(sample.node[u]);
-        NodeParts& parts = nodes_[sample.node[u]];
-        parts.granted += granted;
-        parts.realised += realisedOverGranted * granted;
+        nodes_[sample.node[u]].emplace_back(granted, realisedOverGranted * granted);
     }
+}
+
+RealisedCapture::NodeParts RealisedCapture::summed(Terms terms)
+{
+    std::sort(terms.begin(), terms.end());
+    NodeParts parts;
+    for (const auto& [granted, realised] : terms)
+    {
+        parts.granted += granted;
+        parts.realised += realised;
+    }
+    return parts;
 }
 
 void RealisedCapture::scaleRemoval(CaptureLimit& limit) const
 {
-    for (const auto& [node, parts] : nodes_)
+    for (const auto& [node, terms] : nodes_)
     {
+        const NodeParts parts = summed(terms);
         if (parts.granted > 0.0)
         {
             limit.scaleRemoval(node, parts.realised / parts.granted);
@@ -45,7 +56,7 @@ double RealisedCapture::realisedMass() const
     double sum = 0.0;
     for (const auto& entry : nodes_)
     {
-        sum += entry.second.realised;
+        sum += summed(entry.second).realised;
     }
     return sum;
 }
@@ -53,7 +64,7 @@ double RealisedCapture::realisedMass() const
 double RealisedCapture::realisedAt(std::size_t node) const
 {
     const auto entry = nodes_.find(node);
-    return entry == nodes_.end() ? 0.0 : entry->second.realised;
+    return entry == nodes_.end() ? 0.0 : summed(entry->second).realised;
 }
 
 double realisedRemoval(double summedParts)

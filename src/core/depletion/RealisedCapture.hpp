@@ -21,6 +21,7 @@
 
 #include <cstddef>
 #include <map>
+#include <utility>
 #include <vector>
 
 namespace dropletFiber
@@ -47,7 +48,11 @@ private:
         double realised = 0.0;
         double granted = 0.0;
     };
-    std::map<std::size_t, NodeParts> nodes_; // node order: the same sums on every run
+    // Per node its samples' (granted, realised) terms; summed in value order (the samples
+    // come in a different order in serial and parallel runs; sorted, the same sums)
+    using Terms = std::vector<std::pair<double, double>>;
+    static NodeParts summed(Terms terms);
+    std::map<std::size_t, Terms> nodes_; // node order: the same sums on every run
 };
 
 // The fraction a parcel loses from its summed parts of sum_n r_pn q_n / m_p: at most 1,

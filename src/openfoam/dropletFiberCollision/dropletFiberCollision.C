@@ -563,7 +563,15 @@ Foam::functionObjects::dropletFiberCollision::depositParcels(const scalar dt)
     (
         stage::deposit, [&]() { depositLocalParcels(dt); }
     );
-    blocks_->depositCopies(*grid_, stepParcels_, dt, parallelStatistics_);
+    blocks_->depositCopies
+    (
+        *grid_, stepParcels_, dt, parallelStatistics_,
+        [&](const std::size_t i) { depositOwnParcel(i, dt); },
+        // Discrete hits draw whole droplets from the node sums: a last-bit
+        // difference can change a count, so there the sums are made the
+        // same on every decomposition (docs/model.md sec. 4, grid blocks)
+        collision_.mode == ::dropletFiber::CollisionMode::Discrete
+    );
     const ::dropletFiber::StepStatistics local = grid_->stepStatistics();
     const ::dropletFiber::StepStatistics& copies = grid_->copyStatistics();
     parallelStatistics_.countDeposit
@@ -584,7 +592,7 @@ void Foam::functionObjects::dropletFiberCollision::depositLocalParcels
     const scalar dt
 )
 {
-    ::dropletFiber::DensityGrid& grid = *grid_;
+    // Deposited by blocks_->depositCopies, with the copies, in key order
     stepParcels_.clear();
     for (label i = 0; i < parcels_.size(); ++i)
     {
@@ -594,18 +602,27 @@ void Foam::functionObjects::dropletFiberCollision::depositLocalParcels
         p.diameter = parcels_.d[i];
         p.nParticle = parcels_.nParticle[i];
         p.rhoDroplet = parcels_.rho[i];
-        try
-        {
-            grid.deposit(p, dt);
-        }
-        catch (const std::exception& e)
-        {
-            // A parcel with NaN or negative values: a broken cloud, not ours
-            FatalErrorInFunction
-                << type() << " " << name() << ": parcel " << i
-                << " at " << parcels_.position[i] << " cannot be deposited: "
-                << e.what() << exit(FatalError);
-        }
+    }
+}
+
+
+void Foam::functionObjects::dropletFiberCollision::depositOwnParcel
+(
+    const std::size_t i,
+    const scalar dt
+)
+{
+    try
+    {
+        grid_->deposit(stepParcels_[i], dt);
+    }
+    catch (const std::exception& e)
+    {
+        // A parcel with NaN or negative values: a broken cloud, not ours
+        FatalErrorInFunction
+            << type() << " " << name() << ": parcel " << label(i)
+            << " at " << parcels_.position[label(i)] << " cannot be deposited: "
+            << e.what() << exit(FatalError);
     }
 }
 
@@ -989,6 +1006,8 @@ Foam::functionObjects::dropletFiberCollision::dropletFiberCollision
     cloudNames_(),
     gatherWriteObjects_(false),
     lastTimeIndex_(-1),
+    clock_(0),
+    clockIndex_(-1),
     parcels_(),
     depletion_(true),
     depletionSteps_(0),
@@ -1160,7 +1179,8 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
 
     // 3. New fibers
     clockValue fiberStart(true);
-    coreCall("injecting fibers", [&]() { injectFibers(time_.value()); });
+    const scalar t = continuousTime();
+    coreCall("injecting fibers", [&]() { injectFibers(t); });
     step.fiberTime = fiberStart.elapsed();
 
     // 4. Collision mass of every segment; with depletion taken from the parcels

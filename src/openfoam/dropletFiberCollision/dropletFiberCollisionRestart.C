@@ -183,6 +183,28 @@ Foam::fileName Foam::functionObjects::dropletFiberCollision::statePath
 }
 
 
+Foam::scalar Foam::functionObjects::dropletFiberCollision::continuousTime()
+{
+    // deltaT added as Time::operator++ adds it, one step at a time
+    while (clockIndex_ >= 0 && clockIndex_ < time_.timeIndex())
+    {
+        clock_ += time_.deltaTValue();
+        ++clockIndex_;
+    }
+    if
+    (
+        clockIndex_ != time_.timeIndex()
+     || mag(clock_ - time_.value()) > 1e-9*time_.deltaTValue()
+    )
+    {
+        // A fresh run, or a time changed by hand: OpenFOAM's own
+        clock_ = time_.value();
+        clockIndex_ = time_.timeIndex();
+    }
+    return clock_;
+}
+
+
 bool Foam::functionObjects::dropletFiberCollision::stateFollowsWrite() const
 {
     // Asked at OpenFOAM's write of the fields: execute() writes the state
@@ -211,7 +233,7 @@ Foam::dictionary Foam::functionObjects::dropletFiberCollision::stateDict
     // precision: raise it for the restart state (bit-for-bit restart).
     const unsigned oldPrecision = IOstream::defaultPrecision(17);
     dictionary state;
-    state.add("time", time_.value());
+    state.add("time", clockIndex_ == time_.timeIndex() ? clock_ : time_.value());
     state.add("timeIndex", time_.timeIndex());
 
     // In parallel: which of how many processors wrote it (a serial run's
@@ -492,6 +514,8 @@ bool Foam::functionObjects::dropletFiberCollision::readState()
     const dictionary state(is);
     checkStateProcessors(state, path);
     checkStateTime(state, path);
+    clock_ = state.get<scalar>("time");
+    clockIndex_ = state.get<label>("timeIndex");
     restoreFibers(state.subDict("fibers"));
     checkFiberCount(state, path);
     restoreInjectorCounts(state.subDict("injectors"), state.subOrEmptyDict("sources"));
@@ -744,7 +768,7 @@ void Foam::functionObjects::dropletFiberCollision::restoreInjectorCounts
         const label born = dropletFiber::checkedCoreCall
         (
             injectors,
-            [&]() { return label(injector.bornBy(time_.value())); }
+            [&]() { return label(injector.bornBy(clock_)); }
         );
         if (count > born)
         {

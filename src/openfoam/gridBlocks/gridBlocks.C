@@ -8,6 +8,7 @@
 #include "UOPstream.H"
 #include "UIPstream.H"
 #include "grid/MultilinearWeights.hpp"
+#include "grid/DepositOrder.hpp"
 
 #include <stdexcept>
 #include <string>
@@ -220,50 +221,84 @@ void Foam::dropletFiber::gridBlocks::depositCopies
     ::dropletFiber::DensityGrid& grid,
     const std::vector<::dropletFiber::Parcel>& parcels,
     const double dt,
-    parallelStatistics& statistics
+    parallelStatistics& statistics,
+    const std::function<void(std::size_t)>& depositOwn,
+    const bool keyOrder
 )
 {
-    if (!Pstream::parRun())
-    {
-        return;
-    }
-    sentCopies_.resize(outgoing_.size());
-    forAll(outgoing_, proci)
-    {
-        outgoing_[proci].clear();
-        sentCopies_[proci].clear();
-    }
-    // The computing timed, the exchange not (parallelStatistics)
     using stage = parallelStatistics::stage;
-    statistics.timed(stage::deposit, [&]() { packCopies(grid, parcels, dt); });
-    const List<List<scalar>> received =
-        exchangeLists(statistics, parallelStatistics::traffic::parcels);
-    // In processor order: the same sums on every run. Kept for depletion,
-    // whose removal needs these copies' weights here
     copies_.clear();
-    copiesFrom_.assign(received.size(), 0);
+    copiesFrom_.assign(outgoing_.size(), 0);
+    if (Pstream::parRun())
+    {
+        sentCopies_.resize(outgoing_.size());
+        forAll(outgoing_, proci)
+        {
+            outgoing_[proci].clear();
+            sentCopies_[proci].clear();
+        }
+        // The computing timed, the exchange not (parallelStatistics)
+        statistics.timed(stage::deposit, [&]() { packCopies(grid, parcels, dt); });
+        const List<List<scalar>> received =
+            exchangeLists(statistics, parallelStatistics::traffic::parcels);
+        // Kept in processor order for depletion, whose removal needs these
+        // copies' weights here
+        forAll(received, proci)
+        {
+            const List<scalar>& in = received[proci];
+            for (label i = 0; i + parcelValues <= in.size(); i += parcelValues)
+            {
+                copies_.push_back(readParcel(in.cdata() + i));
+                ++copiesFrom_[proci];
+            }
+        }
+    }
+    // Own parcels and copies in key order: every node's sum in the same
+    // order on every decomposition (DepositOrder.hpp); else own parcels in
+    // the cloud's order, then the copies in processor order
     statistics.timed
     (
         stage::deposit,
         [&]()
         {
-            forAll(received, proci)
+            for (const auto& entry : depositSequence(parcels, keyOrder))
             {
-                const List<scalar>& in = received[proci];
-                for
-                (
-                    label i = 0;
-                    i + parcelValues <= in.size();
-                    i += parcelValues
-                )
+                if (entry.copy)
                 {
-                    copies_.push_back(readParcel(in.cdata() + i));
-                    grid.depositCopy(copies_.back(), dt);
-                    ++copiesFrom_[proci];
+                    grid.depositCopy(copies_[entry.index], dt);
+                }
+                else
+                {
+                    depositOwn(entry.index);
                 }
             }
         }
     );
+}
+
+
+std::vector<::dropletFiber::DepositEntry>
+Foam::dropletFiber::gridBlocks::depositSequence
+(
+    const std::vector<::dropletFiber::Parcel>& parcels,
+    const bool keyOrder
+) const
+{
+    if (keyOrder)
+    {
+        return ::dropletFiber::depositOrder(parcels, copies_);
+    }
+    std::vector<::dropletFiber::DepositEntry> sequence;
+    sequence.reserve(parcels.size() + copies_.size());
+    for (std::size_t i = 0; i < parcels.size(); ++i)
+    {
+        sequence.push_back({false, i});
+    }
+    for (std::size_t i = 0; i < copies_.size(); ++i)
+    {
+        sequence.push_back({true, i});
+    }
+    return sequence;
 }
 
 
@@ -407,6 +442,9 @@ void Foam::dropletFiber::gridBlocks::answerCornerSums
     const List<List<scalar>>& questions
 )
 {
+    // Per corner of the point's cell its term (0 where owned elsewhere): the asker adds
+    // the terms in corner order, as a serial run does
+    const label nQ = ::dropletFiber::nQuantities;
     forAll(questions, proci)
     {
         DynamicList<scalar>& out = outgoing_[proci];
@@ -415,15 +453,60 @@ void Foam::dropletFiber::gridBlocks::answerCornerSums
         for (label i = 0; i + 3 <= points.size(); i += 3)
         {
             const Eigen::Vector3d point(points[i], points[i + 1], points[i + 2]);
-            std::array<double, ::dropletFiber::nQuantities> sums{};
-            grid.addOwnedCornerSums
-            (
-                ::dropletFiber::multilinearWeights(spec_, point), sums
-            );
-            for (const double value : sums)
+            CornerTerms terms{};
+            const ::dropletFiber::CornerWeights corners =
+                ::dropletFiber::multilinearWeights(spec_, point);
+            ownedCornerTerms(grid, corners, terms);
+            for (label t = 0; t < corners.count*nQ; ++t)
             {
-                out.append(value);
+                out.append(terms[t]);
             }
+        }
+    }
+}
+
+
+void Foam::dropletFiber::gridBlocks::ownedCornerTerms
+(
+    const ::dropletFiber::DensityGrid& grid,
+    const ::dropletFiber::CornerWeights& corners,
+    CornerTerms& terms
+)
+{
+    const label nQ = ::dropletFiber::nQuantities;
+    for (int c = 0; c < corners.count; ++c)
+    {
+        if (!grid.owns(corners.node[c]))
+        {
+            continue;
+        }
+        // The one corner's weight times its window sums
+        ::dropletFiber::CornerWeights one;
+        one.count = 1;
+        one.node[0] = corners.node[c];
+        one.weight[0] = corners.weight[c];
+        std::array<double, ::dropletFiber::nQuantities> term{};
+        grid.addOwnedCornerSums(one, term);
+        std::copy(term.begin(), term.end(), terms.begin() + c*nQ);
+    }
+}
+
+
+void Foam::dropletFiber::gridBlocks::addCornerTerms
+(
+    const int count,
+    const CornerTerms& terms,
+    std::array<double, ::dropletFiber::nQuantities>& sums
+)
+{
+    // In corner order from 0, on every run: serial = parallel to the bit
+    const label nQ = ::dropletFiber::nQuantities;
+    sums.fill(0.0);
+    for (int c = 0; c < count; ++c)
+    {
+        for (label q = 0; q < nQ; ++q)
+        {
+            sums[q] += terms[c*nQ + q];
         }
     }
 }
@@ -433,23 +516,24 @@ void Foam::dropletFiber::gridBlocks::addOtherOwnersSums
 (
     const ::dropletFiber::DensityGrid& grid,
     const std::vector<std::vector<std::size_t>>& askedFor,
+    const std::vector<::dropletFiber::CornerWeights>& cornersOf,
     parallelStatistics& statistics,
-    std::vector<std::array<double, ::dropletFiber::nQuantities>>& sums
+    std::vector<CornerTerms>& terms
 )
 {
     const label nQ = ::dropletFiber::nQuantities;
     const auto what = parallelStatistics::traffic::gridQueries;
     answerCornerSums(grid, exchangeLists(statistics, what));
-    // Their shares added in processor order: the same sums on every run
+    // Each corner's term comes from its one owner (0 from the others): exact
     const List<List<scalar>> answers = exchangeLists(statistics, what);
     forAll(answers, proci)
     {
-        for (std::size_t i = 0; i < askedFor[proci].size(); ++i)
+        label at = 0;
+        for (const std::size_t p : askedFor[proci])
         {
-            auto& to = sums[askedFor[proci][i]];
-            for (label q = 0; q < nQ; ++q)
+            for (label t = 0; t < cornersOf[p].count*nQ; ++t)
             {
-                to[q] += answers[proci][label(i)*nQ + q];
+                terms[p][t] += answers[proci][at++];
             }
         }
     }
@@ -465,10 +549,7 @@ Foam::dropletFiber::gridBlocks::sample
     std::vector<double>* massSums
 )
 {
-    std::vector<std::array<double, ::dropletFiber::nQuantities>> sums
-    (
-        points.size()
-    );
+    std::vector<CornerTerms> terms(points.size(), CornerTerms{});
     std::vector<bool> inside(points.size(), false);
     std::vector<std::vector<std::size_t>> askedFor(outgoing_.size());
     forAll(outgoing_, proci)
@@ -503,7 +584,7 @@ Foam::dropletFiber::gridBlocks::sample
             continue;
         }
         const ::dropletFiber::CornerWeights& corners = cornersOf[p];
-        grid.addOwnedCornerSums(corners, sums[p]);
+        ownedCornerTerms(grid, corners, terms[p]);
         if (Pstream::parRun())
         {
             askCornerOwners(corners, points[p], p, askedFor);
@@ -511,14 +592,19 @@ Foam::dropletFiber::gridBlocks::sample
     }
     if (Pstream::parRun())
     {
-        addOtherOwnersSums(grid, askedFor, statistics, sums);
+        addOtherOwnersSums(grid, askedFor, cornersOf, statistics, terms);
     }
+    std::vector<std::array<double, ::dropletFiber::nQuantities>> sums
+    (
+        points.size()
+    );
     std::vector<::dropletFiber::DropletFieldValue> values(points.size());
     for (std::size_t p = 0; p < points.size(); ++p)
     {
         values[p].inside = false;
         if (inside[p])
         {
+            addCornerTerms(cornersOf[p].count, terms[p], sums[p]);
             values[p] = grid.fieldFromCornerSums(sums[p]);
         }
     }
@@ -622,33 +708,100 @@ std::vector<double> Foam::dropletFiber::gridBlocks::grantCapture
     // request's granted part back
     report = limit.limit(grid);
     captured = removeCaptured(grid, limit, parcels, dt, report, statistics);
+    return grantedMasses(limit, points, massShares, requests, statistics);
+}
+
+
+std::vector<double> Foam::dropletFiber::gridBlocks::grantedMasses
+(
+    const ::dropletFiber::CaptureLimit& limit,
+    const std::vector<Eigen::Vector3d>& points,
+    const std::vector<double>& massShares,
+    const List<List<scalar>>& requests,
+    parallelStatistics& statistics
+)
+{
+    // Per corner d_sc g_c, each from the corner's owner, added in corner order: the
+    // same bits whichever processors own the corners
+    std::vector<std::array<double, 8>> slots(points.size(), std::array<double, 8>{});
+    std::vector<int> count(points.size(), 0);
+    for (std::size_t p = 0; p < points.size(); ++p)
+    {
+        if (massShares[p] > 0)
+        {
+            const auto corners = ::dropletFiber::multilinearWeights(spec_, points[p]);
+            count[p] = corners.count;
+            grantedSlots(limit, grantLocal_[p], corners, slots[p]);
+        }
+    }
+    if (Pstream::parRun())
+    {
+        for (std::size_t proci = 0; proci < grantRemote_.size(); ++proci)
+        {
+            outgoing_[proci].clear();
+            const List<scalar>& in = requests[proci];
+            for (std::size_t i = 0; i < grantRemote_[proci].size(); ++i)
+            {
+                const Eigen::Vector3d point(in[4*i], in[4*i + 1], in[4*i + 2]);
+                const auto corners = ::dropletFiber::multilinearWeights(spec_, point);
+                std::array<double, 8> answer{};
+                grantedSlots(limit, grantRemote_[proci][i], corners, answer);
+                for (int c = 0; c < corners.count; ++c)
+                {
+                    outgoing_[proci].append(answer[c]);
+                }
+            }
+        }
+        const List<List<scalar>> answers =
+            exchangeLists(statistics, parallelStatistics::traffic::gridQueries);
+        forAll(answers, proci)
+        {
+            label at = 0;
+            for (const std::size_t p : grantAskedFor_[proci])
+            {
+                for (int c = 0; c < count[p]; ++c)
+                {
+                    slots[p][c] += answers[proci][at++];
+                }
+            }
+        }
+    }
     std::vector<double> granted(points.size(), 0.0);
     for (std::size_t p = 0; p < points.size(); ++p)
     {
-        granted[p] = limit.grantedMass(local[p]);
-    }
-    if (!Pstream::parRun())
-    {
-        return granted;
-    }
-    for (std::size_t proci = 0; proci < remote.size(); ++proci)
-    {
-        outgoing_[proci].clear();
-        for (const auto& capture : remote[proci])
+        for (int c = 0; c < count[p]; ++c)
         {
-            outgoing_[proci].append(limit.grantedMass(capture));
-        }
-    }
-    // Added in processor order: the same sums on every run
-    const List<List<scalar>> answers = exchangeLists(statistics, what);
-    forAll(answers, proci)
-    {
-        for (std::size_t i = 0; i < askedFor[proci].size(); ++i)
-        {
-            granted[askedFor[proci][i]] += answers[proci][label(i)];
+            granted[p] += slots[p][c];
         }
     }
     return granted;
+}
+
+
+void Foam::dropletFiber::gridBlocks::grantedSlots
+(
+    const ::dropletFiber::CaptureLimit& limit,
+    const ::dropletFiber::SampleCapture& capture,
+    const ::dropletFiber::CornerWeights& corners,
+    std::array<double, 8>& slots
+)
+{
+    // The capture's entries are its corners with a part, in corner order: each
+    // to the next corner of its node (a node twice among the corners, at a
+    // folded face, keeps its two entries apart)
+    int c = 0;
+    for (int k = 0; k < capture.count; ++k)
+    {
+        while (c < corners.count && corners.node[c] != capture.node[k])
+        {
+            ++c;
+        }
+        if (c == corners.count)
+        {
+            break;
+        }
+        slots[c++] = capture.mass[k]*limit.grantedRatio(capture.node[k]);
+    }
 }
 
 
@@ -675,15 +828,15 @@ std::vector<double> Foam::dropletFiber::gridBlocks::removeCaptured
     const std::size_t own = parcels.size();
     std::vector<double> saturated(own, 0.0);
     std::vector<double> depth(own, 0.0);
-    for (std::size_t p = 0; p < own; ++p)
-    {
-        saturated[p] = reaches_.parcels[p].saturated;
-        depth[p] = reaches_.parcels[p].depth;
-    }
     std::vector<double> copySums;
     if (Pstream::parRun())
     {
-        exchangeReachSums(own, saturated, depth, copySums, statistics);
+        exchangeReachSums(own, copySums, statistics);
+    }
+    for (std::size_t p = 0; p < own; ++p)
+    {
+        saturated[p] = reaches_.parcels[p].saturatedSum.value();
+        depth[p] = reaches_.parcels[p].depthSum.value();
     }
     // c_p from the whole sums; each block attributes the losses to its nodes
     std::vector<double> captured(own, 0.0);
@@ -738,31 +891,39 @@ void Foam::dropletFiber::gridBlocks::keepWholeReachSums
 void Foam::dropletFiber::gridBlocks::exchangeReachSums
 (
     const std::size_t ownParcels,
-    std::vector<double>& saturated,
-    std::vector<double>& depth,
     std::vector<double>& copySums,
     parallelStatistics& statistics
 )
 {
     const auto what = parallelStatistics::traffic::parcels;
-    // The copies' parts to their processors, in the order received
+    constexpr label pieces = ::dropletFiber::FixedPointSum::pieceCount;
+    // The copies' exact parts to their processors, in the order received
     std::size_t next = ownParcels;
     forAll(outgoing_, proci)
     {
         outgoing_[proci].clear();
         for (std::size_t i = 0; i < copiesFrom_[proci]; ++i, ++next)
         {
-            outgoing_[proci].append(reaches_.parcels[next].saturated);
-            outgoing_[proci].append(reaches_.parcels[next].depth);
+            const ::dropletFiber::ParcelReach& part = reaches_.parcels[next];
+            for (const auto& sum : {part.saturatedSum, part.depthSum})
+            {
+                for (const double piece : sum.pieces())
+                {
+                    outgoing_[proci].append(piece);
+                }
+            }
         }
     }
+    // Added exactly to the parcels' own parts: any order, the same bits
     const List<List<scalar>> parts = exchangeLists(statistics, what);
     forAll(parts, proci)
     {
         for (std::size_t i = 0; i < sentCopies_[proci].size(); ++i)
         {
-            saturated[sentCopies_[proci][i]] += parts[proci][label(2*i)];
-            depth[sentCopies_[proci][i]] += parts[proci][label(2*i + 1)];
+            const scalar* in = parts[proci].cdata() + 2*pieces*i;
+            ::dropletFiber::ParcelReach& whole = reaches_.parcels[sentCopies_[proci][i]];
+            whole.saturatedSum.add(::dropletFiber::FixedPointSum::fromPieces(in));
+            whole.depthSum.add(::dropletFiber::FixedPointSum::fromPieces(in + pieces));
         }
     }
     // The sums back to the blocks holding the copies
@@ -771,8 +932,8 @@ void Foam::dropletFiber::gridBlocks::exchangeReachSums
         outgoing_[proci].clear();
         for (const std::size_t p : sentCopies_[proci])
         {
-            outgoing_[proci].append(saturated[p]);
-            outgoing_[proci].append(depth[p]);
+            outgoing_[proci].append(reaches_.parcels[p].saturatedSum.value());
+            outgoing_[proci].append(reaches_.parcels[p].depthSum.value());
         }
     }
     const List<List<scalar>> sums = exchangeLists(statistics, what);

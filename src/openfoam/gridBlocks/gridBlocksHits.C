@@ -66,22 +66,27 @@ std::vector<double> Foam::dropletFiber::gridBlocks::realisedFractions
     const auto part = [&](const std::size_t i)
     {
         const ::dropletFiber::ParcelReach& entry = reaches_.parcels[i];
-        return limit.removedFraction(reaches_, i, entry.saturated, entry.depth);
+        return limit.removedFractionSum(reaches_, i, entry.saturated, entry.depth);
     };
-    std::vector<double> fraction(own, 0.0);
+    std::vector<::dropletFiber::FixedPointSum> sums(own);
     for (std::size_t p = 0; p < own; ++p)
     {
-        fraction[p] = part(p);
+        sums[p] = part(p);
     }
     if (Pstream::parRun())
     {
+        // The parts exact: added in any order, the same bits (serial = parallel)
+        constexpr label pieces = ::dropletFiber::FixedPointSum::pieceCount;
         std::size_t next = own;
         forAll(outgoing_, proci)
         {
             outgoing_[proci].clear();
             for (std::size_t i = 0; i < copiesFrom_[proci]; ++i)
             {
-                outgoing_[proci].append(part(next++));
+                for (const double piece : part(next++).pieces())
+                {
+                    outgoing_[proci].append(piece);
+                }
             }
         }
         const List<List<scalar>> parts =
@@ -90,9 +95,20 @@ std::vector<double> Foam::dropletFiber::gridBlocks::realisedFractions
         {
             for (std::size_t i = 0; i < sentCopies_[proci].size(); ++i)
             {
-                fraction[sentCopies_[proci][i]] += parts[proci][label(i)];
+                sums[sentCopies_[proci][i]].add
+                (
+                    ::dropletFiber::FixedPointSum::fromPieces
+                    (
+                        parts[proci].cdata() + pieces*i
+                    )
+                );
             }
         }
+    }
+    std::vector<double> fraction(own, 0.0);
+    for (std::size_t p = 0; p < own; ++p)
+    {
+        fraction[p] = sums[p].value();
     }
     for (double& f : fraction)
     {

@@ -163,18 +163,26 @@ Taken checkRemoval(const GridSpec& spec, int processors, unsigned seed)
         const ParcelReach reach = reachOf(wholeLimit, whole, parcel);
         EXPECT_NEAR(reach.depth, expected, 1e-13 * (1.0 + expected));
         EXPECT_NEAR(reach.saturated, expectedSaturated, 1e-13);
-        // The dense region sum: every node of the taken box, weights row by row
+        // The dense region sum: every node of the taken box, weights row by row (in
+        // doubles; the reach's is exact: equal to round-off)
         const DensityGrid::NodeFraction depthOfNode = depth;
-        EXPECT_EQ(reach.depth, whole.depositedShare(parcel, dt, askAll, depthOfNode, wholeLimit.takenBox()));
+        const double dense = whole.depositedShare(parcel, dt, askAll, depthOfNode, wholeLimit.takenBox());
+        EXPECT_NEAR(reach.depth, dense, 1e-14 * dense + 1e-30); // + the exact sum's quanta
         double parts = 0.0, saturatedParts = 0.0;
+        FixedPointSum exactParts, exactSaturatedParts;
         for (std::size_t b = 0; b < blocks.size(); ++b)
         {
             const ParcelReach part = reachOf(blockLimits[b], *blocks[b], parcel);
             parts += part.depth;
             saturatedParts += part.saturated;
+            exactParts.add(part.depthSum);
+            exactSaturatedParts.add(part.saturatedSum);
         }
         EXPECT_NEAR(parts, expected, 1e-13 * (1.0 + expected));
         EXPECT_NEAR(saturatedParts, expectedSaturated, 1e-13);
+        // The blocks' exact parts give the whole grid's sums to the bit
+        EXPECT_EQ(exactParts.value(), reach.depth);
+        EXPECT_EQ(exactSaturatedParts.value(), reach.saturated);
         const bool reached = expected > 0.0 || expectedSaturated > 0.0;
         DensityGrid one(spec, settings, 1);
         one.deposit(parcel, dt);
