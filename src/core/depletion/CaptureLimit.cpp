@@ -127,6 +127,7 @@ void CaptureLimit::clear()
     removed_.clear();
     saturated_.clear();
     removalScale_.clear();
+    shortfall_.clear();
     takenBox_ = IndexBox{};
     forgetTakenBricks();
 }
@@ -240,6 +241,7 @@ CaptureLimitReport CaptureLimit::limit(const DensityGrid& grid)
     const std::size_t held = depthNodes_.nodes().size();
     removed_.assign(held, 0.0);
     removalScale_.assign(held, 1.0);
+    shortfall_.assign(held, 0.0);
     saturated_.assign(held, 0);
     for (std::size_t i = 0; i < held; ++i)
     {

@@ -43,7 +43,9 @@
 // Discrete hits: where the fibers realise at node n q_n times the granted R_n, the
 // parcels must lose sum_n r_pn q_n instead: scaleRemoval(node, q_n) on the owner, then
 // removedFraction() over the blocks (the parts add up) replaces c_p; with every q_n = 1
-// (expected hits) it is c_p to round-off.
+// (expected hits) it is c_p to round-off. A parcel whose parts ask more than it holds
+// (sum_n r_pn q_n > m_p) gives m_p: its shortfall is spread over its parts
+// (addShortfall) and the node's realised mass is cut by it (unremovedShare, P33).
 #pragma once
 
 #include "collision/CollisionMass.hpp"
@@ -204,6 +206,13 @@ public:
     // sum_n r_pn q_n / m_p over this block's nodes for parcel i (whole A_p and X_p): the
     // parts add up over the blocks to the fraction parcel p must lose (c_p where every q_n = 1).
     double removedFraction(const ParcelReaches& reaches, std::size_t i, double saturated, double depth) const;
+    // Parcel i (whole A_p and X_p) gives less than its parts ask (P33): shortfall_n +=
+    // unremoved r_pn q_n / m_p at its nodes here, unremoved = m_p (1 - 1 / x_p) (kg).
+    void addShortfall(const ParcelReaches& reaches, std::size_t i, double saturated, double depth,
+                      double unremoved);
+    // shortfall_n / (q_n R_n): the part of node n's realised mass its parcels did not give
+    // (0 where none fell short; in [0, 1]).
+    double unremovedShare(std::size_t node) const;
 
 private:
     // r_pn / m_p at each of parcel i's nodes here, in the order reached: f(place, share).
@@ -236,11 +245,12 @@ private:
     std::unordered_map<std::size_t, double> depth_;   // x_n > 0, owned nodes
     // depth_ in node order with grid indices (the parcels' sums; value x_n, 0 where
     // saturated), built by limit(); per place the removed mass R_n, whether saturated, and
-    // the removal's factor q_n. 40 + 17 bytes per node with x_n > 0.
+    // the removal's factor q_n. 40 + 25 bytes per node with x_n > 0.
     SparseNodeValues depthNodes_;
     std::vector<double> removed_;
     std::vector<unsigned char> saturated_;
     std::vector<double> removalScale_;
+    std::vector<double> shortfall_;
     std::array<int, 3> gridNodes_{}; // the grid's nodes per direction
     IndexBox takenBox_;
     std::array<std::size_t, 3> bricks_{};     // per direction, over the grid

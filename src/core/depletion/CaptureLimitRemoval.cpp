@@ -131,6 +131,25 @@ void CaptureLimit::scaleRemoval(std::size_t node, double q)
     removalScale_[place] = q;
 }
 
+void CaptureLimit::addShortfall(const ParcelReaches& reaches, std::size_t i, double saturated, double depth,
+                                double unremoved)
+{
+    forEachRemovalShare(reaches, i, saturated, depth, [&](std::uint32_t place, double share)
+                        { shortfall_[place] += unremoved * share * removalScale_[place]; });
+}
+
+double CaptureLimit::unremovedShare(std::size_t node) const
+{
+    const std::size_t place = depthNodes_.position(node);
+    if (place >= shortfall_.size() || shortfall_[place] == 0.0)
+    {
+        return 0.0;
+    }
+    // realised_n = q_n R_n (RealisedCapture's granted_n is R_n to round-off)
+    const double realised = removalScale_[place] * removed_[place];
+    return realised > 0.0 ? std::clamp(shortfall_[place] / realised, 0.0, 1.0) : 0.0;
+}
+
 void CaptureLimit::grant(CaptureLimitReport& report)
 {
     report.massGranted = 0.0;
