@@ -73,6 +73,7 @@ void Foam::functionObjects::dropletFiberCollision::countHits
         }
     }
     std::vector<double> cut;
+    bool fellShort = false;
     if (realise)
     {
         // The parcels lose what was realised instead of c_p (P31), and the
@@ -85,13 +86,43 @@ void Foam::functionObjects::dropletFiberCollision::countHits
         stepCaptured_ =
             blocks_->realiseCapture
             (
-                captureLimit_, stepParcels_, ratios, cut, parallelStatistics_
+                captureLimit_, stepParcels_, ratios, cut, fellShort,
+                parallelStatistics_
             );
     }
     if (discrete)
     {
         giveHits(fields, hitMass, cut, samplesPerSegment, capture);
     }
+    if (fellShort)
+    {
+        logHitsCutOnce(cut);
+    }
+}
+
+
+void Foam::functionObjects::dropletFiberCollision::logHitsCutOnce
+(
+    const std::vector<double>& cut
+)
+{
+    // Every processor's cut (empty on those without samples) is formed
+    if (loggedHitsCut_)
+    {
+        return;
+    }
+    loggedHitsCut_ = true;
+    scalar total = 0;
+    for (const double c : cut)
+    {
+        total += c;
+    }
+    reduce(total, sumOp<scalar>());
+    Info<< type() << " " << name() << ": at time " << time_.timeName()
+        << " discrete hits asked more of some parcels than they held: they"
+        << " gave all they had and the hits at their nodes were cut by "
+        << total << " kg, so that captured = removed (docs/model.md sec. 7,"
+        << " P33; logged once)" << endl;
 }
 
 

@@ -25,6 +25,7 @@ std::vector<double> Foam::dropletFiber::gridBlocks::realiseCapture
     const std::vector<::dropletFiber::Parcel>& parcels,
     const std::vector<double>& realisedOverGranted,
     std::vector<double>& cut,
+    bool& fellShort,
     parallelStatistics& statistics
 )
 {
@@ -58,7 +59,7 @@ std::vector<double> Foam::dropletFiber::gridBlocks::realiseCapture
     realised.scaleRemoval(limit);
     std::vector<double> fraction = realisedFractions(limit, statistics);
     std::vector<double> unremoved(fraction.size(), 0.0);
-    bool fellShort = false;
+    fellShort = false;
     for (std::size_t p = 0; p < fraction.size(); ++p)
     {
         unremoved[p] =
@@ -70,7 +71,8 @@ std::vector<double> Foam::dropletFiber::gridBlocks::realiseCapture
         fraction[p] = ::dropletFiber::realisedRemoval(fraction[p]);
     }
     cut.clear();
-    if (returnReduce(fellShort, orOp<bool>()))
+    reduce(fellShort, orOp<bool>());
+    if (fellShort)
     {
         cut =
             cutSamples
