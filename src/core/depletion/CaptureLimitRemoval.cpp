@@ -134,7 +134,8 @@ void CaptureLimit::scaleRemoval(std::size_t node, double q)
 void CaptureLimit::addShortfall(const ParcelReaches& reaches, std::size_t i, double saturated, double depth,
                                 double unremoved)
 {
-    forEachRemovalShare(reaches, i, saturated, depth, [&](std::uint32_t place, double share)
+    forEachRemovalShare(reaches, i, saturated, depth,
+                        [&](std::uint32_t place, double share)
                         { shortfall_[place] += unremoved * share * removalScale_[place]; });
 }
 

@@ -25,7 +25,7 @@ struct Balance
 {
     double realised = 0.0, removed = 0.0, granted = 0.0, worstStep = 0.0;
     double worstUnscaled = 0.0; // |c'_p - c_p| with every q_n = 1
-    double drawn = 0.0;      // N m_hit, before the parcels' shortfall (P33)
+    double drawn = 0.0;         // N m_hit, before the parcels' shortfall (P33)
     int emptyingSteps = 0, nodesAboveOne = 0, emptiedParcels = 0;
     bool emptied = false; // this step
 };
@@ -117,8 +117,7 @@ std::pair<double, double> captureAndRemove(DensityGrid& density, std::vector<Par
     const std::array<int, 3> n = density.spec().nodes;
     for (std::size_t node = 0; node < static_cast<std::size_t>(n[0] * n[1] * n[2]); ++node)
     {
-        balance.nodesAboveOne
-            += perNode.realisedAt(node) > density.lastStepValue(node, quantityMass) ? 1 : 0;
+        balance.nodesAboveOne += perNode.realisedAt(node) > density.lastStepValue(node, quantityMass) ? 1 : 0;
     }
     double removed = 0.0;
     balance.emptied = realised.emptied > 0;
