@@ -1,6 +1,6 @@
 """Depletion's binder balance in a finished case (docs/model.md sec. 7).
 
-Usage: checkDepletion.py [--limited STREAMS] CASE
+Usage: checkDepletion.py [--limited STREAMS] [--hitsCut] CASE
 
 Every step, the mass the fibers captured (capturedStep) must equal the mass taken
 from the parcels (removedStep) to 1e-12 relative, and the parcel mass flying on
@@ -12,7 +12,9 @@ once), and the parcels of the STREAMS streams that cross the fibers lose all the
 droplets and leave the cloud: the injection gives 50 parcels per step (one per
 stream, checkCapture.py) and none reaches the outlet, so without removal the table
 would count 50 (n - 1) parcels at step n; with it, at least STREAMS fewer once a
-stream's parcels have crossed.
+stream's parcels have crossed. With --hitsCut (collision mode discrete where the
+hits ask more of some parcels than they hold, P33): the log says once that the hits
+were cut, and captured = removed holds in those steps as in all others.
 """
 import glob
 import os
@@ -24,9 +26,16 @@ from checks import check, failures, finish  # noqa: E402
 
 args = sys.argv[1:]
 streams = None
-if args and args[0] == "--limited":
-    streams = int(args[1])
-    args = args[2:]
+hitsCut = False
+while args and args[0].startswith("--"):
+    if args[0] == "--limited":
+        streams = int(args[1])
+        args = args[2:]
+    elif args[0] == "--hitsCut":
+        hitsCut = True
+        args = args[1:]
+    else:
+        sys.exit("checkDepletion.py: unknown option %s" % args[0])
 case = args[0]
 rows = read_table(os.path.join(case, "postProcessing/dropletFiber/0/dropletFiber.dat"))
 
@@ -55,4 +64,8 @@ if streams is not None:
     check(last["parcels"] <= injected - streams,
           "parcels emptied are removed: %d parcels, %d injected (at least %d fewer expected)"
           % (last["parcels"], injected, streams))
+if hitsCut:
+    text = "".join(open(log).read() for log in glob.glob(os.path.join(case, "log.*Foam")))
+    check(text.count("discrete hits asked more of some parcels than they held") == 1,
+          "the log says once that parcels fell short and the hits were cut")
 finish()

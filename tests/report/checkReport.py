@@ -192,8 +192,9 @@ def columns(run, work):
         for r in rows:
             f.write("\t".join("%.12e" % {**r, **added}[n] for n in names) + "\n")
     with open(os.path.join(out, "binderDistribution.dat"), "w") as f:
-        f.write("# Time\tbareLengthFraction\tsigmaMean\tsigmaCoV\thitsPerLength\n")
-        f.write("0.02\t0.5\t7e-08\t0.1\t100\n0.04\t0.25\t7.5e-08\t0.125\t200\n")
+        f.write("# Time\tbareLengthFraction\tsigmaMean\tsigmaCoV\thitsPerLength"
+                "\texpectedBareLengthFraction\texpectedSigmaCoV\n")
+        f.write("0.02\t0.5\t7e-08\t0.1\t100\t0.2\t0.05\n0.04\t0.25\t7.5e-08\t0.125\t200\t0.125\t0.0625\n")
     with open(os.path.join(out, "parallelStatistics.dat"), "w") as f:
         f.write("# Time\tnodesHeldMax\tparcelImbalance\n0.02\t10\t1.5\n0.04\t10\t2.5\n")
     done, text, _ = run_report(case, work)
@@ -203,10 +204,38 @@ def columns(run, work):
     check("evaporated (table)             all 3.75e-09 kg" in text, "the evaporated total by name")
     check("bareLengthFraction 0.25" in text and "hitsPerLength 200" in text,
           "binderDistribution.dat's last row by name")
+    check("this run / expected mode: bareLengthFraction 0.25 / 0.125, sigmaCoV 0.125 / 0.0625" in text,
+          "both modes' binder distribution side by side")
+    binder_panel_shows_both_modes(os.path.join(out, "binderDistribution.dat"))
     check(re.search(r"parcelImbalance\s+mean 2, max 2.5 over 2 steps", text) is not None,
           "the imbalance column: mean 2, max 2.5")
     check_values(text, rows, os.path.join(case, "log.pimpleFoam"),
                  os.path.join(out, json.load(open(os.path.join(out, "fibers.vtp.series")))["files"][-1]["name"]))
+
+
+def binder_panel_shows_both_modes(path):
+    """The report's binder distribution panel on the table written by columns(): each
+    of the run's fraction and CoV columns solid, the expected mode's dashed in its
+    colour, with the values of the table."""
+    sys.path.insert(0, os.path.join(ROOT, "tools", "dropletFiberReport"))
+    import caseOutputs
+    import reportFigure
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots()
+    reportFigure._binder_distribution(ax, types.SimpleNamespace(
+        siblings={"binderDistribution.dat": caseOutputs.Table(*caseOutputs._read_one(path))}))
+    lines = {line.get_label(): line for line in ax.get_lines()}
+    plt.close(fig)
+    for name, own, expected in (("bareLengthFraction", [0.5, 0.25], [0.2, 0.125]),
+                                ("sigmaCoV", [0.1, 0.125], [0.05, 0.0625])):
+        mine, theirs = lines.get(name + " (this run)"), lines.get(name + " (expected mode)")
+        check(mine is not None and theirs is not None, "%s: a line for each mode" % name)
+        if mine is not None and theirs is not None:
+            check(list(mine.get_ydata()) == own and list(theirs.get_ydata()) == expected,
+                  "%s: the table's values in both lines" % name)
+            check(mine.get_linestyle() == "-" and theirs.get_linestyle() == "--"
+                  and mine.get_color() == theirs.get_color(), "%s: expected mode dashed, same colour" % name)
+    check(len(lines) == 4, "no other lines (got %s)" % sorted(lines))
 
 
 def missing(run, work):

@@ -155,12 +155,25 @@ def _dispersion(ax, r, points):
     ax.set_title(title, fontsize=10)
 
 
+def expected_partner(table, name):
+    """The expected mode's column next to one of the run's own (bareFraction ->
+    expectedBareFraction), or None where the table has none."""
+    partner = "expected" + name[:1].upper() + name[1:]
+    return partner if table.has(partner) else None
+
+
 def _binder_distribution(ax, r):
+    """Bare fraction and CoV of sigma over time: the run's own (solid) and, where the
+    table has them, the expected mode's on the same fibers (dashed, the same colour)."""
     table = r.siblings["binderDistribution.dat"]
     t = table.column("Time")
     for name in table.names:
-        if name != "Time" and re.search(r"fraction|cov|coefficient", name, re.I):
-            ax.plot(t, table.column(name), label=name)
+        if name == "Time" or name.startswith("expected") or not re.search(r"fraction|cov|coefficient", name, re.I):
+            continue
+        line, = ax.plot(t, table.column(name), label=name + " (this run)")
+        partner = expected_partner(table, name)
+        if partner is not None:
+            ax.plot(t, table.column(partner), "--", color=line.get_color(), label=name + " (expected mode)")
     ax.set_xlabel("time [s]")
     ax.set_ylabel("fraction / coefficient of variation")
     ax.set_title("Binder distribution (binderDistribution.dat)")

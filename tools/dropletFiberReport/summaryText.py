@@ -131,6 +131,11 @@ class Summary:
             last = distribution.last()
             self.line("  binder distribution (binderDistribution.dat, t = %g s): " % last["Time"]
                       + ", ".join("%s %s" % (n, _g(last[n])) for n in distribution.names if n != "Time"))
+            both = [(n, "expected" + n[:1].upper() + n[1:]) for n in distribution.names]
+            both = [(n, e) for n, e in both if distribution.has(e)]
+            if both:
+                self.line("  binder distribution, this run / expected mode: "
+                          + ", ".join("%s %s / %s" % (n, _g(last[n]), _g(last[e])) for n, e in both))
         statistics = r.siblings.get("parallelStatistics.dat")
         columns = tableColumns.imbalance_columns(statistics)
         if statistics is None:

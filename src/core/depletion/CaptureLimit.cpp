@@ -127,6 +127,7 @@ void CaptureLimit::clear()
     removed_.clear();
     saturated_.clear();
     removalScale_.clear();
+    shortfall_.clear();
     takenBox_ = IndexBox{};
     forgetTakenBricks();
 }
@@ -255,6 +256,7 @@ CaptureLimitReport CaptureLimit::limit(const DensityGrid& grid)
     removed_.assign(held, 0.0);
     removedTerms_.clear();
     removalScale_.assign(held, 1.0);
+    shortfall_.assign(held, 0.0);
     saturated_.assign(held, 0);
     for (std::size_t i = 0; i < held; ++i)
     {

@@ -43,7 +43,9 @@
 // Discrete hits: where the fibers realise at node n q_n times the granted R_n, the
 // parcels must lose sum_n r_pn q_n instead: scaleRemoval(node, q_n) on the owner, then
 // removedFraction() over the blocks (the parts add up) replaces c_p; with every q_n = 1
-// (expected hits) it is c_p to round-off.
+// (expected hits) it is c_p to round-off. A parcel whose parts ask more than it holds
+// (sum_n r_pn q_n > m_p) gives m_p: its shortfall is spread over its parts
+// (addShortfall) and the node's realised mass is cut by it (unremovedShare, P33).
 #pragma once
 
 #include "collision/CollisionMass.hpp"
@@ -213,8 +215,20 @@ public:
     // to 1 anyway), whose parts add up over the blocks to the bit.
     FixedPointSum removedFractionSum(const ParcelReaches& reaches, std::size_t i, double saturated,
                                      double depth) const;
+    // Parcel i (whole A_p and X_p) gives less than its parts ask (P33): shortfall_n +=
+    // unremoved r_pn q_n / m_p at its nodes here, unremoved = m_p (1 - 1 / x_p) (kg),
+    // x_p = summedParts (removedFractionSum's value over all blocks; its clamped terms
+    // accounted for).
+    void addShortfall(const ParcelReaches& reaches, std::size_t i, double saturated, double depth,
+                      double unremoved, double summedParts);
+    // shortfall_n / (q_n R_n): the part of node n's realised mass its parcels did not give
+    // (0 where none fell short; in [0, 1]).
+    double unremovedShare(std::size_t node) const;
 
 private:
+    // The largest term r_pn q_n / m_p removedFractionSum adds (a parcel asked more at one
+    // node gives all it has whatever the others): the exact sum's range bounded.
+    static constexpr double largestRemovalTerm = 2.0;
     // r_pn / m_p at each of parcel i's nodes here, in the order reached: f(place, share).
     template <class F>
     void forEachRemovalShare(const ParcelReaches& reaches, std::size_t i, double saturated, double depth,
@@ -251,12 +265,13 @@ private:
     std::unordered_map<std::size_t, double> depth_;   // x_n > 0, owned nodes
     // depth_ in node order with grid indices (the parcels' sums; value x_n, 0 where
     // saturated), built by limit(); per place the removed mass R_n, whether saturated, and
-    // the removal's factor q_n. 40 + 17 bytes per node with x_n > 0.
+    // the removal's factor q_n. 40 + 25 bytes per node with x_n > 0.
     SparseNodeValues depthNodes_;
     std::vector<double> removed_;
     std::vector<std::pair<std::uint32_t, double>> removedTerms_; // (place, r_pn), until grant()
     std::vector<unsigned char> saturated_;
     std::vector<double> removalScale_;
+    std::vector<double> shortfall_;
     std::array<int, 3> gridNodes_{}; // the grid's nodes per direction
     IndexBox takenBox_;
     std::array<std::size_t, 3> bricks_{};     // per direction, over the grid

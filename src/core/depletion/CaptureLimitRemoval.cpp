@@ -139,12 +139,13 @@ double CaptureLimit::removedFraction(const ParcelReaches& reaches, std::size_t i
 FixedPointSum CaptureLimit::removedFractionSum(const ParcelReaches& reaches, std::size_t i, double saturated,
                                                double depth) const
 {
-    // A term above 2 makes the fraction 1 whatever the others (realisedRemoval): clamped
-    // there, the exact sum stays within its range
+    // A term above largestRemovalTerm makes the fraction 1 whatever the others
+    // (realisedRemoval): clamped there, the exact sum stays within its range, and
+    // addShortfall takes the clamp into account
     FixedPointSum fraction;
     forEachRemovalShare(reaches, i, saturated, depth,
                         [&](std::uint32_t place, double share)
-                        { fraction.add(std::min(2.0, share * removalScale_[place])); });
+                        { fraction.add(std::min(largestRemovalTerm, share * removalScale_[place])); });
     return fraction;
 }
 
@@ -170,6 +171,37 @@ void CaptureLimit::sumRemovedTerms()
         removed_[place] += term;
     }
     removedTerms_.clear();
+}
+
+void CaptureLimit::addShortfall(const ParcelReaches& reaches, std::size_t i, double saturated, double depth,
+                                double unremoved, double summedParts)
+{
+    // The parcel gives node n m_p min(t_n, T) / x' (x' the clamped sum removedFractionSum
+    // gave, T = largestRemovalTerm, t_n = r_pn q_n / m_p) and node n asked m_p t_n: the
+    // shortfall there, with m_p = u x' / (x' - 1), is u t_n below T and
+    // u (x' t_n - T) / (x' - 1) above; over the nodes it adds up to m_p (x_p - 1), the
+    // whole excess of the unclamped x_p (P33)
+    const double overExcess = summedParts / (summedParts - 1.0);
+    forEachRemovalShare(reaches, i, saturated, depth,
+                        [&](std::uint32_t place, double share)
+                        {
+                            const double t = share * removalScale_[place];
+                            shortfall_[place] += t <= largestRemovalTerm
+                                ? unremoved * t
+                                : unremoved * overExcess * (t - largestRemovalTerm / summedParts);
+                        });
+}
+
+double CaptureLimit::unremovedShare(std::size_t node) const
+{
+    const std::size_t place = depthNodes_.position(node);
+    if (place >= shortfall_.size() || shortfall_[place] == 0.0)
+    {
+        return 0.0;
+    }
+    // realised_n = q_n R_n (RealisedCapture's granted_n is R_n to round-off)
+    const double realised = removalScale_[place] * removed_[place];
+    return realised > 0.0 ? std::clamp(shortfall_[place] / realised, 0.0, 1.0) : 0.0;
 }
 
 void CaptureLimit::grant(CaptureLimitReport& report)

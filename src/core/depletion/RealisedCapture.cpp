@@ -69,8 +69,25 @@ double RealisedCapture::realisedAt(std::size_t node) const
 
 double realisedRemoval(double summedParts)
 {
-    // The whole-droplet excess of P32 stays with the fibers
+    // The whole-droplet excess of P32 is cut from the hits (P33)
     return summedParts > 1.0 - allCapturedWithin ? 1.0 : std::max(0.0, summedParts);
+}
+
+double unremovedMass(double summedParts, double mass)
+{
+    return summedParts > 1.0 ? mass * (1.0 - 1.0 / summedParts) : 0.0;
+}
+
+double unremovedOfSample(const SampleCapture& sample, const CaptureLimit& limit)
+{
+    double part = 0.0;
+    for (int c = 0; c < sample.count; ++c)
+    {
+        const auto u = static_cast<std::size_t>(c);
+        const double share = limit.unremovedShare(sample.node[u]);
+        part += share > 0.0 ? sample.mass[u] * limit.grantedRatio(sample.node[u]) * share : 0.0;
+    }
+    return part;
 }
 
 std::vector<double> realisedFractions(const CaptureLimit& limit, const ParcelReaches& reaches)
@@ -82,6 +99,43 @@ std::vector<double> realisedFractions(const CaptureLimit& limit, const ParcelRea
         fraction[p] = realisedRemoval(limit.removedFraction(reaches, p, entry.saturated, entry.depth));
     }
     return fraction;
+}
+
+RealisedRemoval realiseCapture(CaptureLimit& limit, const ParcelReaches& reaches,
+                               const std::vector<double>& parcelMasses,
+                               const std::vector<SampleCapture>& samples,
+                               const std::vector<double>& realisedMass)
+{
+    RealisedCapture realised;
+    std::vector<double> ratio(samples.size(), 0.0);
+    for (std::size_t s = 0; s < samples.size(); ++s)
+    {
+        const double granted = limit.grantedMass(samples[s]);
+        ratio[s] = granted > 0.0 ? realisedMass[s] / granted : 0.0;
+        realised.add(samples[s], ratio[s], limit);
+    }
+    realised.scaleRemoval(limit);
+    RealisedRemoval result;
+    result.fraction.assign(reaches.parcels.size(), 0.0);
+    for (std::size_t p = 0; p < reaches.parcels.size(); ++p)
+    {
+        const ParcelReach& entry = reaches.parcels[p];
+        const double parts = limit.removedFraction(reaches, p, entry.saturated, entry.depth);
+        result.fraction[p] = realisedRemoval(parts);
+        const double unremoved = unremovedMass(parts, parcelMasses[p]);
+        if (unremoved > 0.0)
+        {
+            limit.addShortfall(reaches, p, entry.saturated, entry.depth, unremoved, parts);
+            ++result.emptied;
+        }
+    }
+    result.sampleMass = realisedMass;
+    for (std::size_t s = 0; s < samples.size() && result.emptied > 0; ++s)
+    {
+        const double cut = ratio[s] * unremovedOfSample(samples[s], limit);
+        result.sampleMass[s] = std::max(0.0, realisedMass[s] - cut);
+    }
+    return result;
 }
 
 } // namespace dropletFiber

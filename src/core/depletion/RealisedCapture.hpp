@@ -12,9 +12,11 @@
 // the fibers, scaleRemoval); the parts of c'_p add up over the blocks p's deposit reached.
 //
 // Whole droplets from a smeared deposit: a node may lose less than one droplet's mass
-// this step (R_n < m_hit), so c'_p may exceed 1 (P32). Each parcel gives at most all it
-// has (realisedRemoval): the balance is exact unless a parcel is emptied, where the rest
-// stays with the fiber uncounted by the removal (removedStep < capturedStep in the table).
+// this step (R_n < m_hit), so x_p = sum_n r_pn q_n / m_p may exceed 1. Each parcel gives
+// at most all it has (realisedRemoval, P32), and the fibers get what was given (P33): the
+// parcel's shortfall m_p (x_p - 1) is spread over its parts r_pn q_n (unremovedMass,
+// CaptureLimit::addShortfall), node n's realised mass is cut by its share s_n of it, and
+// each sample's by sum_c r_s d_sc g_n s_n (unremovedOfSample): captured = removed.
 #pragma once
 
 #include "depletion/CaptureLimit.hpp"
@@ -59,8 +61,31 @@ private:
 // and 1 within 1e-12 of it (CaptureLimit::capturedFraction's rule).
 double realisedRemoval(double summedParts);
 
+// m_p (1 - 1 / x_p) where the parcel's parts x_p = summedParts ask more than it holds
+// (x_p > 1), else 0: the kg per unit of x_p it keeps back (CaptureLimit::addShortfall).
+double unremovedMass(double summedParts, double mass);
+
+// sum_c d_sc g_n s_n over the sample's nodes here (s_n: CaptureLimit::unremovedShare): times
+// the sample's realised over granted ratio, the part of its realised mass not given.
+double unremovedOfSample(const SampleCapture& sample, const CaptureLimit& limit);
+
 // Serial runs (one grid; reaches as CaptureLimit::removeFromParcels kept them, whole
 // A_p and X_p): c'_p of every parcel after scaleRemoval.
 std::vector<double> realisedFractions(const CaptureLimit& limit, const ParcelReaches& reaches);
+
+// Serial runs, the whole of P31-P33 after CaptureLimit::removeFromParcels (reaches kept):
+// samples (every sample of the step) caught realisedMass[s] (N_s m_hit, granted > 0 where
+// realised > 0); returns c'_p per parcel (parcelMasses: m_p) and the samples' masses
+// given, so that sum_s given_s = sum_p c'_p m_p to round-off.
+struct RealisedRemoval
+{
+    std::vector<double> fraction;   // c'_p
+    std::vector<double> sampleMass; // realised less what the parcels could not give, kg
+    int emptied = 0;                // parcels whose parts asked more than they held
+};
+RealisedRemoval realiseCapture(CaptureLimit& limit, const ParcelReaches& reaches,
+                               const std::vector<double>& parcelMasses,
+                               const std::vector<SampleCapture>& samples,
+                               const std::vector<double>& realisedMass);
 
 } // namespace dropletFiber

@@ -11,6 +11,7 @@ void BinderSums::add(const Fiber& fiber)
     const Eigen::VectorXd& lengths = fiber.restLengths();
     const Eigen::VectorXd& mass = fiber.capturedMassPerSegment();
     const Eigen::VectorXd& hits = fiber.state().segmentHits;
+    const Eigen::VectorXd& expected = fiber.state().segmentExpectedMass;
     for (Eigen::Index j = 0; j < fiber.segmentCount(); ++j)
     {
         values[0] += lengths(j);
@@ -19,6 +20,10 @@ void BinderSums::add(const Fiber& fiber)
         values[3] += mass(j) * mass(j) / lengths(j);
         values[4] += hits.size() > j ? hits(j) : 0.0;
         values[5] += 1.0;
+        const double e = expected.size() > j ? expected(j) : mass(j);
+        values[6] += e > 0.0 ? 0.0 : lengths(j);
+        values[7] += e;
+        values[8] += e * e / lengths(j);
     }
 }
 
@@ -30,6 +35,19 @@ BinderSums& BinderSums::operator+=(const BinderSums& other)
     }
     return *this;
 }
+
+namespace
+{
+// sqrt(sum l sigma^2 / L - mean^2) / mean (sum l (sigma - mean)^2 / L, as sum l sigma = mean L)
+double variation(double sumLengthSigma2, double length, double mean)
+{
+    if (!(mean > 0.0))
+    {
+        return 0.0;
+    }
+    return std::sqrt(std::max(0.0, sumLengthSigma2 / length - mean * mean)) / mean;
+}
+} // namespace
 
 BinderFigures binderFigures(const BinderSums& sums)
 {
@@ -43,12 +61,10 @@ BinderFigures binderFigures(const BinderSums& sums)
     f.bareFraction = sums.values[1] / length;
     f.meanSigma = sums.values[2] / length;
     f.hitsPerLength = sums.values[4] / length;
-    if (f.meanSigma > 0.0)
-    {
-        // sum l (sigma - mean)^2 / L = sum l sigma^2 / L - mean^2 (sum l sigma = mean L)
-        const double variance = std::max(0.0, sums.values[3] / length - f.meanSigma * f.meanSigma);
-        f.sigmaVariation = std::sqrt(variance) / f.meanSigma;
-    }
+    f.sigmaVariation = variation(sums.values[3], length, f.meanSigma);
+    f.expectedBareFraction = sums.values[6] / length;
+    f.expectedMeanSigma = sums.values[7] / length;
+    f.expectedSigmaVariation = variation(sums.values[8], length, f.expectedMeanSigma);
     return f;
 }
 

@@ -27,6 +27,7 @@ Fiber::Fiber(const Eigen::Matrix3Xd& points, const FiberMaterial& material, cons
     }
     state_.segmentCapturedMass = Eigen::VectorXd::Zero(n - 1);
     state_.segmentHits = Eigen::VectorXd::Zero(n - 1);
+    state_.segmentExpectedMass = Eigen::VectorXd::Zero(n - 1);
     state_.tension = Eigen::VectorXd::Zero(n - 1);
     state_.externalForce = Eigen::Matrix3Xd::Zero(3, n);
     state_.material = material;
@@ -49,6 +50,10 @@ Fiber::Fiber(const FiberState& state) : state_(state)
     if (state_.segmentHits.size() == 0 && state_.positions.cols() > 1)
     {
         state_.segmentHits = Eigen::VectorXd::Zero(state_.positions.cols() - 1);
+    }
+    if (state_.segmentExpectedMass.size() == 0)
+    {
+        state_.segmentExpectedMass = state_.segmentCapturedMass;
     }
     validate();
 }
@@ -96,6 +101,10 @@ void Fiber::validate() const
         fail("segmentHits: wrong number of segments");
     if (state_.segmentHits.size() > 0 && state_.segmentHits.minCoeff() < 0.0)
         fail("negative hit count");
+    if (state_.segmentExpectedMass.size() != n - 1)
+        fail("segmentExpectedMass: wrong number of segments");
+    if (state_.segmentExpectedMass.size() > 0 && state_.segmentExpectedMass.minCoeff() < 0.0)
+        fail("negative expected mass");
     if (!(state_.restLengths.minCoeff() > 0.0))
         fail("zero-length segment (coincident points)");
     if (!(state_.material.radius > 0.0))

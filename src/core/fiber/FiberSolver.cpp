@@ -54,6 +54,7 @@ void applyCapture(Fiber& fiber, const std::vector<SegmentSource>& sources)
         const auto jj = static_cast<Eigen::Index>(j);
         state.segmentCapturedMass(jj) += source.mass;
         state.segmentHits(jj) += source.hits;
+        state.segmentExpectedMass(jj) += source.expectedMass;
         pointMomentum.col(jj) += 0.5 * source.momentum;
         pointMomentum.col(jj + 1) += 0.5 * source.momentum;
     }

@@ -35,6 +35,11 @@ struct FiberState
     // numbers; expected: the expected counts), for the binder distribution output
     // (docs/model.md sec. 3, discrete hits). A state without them (empty) reads as zeros.
     Eigen::VectorXd segmentHits;
+    // The mass each segment would have caught in the expected mode on the same path (its
+    // samples' granted masses; = segmentCapturedMass in expected mode), so that the binder
+    // distribution of both modes can be compared. A state without it (empty) reads as
+    // segmentCapturedMass.
+    Eigen::VectorXd segmentExpectedMass;
 };
 
 } // namespace dropletFiber

@@ -16,6 +16,7 @@ struct SegmentSource
     double mass = 0.0;                                  // captured mass [kg]
     Eigen::Vector3d momentum = Eigen::Vector3d::Zero(); // of those droplets [kg m/s]
     double hits = 0.0; // droplets (collision mode discrete: a whole number; expected: the expected count)
+    double expectedMass = 0.0; // the expected mode's mass (eq. 9 after the limit) [kg], for the binder table
 };
 
 // One list per fiber, one entry per segment (an empty list means no capture).

@@ -1014,6 +1014,7 @@ Foam::functionObjects::dropletFiberCollision::dropletFiberCollision
     limitedSteps_(0),
     removalRestored_(false),
     loggedLimit_(false),
+    loggedHitsCut_(false),
     checkedDroplets_(false),
     warnedSamplesOutside_(false),
     nextFiberId_(0),

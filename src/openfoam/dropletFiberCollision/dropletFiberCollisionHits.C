@@ -10,7 +10,10 @@ Description
     fiber id, segment, sample, time index), whose mass N m_hit and momentum
     N m_hit u_droplet the segment receives instead of the expected ones.
     With depletion the parcels lose what was realised (gridBlocks::
-    realiseCapture scales each parcel's part of a node's removal by q_n).
+    realiseCapture scales each parcel's part of a node's removal by q_n);
+    a parcel asked more than it holds gives all it has and the hits at its
+    nodes are cut by the rest (P33). Each segment also sums the expected
+    mode's mass (its samples' granted masses) for the binder table.
 
 \*---------------------------------------------------------------------------*/
 
@@ -34,7 +37,7 @@ void Foam::functionObjects::dropletFiberCollision::countHits
     const bool discrete =
         collision_.mode == ::dropletFiber::CollisionMode::Discrete;
     const bool realise = discrete && depletion_;
-    std::vector<double> ratios(realise ? granted.size() : 0, 0.0);
+    std::vector<double> hitMass(granted.size(), 0.0);
     ::dropletFiber::HitKey key;
     key.seed = collision_.seed;
     key.step = std::uint64_t(time_.timeIndex());
@@ -48,11 +51,6 @@ void Foam::functionObjects::dropletFiberCollision::countHits
         {
             ::dropletFiber::SegmentSource& source = capture[f][j];
             key.segment = std::uint32_t(j);
-            if (discrete)
-            {
-                source.mass = 0;
-                source.momentum.setZero();
-            }
             for (int s = 0; s < samplesPerSegment[segment]; ++s, ++next)
             {
                 key.sample = std::uint32_t(s);
@@ -67,24 +65,93 @@ void Foam::functionObjects::dropletFiberCollision::countHits
                         collision_.mode, granted[next], mHit, key
                     );
                 source.hits += hits.count;
-                if (discrete)
-                {
-                    source.mass += hits.mass;
-                    source.momentum += hits.mass*fields[next].velocity;
-                }
-                if (realise && granted[next] > 0)
-                {
-                    ratios[next] = hits.mass/granted[next];
-                }
+                // The expected mode's mass on the same fibers (P30)
+                source.expectedMass += granted[next];
+                hitMass[next] = hits.mass;
             }
             ++segment;
         }
     }
+    std::vector<double> cut;
+    bool fellShort = false;
     if (realise)
     {
-        // The parcels lose what was realised instead of c_p (P31)
+        // The parcels lose what was realised instead of c_p (P31), and the
+        // hits are cut where parcels could not give it (P33)
+        std::vector<double> ratios(granted.size(), 0.0);
+        for (std::size_t s = 0; s < granted.size(); ++s)
+        {
+            ratios[s] = granted[s] > 0 ? hitMass[s]/granted[s] : 0;
+        }
         stepCaptured_ =
-            blocks_->realiseCapture(captureLimit_, ratios, parallelStatistics_);
+            blocks_->realiseCapture
+            (
+                captureLimit_, stepParcels_, ratios, cut, fellShort,
+                parallelStatistics_
+            );
+    }
+    if (discrete)
+    {
+        giveHits(fields, hitMass, cut, samplesPerSegment, capture);
+    }
+    if (fellShort)
+    {
+        logHitsCutOnce(cut);
+    }
+}
+
+
+void Foam::functionObjects::dropletFiberCollision::logHitsCutOnce
+(
+    const std::vector<double>& cut
+)
+{
+    // Every processor's cut (empty on those without samples) is formed
+    if (loggedHitsCut_)
+    {
+        return;
+    }
+    loggedHitsCut_ = true;
+    scalar total = 0;
+    for (const double c : cut)
+    {
+        total += c;
+    }
+    reduce(total, sumOp<scalar>());
+    Info<< type() << " " << name() << ": at time " << time_.timeName()
+        << " discrete hits asked more of some parcels than they held: they"
+        << " gave all they had and the hits at their nodes were cut by "
+        << total << " kg, so that captured = removed (docs/model.md sec. 7,"
+        << " P33; logged once)" << endl;
+}
+
+
+void Foam::functionObjects::dropletFiberCollision::giveHits
+(
+    const std::vector<::dropletFiber::DropletFieldValue>& fields,
+    const std::vector<double>& hitMass,
+    const std::vector<double>& cut,
+    const std::vector<int>& samplesPerSegment,
+    ::dropletFiber::CaptureSources& capture
+) const
+{
+    std::size_t next = 0;
+    std::size_t segment = 0;
+    for (auto& fiberCapture : capture)
+    {
+        for (::dropletFiber::SegmentSource& source : fiberCapture)
+        {
+            source.mass = 0;
+            source.momentum.setZero();
+            for (int s = 0; s < samplesPerSegment[segment]; ++s, ++next)
+            {
+                const double mass =
+                    cut.empty() ? hitMass[next] : max(0.0, hitMass[next] - cut[next]);
+                source.mass += mass;
+                source.momentum += mass*fields[next].velocity;
+            }
+            ++segment;
+        }
     }
 }
 
@@ -122,6 +189,7 @@ void Foam::functionObjects::dropletFiberCollision::writeBinderDistribution()
             "Binder along all fibers, per segment sigma = captured mass /"
             " length (docs/model.md sec. 3, discrete hits); collision mode "
           + dropletFiber::collisionModeName(collision_.mode)
+          + "; expected*: the expected mode's mass on the same fibers"
         );
         writeCommented(os, "Time");
         for
@@ -129,7 +197,8 @@ void Foam::functionObjects::dropletFiberCollision::writeBinderDistribution()
             const char* column :
             {
                 "fiberLength", "segments", "bareFraction", "meanSigma",
-                "sigmaCoV", "hitsPerLength"
+                "sigmaCoV", "hitsPerLength", "expectedBareFraction",
+                "expectedMeanSigma", "expectedSigmaCoV"
             }
         )
         {
@@ -145,6 +214,9 @@ void Foam::functionObjects::dropletFiberCollision::writeBinderDistribution()
         << tab << figures.meanSigma
         << tab << figures.sigmaVariation
         << tab << figures.hitsPerLength
+        << tab << figures.expectedBareFraction
+        << tab << figures.expectedMeanSigma
+        << tab << figures.expectedSigmaVariation
         << endl;
 }
 

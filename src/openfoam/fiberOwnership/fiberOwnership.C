@@ -82,6 +82,7 @@ scalarList packState(const ::dropletFiber::FiberState& s)
     values.append(scalar(s.turbulentVelocity.cols()));
     append(s.turbulentVelocity, values);
     append(s.segmentHits, values);
+    append(s.segmentExpectedMass, values);
     return scalarList(std::move(values));
 }
 
@@ -114,6 +115,8 @@ scalarList packState(const ::dropletFiber::FiberState& s)
     extract(values, k, s.turbulentVelocity);
     s.segmentHits.resize(n - 1);
     extract(values, k, s.segmentHits);
+    s.segmentExpectedMass.resize(n - 1);
+    extract(values, k, s.segmentExpectedMass);
     return s;
 }
 

@@ -7,23 +7,30 @@ Description
     grantCapture: each sample's realised over granted mass sent to the
     owners of its corners, which scale their nodes' removal r_pn by q_n
     (RealisedCapture), and the parcels' realised removal, sum_n r_pn q_n,
-    added up over the blocks their deposit reached.
+    added up over the blocks their deposit reached. A parcel asked more than
+    it holds gives all it has, and the hits at its nodes are cut by the rest
+    (P33): captured = removed.
 
 \*---------------------------------------------------------------------------*/
 
 #include "gridBlocks.H"
 #include "depletion/RealisedCapture.hpp"
+#include "PstreamReduceOps.H"
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 std::vector<double> Foam::dropletFiber::gridBlocks::realiseCapture
 (
     ::dropletFiber::CaptureLimit& limit,
+    const std::vector<::dropletFiber::Parcel>& parcels,
     const std::vector<double>& realisedOverGranted,
+    std::vector<double>& cut,
+    bool& fellShort,
     parallelStatistics& statistics
 )
 {
     ::dropletFiber::RealisedCapture realised;
+    List<List<scalar>> ratios;
     for (std::size_t p = 0; p < grantLocal_.size(); ++p)
     {
         realised.add(grantLocal_[p], realisedOverGranted[p], limit);
@@ -39,7 +46,7 @@ std::vector<double> Foam::dropletFiber::gridBlocks::realiseCapture
             }
         }
         // In processor order, each asker's samples in its order
-        const List<List<scalar>> ratios =
+        ratios =
             exchangeLists(statistics, parallelStatistics::traffic::gridQueries);
         forAll(ratios, proci)
         {
@@ -50,7 +57,33 @@ std::vector<double> Foam::dropletFiber::gridBlocks::realiseCapture
         }
     }
     realised.scaleRemoval(limit);
-    return realisedFractions(limit, statistics);
+    // x_p, the parcels' summed parts (their clamped terms: addShortfall)
+    const std::vector<double> summedParts = realisedFractions(limit, statistics);
+    std::vector<double> fraction(summedParts);
+    std::vector<double> unremoved(fraction.size(), 0.0);
+    fellShort = false;
+    for (std::size_t p = 0; p < fraction.size(); ++p)
+    {
+        unremoved[p] =
+            ::dropletFiber::unremovedMass
+            (
+                fraction[p], ::dropletFiber::parcelMass(parcels[p])
+            );
+        fellShort = fellShort || unremoved[p] > 0;
+        fraction[p] = ::dropletFiber::realisedRemoval(fraction[p]);
+    }
+    cut.clear();
+    reduce(fellShort, orOp<bool>());
+    if (fellShort)
+    {
+        cut =
+            cutSamples
+            (
+                limit, unremoved, summedParts, realisedOverGranted, ratios,
+                statistics
+            );
+    }
+    return fraction;
 }
 
 
@@ -110,11 +143,97 @@ std::vector<double> Foam::dropletFiber::gridBlocks::realisedFractions
     {
         fraction[p] = sums[p].value();
     }
-    for (double& f : fraction)
-    {
-        f = ::dropletFiber::realisedRemoval(f);
-    }
     return fraction;
+}
+
+
+std::vector<double> Foam::dropletFiber::gridBlocks::cutSamples
+(
+    ::dropletFiber::CaptureLimit& limit,
+    const std::vector<double>& unremoved,
+    const std::vector<double>& summedParts,
+    const std::vector<double>& realisedOverGranted,
+    const List<List<scalar>>& remoteRatios,
+    parallelStatistics& statistics
+)
+{
+    // The parcels' shortfall at this block's nodes: own parcels, then the
+    // copies (in processor order, as deposited)
+    const std::size_t own = reaches_.parcels.size() - copies_.size();
+    std::vector<double> shortfall(unremoved);
+    std::vector<double> parts(summedParts);
+    shortfall.resize(reaches_.parcels.size(), 0.0);
+    parts.resize(reaches_.parcels.size(), 0.0);
+    if (Pstream::parRun())
+    {
+        forAll(outgoing_, proci)
+        {
+            outgoing_[proci].clear();
+            for (const std::size_t p : sentCopies_[proci])
+            {
+                outgoing_[proci].append(unremoved[p]);
+                outgoing_[proci].append(summedParts[p]);
+            }
+        }
+        const List<List<scalar>> received =
+            exchangeLists(statistics, parallelStatistics::traffic::parcels);
+        std::size_t next = own;
+        forAll(received, proci)
+        {
+            for (std::size_t i = 0; i < copiesFrom_[proci]; ++i)
+            {
+                shortfall[next] = received[proci][label(2*i)];
+                parts[next++] = received[proci][label(2*i + 1)];
+            }
+        }
+    }
+    for (std::size_t i = 0; i < shortfall.size(); ++i)
+    {
+        const ::dropletFiber::ParcelReach& entry = reaches_.parcels[i];
+        if (shortfall[i] > 0)
+        {
+            limit.addShortfall
+            (
+                reaches_, i, entry.saturated, entry.depth, shortfall[i],
+                parts[i]
+            );
+        }
+    }
+    // Each sample's cut: this block's corners, then the owners' answers
+    std::vector<double> cut(grantLocal_.size(), 0.0);
+    for (std::size_t p = 0; p < grantLocal_.size(); ++p)
+    {
+        cut[p] = realisedOverGranted[p]
+           *::dropletFiber::unremovedOfSample(grantLocal_[p], limit);
+    }
+    if (Pstream::parRun())
+    {
+        forAll(outgoing_, proci)
+        {
+            outgoing_[proci].clear();
+            for (std::size_t i = 0; i < grantRemote_[proci].size(); ++i)
+            {
+                outgoing_[proci].append
+                (
+                    remoteRatios[proci][label(i)]
+                   *::dropletFiber::unremovedOfSample
+                    (
+                        grantRemote_[proci][i], limit
+                    )
+                );
+            }
+        }
+        const List<List<scalar>> answers =
+            exchangeLists(statistics, parallelStatistics::traffic::gridQueries);
+        forAll(answers, proci)
+        {
+            for (std::size_t i = 0; i < grantAskedFor_[proci].size(); ++i)
+            {
+                cut[grantAskedFor_[proci][i]] += answers[proci][label(i)];
+            }
+        }
+    }
+    return cut;
 }
 
 // ************************************************************************* //

@@ -152,6 +152,15 @@ Foam::dictionary Foam::dropletFiber::fiberStateDict
         "segmentHits",
         toScalarList(s.segmentHits.data(), s.segmentHits.size())
     );
+    // The expected mode's mass per segment (the binder table of both modes)
+    d.add
+    (
+        "segmentExpectedMass",
+        toScalarList
+        (
+            s.segmentExpectedMass.data(), s.segmentExpectedMass.size()
+        )
+    );
     // The turbulent fluctuation (docs/model.md sec. 8), when the fiber has
     // one: a restart continues its realisation
     if (s.turbulentVelocity.cols())
@@ -210,6 +219,17 @@ Foam::dictionary Foam::dropletFiber::fiberStateDict
             d, "segmentHits", segments, [](scalar v) { return v >= 0; }, " >= 0"
         );
         s.segmentHits = Eigen::Map<const Eigen::VectorXd>(hits.cdata(), segments);
+    }
+    // Optional: states written before it was kept read as the captured mass
+    if (d.found("segmentExpectedMass"))
+    {
+        const scalarList expected = checkedList
+        (
+            d, "segmentExpectedMass", segments,
+            [](scalar v) { return v >= 0; }, " >= 0"
+        );
+        s.segmentExpectedMass =
+            Eigen::Map<const Eigen::VectorXd>(expected.cdata(), segments);
     }
     // Optional: states written without turbulent air have none
     if (d.found("turbulentVelocity"))

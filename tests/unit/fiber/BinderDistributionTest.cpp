@@ -1,6 +1,7 @@
 // BinderDistribution: the binder table's figures for two fibers set by hand, against the
 // same figures worked out on paper (docs/model.md sec. 3, discrete hits).
 #include "fiber/BinderDistribution.hpp"
+#include "fiber/FiberSolver.hpp"
 
 #include <gtest/gtest.h>
 
@@ -51,4 +52,49 @@ TEST(BinderDistribution, FiguresOfTwoFibersByHand)
     EXPECT_NEAR(f.sigmaVariation, std::sqrt(0.4375) / 1.25, 1e-9);
     EXPECT_NEAR(f.hitsPerLength, 1875.0, 1e-9);
     EXPECT_EQ(binderFigures(BinderSums{}).length, 0.0);
+}
+
+// The expected mode's columns on the same fibers: A's expected masses 0, 1, 3 ug (sigma 0,
+// 1, 1.5 mg/m), B's 6 ug (sigma 1.5 mg/m). Bare 1 mm of 8: 0.125; mean 10 ug / 8 mm = 1.25
+// mg/m; sum l sigma^2 = 1 x 1 + 2 x 2.25 + 4 x 2.25 = 14.5, over L 1.8125, variance
+// 1.8125 - 1.5625 = 0.25, CoV 0.5 / 1.25 = 0.4. A state without the expected masses reads
+// them as its captured masses (the expected mode's history).
+TEST(BinderDistribution, ExpectedModeFiguresByHand)
+{
+    Fiber a = straightFiber({1e-3, 1e-3, 2e-3});
+    a.mutableState().segmentCapturedMass << 0.0, 2e-9, 4e-9;
+    a.mutableState().segmentExpectedMass << 0.0, 1e-9, 3e-9;
+    Fiber b = straightFiber({4e-3});
+    b.mutableState().segmentExpectedMass << 6e-9;
+    BinderSums sums;
+    sums.add(a);
+    sums.add(b);
+    const BinderFigures f = binderFigures(sums);
+    EXPECT_NEAR(f.expectedBareFraction, 0.125, 1e-12);
+    EXPECT_NEAR(f.expectedMeanSigma, 1.25e-6, 1e-18);
+    EXPECT_NEAR(f.expectedSigmaVariation, 0.4, 1e-9);
+    // B caught nothing itself: 5 of 8 mm bare in the captured columns
+    EXPECT_NEAR(f.bareFraction, 0.625, 1e-12);
+
+    FiberState old = a.state();
+    old.segmentExpectedMass.resize(0);
+    const Fiber restarted(old);
+    EXPECT_EQ(restarted.state().segmentExpectedMass, a.state().segmentCapturedMass);
+}
+
+// A step's capture adds each segment's expected mass next to its caught mass and hits.
+TEST(BinderDistribution, CaptureAddsTheExpectedMass)
+{
+    Fiber a = straightFiber({1e-3, 2e-3});
+    std::vector<SegmentSource> sources(2);
+    sources[0].mass = 2e-9; // two droplets where 0.7 were expected
+    sources[0].hits = 2.0;
+    sources[0].expectedMass = 0.7e-9;
+    sources[1].expectedMass = 0.4e-9; // none caught
+    applyCapture(a, sources);
+    applyCapture(a, sources);
+    EXPECT_DOUBLE_EQ(a.state().segmentExpectedMass(0), 1.4e-9);
+    EXPECT_DOUBLE_EQ(a.state().segmentExpectedMass(1), 0.8e-9);
+    EXPECT_DOUBLE_EQ(a.state().segmentCapturedMass(0), 4e-9);
+    EXPECT_EQ(a.state().segmentCapturedMass(1), 0.0);
 }
