@@ -25,8 +25,9 @@
       --holders: the function object's fibers.holders (default: its own,
         cells).
       --blocks: the function object's grid.blocks (default: its own,
-        subdomains); balanced re-partitions every 5 steps (grid.balanceSteps
-        5: after step 5, before the steps measured).
+        subdomains); balanced re-partitions every --balance-steps steps
+        (grid.balanceSteps, default 5: after step 5, before the steps
+        measured).
       Prints the grid's node count.
 
   scaleOutCase.py estimate [--nodes 250 250 150] [--window 10] [--fibers 5000]
@@ -187,7 +188,7 @@ def make_case(args):
     if args.blocks:
         edit(os.path.join(args.dir, "system", "controlDict"),
              (r"(\n            nodes           [^\n]*\n)",
-              f"\\1            blocks          {args.blocks};\n            balanceSteps    5;\n"))
+              f"\\1            blocks          {args.blocks};\n            balanceSteps    {args.balance_steps};\n"))
     set_decomposition(args.dir, args.ranks)
     print(nodes[0] * nodes[1] * nodes[2])
     return 0
@@ -346,6 +347,7 @@ def main():
     c.add_argument("--localised", action="store_true")
     c.add_argument("--holders", choices=("cells", "roundRobin"))
     c.add_argument("--blocks", choices=("subdomains", "balanced"))
+    c.add_argument("--balance-steps", type=int, default=5)
     r = sub.add_parser("report")
     r.add_argument("dir")
     r.add_argument("--ranks", type=int, required=True)

@@ -174,7 +174,7 @@ Foam::dropletFiber::gridSettings Foam::dropletFiber::readGridSettings
         (
             gridDict, "blocks", "subdomains", {"subdomains", "balanced"}
         ) == "balanced";
-    s.balanceSteps = getLabelInRange(gridDict, "balanceSteps", 10, 1, labelMax);
+    s.balanceSteps = getLabelInRange(gridDict, "balanceSteps", 100, 1, labelMax);
     return s;
 }
 
