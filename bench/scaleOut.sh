@@ -26,6 +26,7 @@
 #
 # Usage: bench/scaleOut.sh [-nodes "1e5 1e6 4e6"] [-ranks "1 2 4"] [-steps 30]
 #                          [-samplesPerSegment N] [-localised] [-holders RULE]
+#                          [-blocks subdomains|balanced] [-balanceSteps N]
 #                          [-tiny] [-keep DIR]
 #   -nodes    grid sizes (about; the spacing is chosen to give them)
 #   -ranks    processor counts
@@ -36,6 +37,9 @@
 #   -localised the spray and the fibers in the top ~3 cm of the channel only (as
 #             nozzles and spinner streams in a hood; scaleOutCase.py case --localised)
 #   -holders RULE  the fibers' holders (fibers.holders: cells, roundRobin)
+#   -blocks KIND   the grid blocks (grid.blocks: subdomains, balanced; balanced
+#             re-partitions after every 5th step: the steps measured follow)
+#   -balanceSteps N  with -blocks balanced: re-partition every N steps (5)
 #   -tiny     a check of the script: grid 1e4 nodes, 1 and 2 processors, 8 steps
 #   -keep DIR scratch directory, kept (default: a new mktemp -d directory,
 #             removed at the end)
@@ -54,6 +58,8 @@ steps=30
 samples=0
 localised=""
 holders=""
+blocks=""
+balanceSteps=5
 scratch=""
 while [ $# -gt 0 ]; do
     case "$1" in
@@ -63,6 +69,8 @@ while [ $# -gt 0 ]; do
         -samplesPerSegment) samples="$2"; shift ;;
         -localised) localised="--localised" ;;
         -holders) holders="$2"; shift ;;
+        -blocks) blocks="$2"; shift ;;
+        -balanceSteps) balanceSteps="$2"; shift ;;
         -tiny) nodesList="1e4"; ranksList="1 2"; steps=8 ;;
         -keep) scratch="$2"; shift ;;
         -h | -help)
@@ -89,7 +97,7 @@ if [ -z "$scratch" ]; then
 fi
 mkdir -p "$scratch"
 cores="$(nproc)"
-echo "# scratch $scratch;${localised:+ localised spray and fibers;}${holders:+ fibers.holders $holders;} $cores cores; load average $(cut -d' ' -f1-3 /proc/loadavg); $steps steps per run"
+echo "# scratch $scratch;${localised:+ localised spray and fibers;}${holders:+ fibers.holders $holders;}${blocks:+ grid.blocks $blocks;} $cores cores; load average $(cut -d' ' -f1-3 /proc/loadavg); $steps steps per run"
 
 # One run: case in $1, $2 processors; peak RSS of each rank into rss.<rank>
 runCase() {
@@ -119,7 +127,7 @@ for nodes in $nodesList; do
         rm -rf "$dir"
         cp -r "$root/tutorials/channelSpray" "$dir"
         rm -rf "$dir"/processor* "$dir"/postProcessing "$dir"/log.* "$dir/system/controlDict.short"
-        total="$(python3 "$here/scaleOutCase.py" case "$dir" --nodes "$nodes" --steps "$steps" --ranks "$ranks" --samples-per-segment "$samples" ${localised:+"$localised"} ${holders:+--holders "$holders"})"
+        total="$(python3 "$here/scaleOutCase.py" case "$dir" --nodes "$nodes" --steps "$steps" --ranks "$ranks" --samples-per-segment "$samples" ${localised:+"$localised"} ${holders:+--holders "$holders"} ${blocks:+--blocks "$blocks" --balance-steps "$balanceSteps"})"
         start=$(date +%s)
         if ! runCase "$dir" "$ranks"; then
             echo "scaleOut: the run with $ranks processors and $total nodes failed: see $dir/log.*" >&2

@@ -2,7 +2,7 @@
 """The 3D scale-out case of bench/scaleOut.sh, and the figures of its runs.
 
   scaleOutCase.py case DIR --nodes N --steps S --ranks P [--localised]
-                     [--holders cells|roundRobin]
+                     [--holders cells|roundRobin] [--blocks subdomains|balanced]
       DIR holds a copy of tutorials/channelSpray; it is made 3D in place:
       - mesh 25 x 75 x 10 cells over 5 x 15 x DEPTH cm, the front and back
         faces walls (no empty patch), the spray nozzles and fiber injectors
@@ -24,6 +24,10 @@
         processors.
       --holders: the function object's fibers.holders (default: its own,
         cells).
+      --blocks: the function object's grid.blocks (default: its own,
+        subdomains); balanced re-partitions every --balance-steps steps
+        (grid.balanceSteps, default 5: after step 5, before the steps
+        measured).
       Prints the grid's node count.
 
   scaleOutCase.py estimate [--nodes 250 250 150] [--window 10] [--fibers 5000]
@@ -181,6 +185,10 @@ def make_case(args):
     if args.holders:
         edit(os.path.join(args.dir, "system", "controlDict"),
              (r"(\n            drag            [^\n]*\n)", f"\\1            holders         {args.holders};\n"))
+    if args.blocks:
+        edit(os.path.join(args.dir, "system", "controlDict"),
+             (r"(\n            nodes           [^\n]*\n)",
+              f"\\1            blocks          {args.blocks};\n            balanceSteps    {args.balance_steps};\n"))
     set_decomposition(args.dir, args.ranks)
     print(nodes[0] * nodes[1] * nodes[2])
     return 0
@@ -338,6 +346,8 @@ def main():
     c.add_argument("--samples-per-segment", type=int, default=0)
     c.add_argument("--localised", action="store_true")
     c.add_argument("--holders", choices=("cells", "roundRobin"))
+    c.add_argument("--blocks", choices=("subdomains", "balanced"))
+    c.add_argument("--balance-steps", type=int, default=5)
     r = sub.add_parser("report")
     r.add_argument("dir")
     r.add_argument("--ranks", type=int, required=True)

@@ -50,6 +50,8 @@ expectError collision "{ radiusAverage median; }" "Entry 'radiusAverage' is 'med
 expectError fibers/maxSubSteps 0 "Entry 'maxSubSteps' is 0"
 expectError fibers/drag stokes "Entry 'drag' is 'stokes': allowed are"
 expectError fibers/holders cell "Entry 'holders' is 'cell': allowed are"
+expectError grid/blocks even "Entry 'blocks' is 'even': allowed are"
+expectError grid/balanceSteps 0 "Entry 'balanceSteps' is 0"
 expectError collision "{ sampling everywhere; }" "Entry 'sampling' is 'everywhere'"
 expectError collision "{ depletion maybe; }" "Entry 'depletion' is 'maybe': allowed are true or false"
 expectError collision "{ mode poisson; }" "Entry 'mode' is 'poisson': allowed are 2\\(expected discrete\\)"

@@ -334,6 +334,35 @@ WindowState AveragingWindow::save() const
     return state;
 }
 
+WindowState AveragingWindow::savePart(const IndexBox& part) const
+{
+    if (part.empty() || part.intersected(region_) != part)
+    {
+        throw std::invalid_argument("averaging window: part " + boxText(part) + " outside the region "
+                                    + boxText(region_));
+    }
+    WindowState state;
+    state.counters = {blockFormatVersion, gridNodes_[0], gridNodes_[1], gridNodes_[2],
+                      nQuantities_,       length_,       filled_,       committed_,
+                      part.lo[0],         part.lo[1],    part.lo[2],    part.hi[0],
+                      part.hi[1],         part.hi[2]};
+    for (int age = 0; age < filled_; ++age)
+    {
+        const IndexBox kept = toGrid(slotBoxes_[slotIndex(age)]).intersected(part);
+        const IndexBox g = kept.empty() ? IndexBox{} : kept;
+        state.counters.insert(state.counters.end(), {g.lo[0], g.lo[1], g.lo[2], g.hi[0], g.hi[1], g.hi[2]});
+        const std::vector<double>& slot = slots_[slotIndex(age)];
+        forEachBoxRow(toRegion(g),
+                      [&](std::size_t offset, std::size_t count)
+                      {
+                          state.values.insert(state.values.end(),
+                                              slot.begin() + static_cast<std::ptrdiff_t>(offset),
+                                              slot.begin() + static_cast<std::ptrdiff_t>(offset + count));
+                      });
+    }
+    return state;
+}
+
 std::size_t readWindowStateHeader(const std::vector<std::int64_t>& c, std::int64_t wholeVersion,
                                   std::int64_t blockVersion, const std::array<int, 3>& gridNodes,
                                   int nQuantities, const IndexBox& region, const std::string& context,

@@ -120,6 +120,11 @@ public:
     IndexBox box() const;
 
     WindowState save() const;
+    // The part of save() over `part` (grid indices, inside region()): format 2 with `part`
+    // as the block, each slot's box cut to it. Moving nodes to another window (grid blocks
+    // re-partitioned): the parts of the old blocks joined (joinedWindowState) restore the
+    // new block's window with the same slots and total, bit for bit.
+    WindowState savePart(const IndexBox& part) const;
     // The number of values save() gives (the filled slots' boxes).
     std::size_t savedValueCount() const;
     // Throws std::invalid_argument when the state does not fit this grid. A state saved

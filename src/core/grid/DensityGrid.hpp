@@ -210,6 +210,9 @@ public:
     WindowState saveWindow(WindowStateFormat format = WindowStateFormat::Smaller) const;
     // The window's node values (formats 1 and 2), whatever the log holds (inspection).
     WindowState saveWindowValues() const { return window_.save(); }
+    // The node values of a part of the owned box (AveragingWindow::savePart): what moves
+    // to another block when the blocks are re-partitioned.
+    WindowState saveWindowPart(const IndexBox& part) const { return window_.savePart(part); }
     // Either format. A log is replayed: its parcels deposited again as copies, step by
     // step, oldest first, each step committed (the newest min(saved, W) steps): the same
     // slots and total bit for bit, given the same kernel settings, grid and code. A state

@@ -21,11 +21,22 @@
 // node counts in proportion to their processor counts (deterministic; correct, only the
 // blocks then match the processors' parcels less well: more traffic).
 //
+// weightedBisection(): blocks sized by deposit work (docs/scaleOut.md, balanced blocks).
+// The same recursion on a lattice of tiles (TileWork), the cut along the direction of most
+// tiles at the tile layer whose work below is nearest to the lower part's share (work in
+// proportion to the processor counts of the two parts), each part left at least one tile
+// per processor. Bound: a cut misses its share by at most half the work of one tile layer
+// of the box it cuts, so with L the largest work of a tile layer of the whole grid (any
+// direction) every part's work lies within ceil(log2 P) L / 2 of total / P (while the
+// tiles per part do not constrain the cut). Deterministic: the same work gives the same
+// boxes on every processor.
+//
 // holdersOf(): the processors whose owned nodes a box of nodes meets (the blocks a
 // parcel's deposit reaches, DensityGrid::depositBox).
 #pragma once
 
 #include "grid/GridSpec.hpp"
+#include "grid/TileWork.hpp"
 
 #include <array>
 #include <cstddef>
@@ -48,6 +59,9 @@ public:
                                              const std::vector<SubdomainBounds>& bounds);
     // Recursive bisection of the grid into `parts` boxes (parts >= 1).
     static GridPartition bisection(const GridSpec& spec, int parts);
+    // Recursive bisection weighted by the work per tile (above); parts >= 1 and at most
+    // the number of tiles (std::invalid_argument otherwise).
+    static GridPartition weightedBisection(const TileWork& work, int parts);
 
     // True when the boxes are pairwise disjoint, inside the grid, and hold every node.
     bool tiles(const GridSpec& spec) const;

@@ -1197,6 +1197,7 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
     //    first point
     passFibersOn();
     step.fiberTime += scalar(fiberStart.elapsed());
+    rebalanceBlocks(dt);
 
     // 7. Report; at write times the restart state and the mass balances
     reportAndWriteState(step);

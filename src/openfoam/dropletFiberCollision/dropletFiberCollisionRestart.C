@@ -21,6 +21,9 @@ Description
                            node values (formats 1, 2; counters in the entry
                            gridWindowValuesCounters), for inspection and the
                            case tests comparing windows; not read back
+      (in parallel the entries gridBlock, this processor's block of the
+      grid, and gridPartition, every processor's: the blocks are taken
+      from it on restart)
       \<name\>.marker      written by OpenFOAM with the fields, when the state
                            follows (restartStateMarker)
 
@@ -285,6 +288,9 @@ Foam::dictionary Foam::functionObjects::dropletFiberCollision::stateDict
             "gridBlock",
             labelList({b.lo[0], b.lo[1], b.lo[2], b.hi[0], b.hi[1], b.hi[2]})
         );
+        // Every processor's block (balanced blocks move): a restart on as
+        // many processors takes them
+        state.add("gridPartition", blocks_->boxesList());
     }
 
     IOstream::defaultPrecision(oldPrecision);
@@ -897,6 +903,17 @@ void Foam::functionObjects::dropletFiberCollision::restoreWindow
     const fileName& path
 )
 {
+    // The blocks the state's windows were written for (balanced blocks
+    // differ from the subdomains'); states without them: the subdomains'
+    if
+    (
+        state.found("gridPartition")
+     && blocks_->adopt(state.get<labelList>("gridPartition"))
+     && grid_->ownedBox() != blocks_->block().owned
+    )
+    {
+        rebuildGrid(nullptr);
+    }
     checkWindowBlock(state, path);
     ::dropletFiber::WindowState window;
     window.counters = windowCounters(state);

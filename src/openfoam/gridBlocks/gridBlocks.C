@@ -87,6 +87,7 @@ Foam::dropletFiber::gridBlocks::gridBlocks
 :
     spec_(spec),
     bisected_(false),
+    balanced_(false),
     buffers_(Pstream::commsTypes::nonBlocking),
     outgoing_(Pstream::nProcs())
 {
@@ -204,7 +205,10 @@ void Foam::dropletFiber::gridBlocks::report(Ostream& os) const
     }
     os  << "    grid blocks: " << Pstream::nProcs() << " processors, "
         << (
-               bisected_
+               balanced_
+             ? "by deposit work (recursive bisection weighted by the deposit's"
+               " work per tile, the restart state's partition)"
+             : bisected_
              ? "by recursive bisection of the grid (the subdomains' bounding"
                " boxes do not tile it: a manual decomposition, or a grid"
                " larger than the mesh; correct, with more traffic)"

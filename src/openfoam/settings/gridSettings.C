@@ -27,7 +27,8 @@ const wordList gridKeys
 {
     "lower", "upper", "nodes", "spacing", "averagingSteps",
     "beta", "rMaxCap", "cloudInCellBelow", "negligibleWeight", "vectorised",
-    "depositMethod", "dimension", "radiusAverage", "maxMemory"
+    "depositMethod", "dimension", "radiusAverage", "maxMemory", "blocks",
+    "balanceSteps"
 };
 
 
@@ -166,6 +167,14 @@ Foam::dropletFiber::gridSettings Foam::dropletFiber::readGridSettings
     // by checkGridUnchanged (the memory check is made once, at the start)
     // maxMemory [MB]: the user's limit on the memory per processor
     s.maxMemory = bytesPerMB*getNonNegative(gridDict, "maxMemory", 0);
+    // blocks: who owns which nodes; any partition gives the same fields (to
+    // round-off), and a restart takes the state's (gridBlocks.H)
+    s.balancedBlocks =
+        getChoice
+        (
+            gridDict, "blocks", "subdomains", {"subdomains", "balanced"}
+        ) == "balanced";
+    s.balanceSteps = getLabelInRange(gridDict, "balanceSteps", 100, 1, labelMax);
     return s;
 }
 
