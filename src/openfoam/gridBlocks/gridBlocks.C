@@ -230,6 +230,7 @@ void Foam::dropletFiber::gridBlocks::depositCopies
     const bool keyOrder
 )
 {
+    cornerAnswers_ = keyOrder;
     using stage = parallelStatistics::stage;
     copies_.clear();
     copiesFrom_.assign(outgoing_.size(), 0);
@@ -461,6 +462,13 @@ void Foam::dropletFiber::gridBlocks::answerCornerSums
             const ::dropletFiber::CornerWeights corners =
                 ::dropletFiber::multilinearWeights(spec_, point);
             ownedCornerTerms(grid, corners, terms);
+            if (!cornerAnswers_)
+            {
+                std::array<double, ::dropletFiber::nQuantities> sums{};
+                addCornerTerms(corners.count, terms, sums);
+                out.append(UList<scalar>(sums.data(), nQ));
+                continue;
+            }
             for (label t = 0; t < corners.count*nQ; ++t)
             {
                 out.append(terms[t]);
@@ -535,7 +543,9 @@ void Foam::dropletFiber::gridBlocks::addOtherOwnersSums
         label at = 0;
         for (const std::size_t p : askedFor[proci])
         {
-            for (label t = 0; t < cornersOf[p].count*nQ; ++t)
+            // A summed answer (cornerAnswers_ off) goes into corner 0's slot
+            const label n = cornerAnswers_ ? cornersOf[p].count*nQ : nQ;
+            for (label t = 0; t < n; ++t)
             {
                 terms[p][t] += answers[proci][at++];
             }
@@ -750,6 +760,16 @@ std::vector<double> Foam::dropletFiber::gridBlocks::grantedMasses
                 const auto corners = ::dropletFiber::multilinearWeights(spec_, point);
                 std::array<double, 8> answer{};
                 grantedSlots(limit, grantRemote_[proci][i], corners, answer);
+                if (!cornerAnswers_)
+                {
+                    double sum = 0;
+                    for (int c = 0; c < corners.count; ++c)
+                    {
+                        sum += answer[c];
+                    }
+                    outgoing_[proci].append(sum);
+                    continue;
+                }
                 for (int c = 0; c < corners.count; ++c)
                 {
                     outgoing_[proci].append(answer[c]);
@@ -763,7 +783,8 @@ std::vector<double> Foam::dropletFiber::gridBlocks::grantedMasses
             label at = 0;
             for (const std::size_t p : grantAskedFor_[proci])
             {
-                for (int c = 0; c < count[p]; ++c)
+                const int n = cornerAnswers_ ? count[p] : 1;
+                for (int c = 0; c < n; ++c)
                 {
                     slots[p][c] += answers[proci][at++];
                 }
