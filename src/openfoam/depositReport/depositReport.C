@@ -47,6 +47,7 @@ Foam::dropletFiber::depositReport::depositReport
     activeDimensions_(spec.activeDimensions()),
     spacing_(largestSpacing(spec)),
     since_(),
+    untilWarned_(),
     lastStep_(),
     timing_(false),
     warned_(false)
@@ -65,41 +66,39 @@ void Foam::dropletFiber::depositReport::record
     // The wall time of a step: from this call to the next (the same point of
     // every step); the first step is not timed
     const auto now = std::chrono::steady_clock::now();
-    if (timing_)
+    const scalar stepTime =
+        timing_ ? std::chrono::duration<double>(now - lastStep_).count() : 0;
+    add(since_, deposit, stepTime, timing_ ? depositTime : 0);
+    if (!warned_)
     {
-        since_.stepTime += std::chrono::duration<double>(now - lastStep_).count();
-        since_.depositTime += depositTime;
-        ++since_.steps;
+        add(untilWarned_, deposit, stepTime, timing_ ? depositTime : 0);
     }
     lastStep_ = now;
     timing_ = true;
 
-    since_.widestWidth = max(since_.widestWidth, deposit.widestKernelWidth);
-    since_.widestReach = max(since_.widestReach, deposit.widestKernelReach);
-    since_.nodesVisited += scalar(deposit.nodesVisited);
-    since_.parcelsOnGrid +=
-        scalar(deposit.parcels - deposit.parcelsEmpty - deposit.parcelsOutside);
-
     // One scalar reduction per step decides for all processors
-    const scalar share =
-        since_.stepTime > 0 ? since_.depositTime/since_.stepTime : 0;
+    if (warned_)
+    {
+        return;
+    }
+    const interval& run = untilWarned_;
+    const scalar share = run.stepTime > 0 ? run.depositTime/run.stepTime : 0;
     const bool large =
         returnReduce(share, maxOp<scalar>()) > largeShare
-     && since_.steps >= minSteps
-     && since_.stepTime >= minWallTime;
-    if (warned_ || !large)
+     && run.steps >= minSteps
+     && run.stepTime >= minWallTime;
+    if (!large)
     {
         return;
     }
     warn(timeName);
     warned_ = true;
-    since_ = interval();
 }
 
 
 void Foam::dropletFiber::depositReport::warn(const word& timeName) const
 {
-    const interval all = overProcessors();
+    const interval all = overProcessors(untilWarned_);
     OStringStream text;
     text.precision(3);
     text<< owner_ << ": the deposit of the parcels takes "
@@ -116,7 +115,7 @@ void Foam::dropletFiber::depositReport::warn(const word& timeName) const
 
 void Foam::dropletFiber::depositReport::reportAtWrite(const word& timeName)
 {
-    const interval all = overProcessors();
+    const interval all = overProcessors(since_);
     if (all.steps > 0)
     {
         const scalar share = all.depositTime/all.stepTime;
@@ -136,23 +135,46 @@ void Foam::dropletFiber::depositReport::reportAtWrite(const word& timeName)
 }
 
 
+void Foam::dropletFiber::depositReport::add
+(
+    interval& to,
+    const ::dropletFiber::StepStatistics& deposit,
+    const scalar stepTime,
+    const scalar depositTime
+)
+{
+    // The first step is not timed (stepTime 0): its counts are kept
+    if (stepTime > 0)
+    {
+        to.stepTime += stepTime;
+        to.depositTime += depositTime;
+        ++to.steps;
+    }
+    to.widestWidth = max(to.widestWidth, deposit.widestKernelWidth);
+    to.widestReach = max(to.widestReach, deposit.widestKernelReach);
+    to.nodesVisited += scalar(deposit.nodesVisited);
+    to.parcelsOnGrid +=
+        scalar(deposit.parcels - deposit.parcelsEmpty - deposit.parcelsOutside);
+}
+
+
 Foam::dropletFiber::depositReport::interval
-Foam::dropletFiber::depositReport::overProcessors() const
+Foam::dropletFiber::depositReport::overProcessors(const interval& mine)
 {
     List<scalar> sums(2);
-    sums[0] = since_.nodesVisited;
-    sums[1] = since_.parcelsOnGrid;
+    sums[0] = mine.nodesVisited;
+    sums[1] = mine.parcelsOnGrid;
     Pstream::listCombineGather(sums, plusEqOp<scalar>());
     Pstream::listCombineScatter(sums);
     List<scalar> maxima(4);
-    maxima[0] = since_.widestWidth;
-    maxima[1] = since_.widestReach;
-    maxima[2] = since_.stepTime > 0 ? since_.depositTime/since_.stepTime : 0;
-    maxima[3] = since_.stepTime;
+    maxima[0] = mine.widestWidth;
+    maxima[1] = mine.widestReach;
+    maxima[2] = mine.stepTime > 0 ? mine.depositTime/mine.stepTime : 0;
+    maxima[3] = mine.stepTime;
     Pstream::listCombineGather(maxima, maxEqOp<scalar>());
     Pstream::listCombineScatter(maxima);
 
-    interval all = since_;
+    interval all = mine;
     all.nodesVisited = sums[0];
     all.parcelsOnGrid = sums[1];
     all.widestWidth = maxima[0];
