@@ -147,18 +147,18 @@ std::vector<double> Foam::dropletFiber::gridBlocks::realisedFractions
 }
 
 
-std::vector<double> Foam::dropletFiber::gridBlocks::cutSamples
+void Foam::dropletFiber::gridBlocks::addShortfalls
 (
     ::dropletFiber::CaptureLimit& limit,
     const std::vector<double>& unremoved,
     const std::vector<double>& summedParts,
-    const std::vector<double>& realisedOverGranted,
-    const List<List<scalar>>& remoteRatios,
     parallelStatistics& statistics
 )
 {
     // The parcels' shortfall at this block's nodes: own parcels, then the
-    // copies (in processor order, as deposited)
+    // copies (in processor order, as deposited). A copy's x_p comes from its
+    // parcel's processor; its unremoved mass follows from x_p and the copy's
+    // own mass, the same bits as the parcel's
     const std::size_t own = reaches_.parcels.size() - copies_.size();
     std::vector<double> shortfall(unremoved);
     std::vector<double> parts(summedParts);
@@ -171,7 +171,6 @@ std::vector<double> Foam::dropletFiber::gridBlocks::cutSamples
             outgoing_[proci].clear();
             for (const std::size_t p : sentCopies_[proci])
             {
-                outgoing_[proci].append(unremoved[p]);
                 outgoing_[proci].append(summedParts[p]);
             }
         }
@@ -180,10 +179,15 @@ std::vector<double> Foam::dropletFiber::gridBlocks::cutSamples
         std::size_t next = own;
         forAll(received, proci)
         {
-            for (std::size_t i = 0; i < copiesFrom_[proci]; ++i)
+            for (std::size_t i = 0; i < copiesFrom_[proci]; ++i, ++next)
             {
-                shortfall[next] = received[proci][label(2*i)];
-                parts[next++] = received[proci][label(2*i + 1)];
+                parts[next] = received[proci][label(i)];
+                shortfall[next] =
+                    ::dropletFiber::unremovedMass
+                    (
+                        parts[next],
+                        ::dropletFiber::parcelMass(copies_[next - own])
+                    );
             }
         }
     }
@@ -199,6 +203,20 @@ std::vector<double> Foam::dropletFiber::gridBlocks::cutSamples
             );
         }
     }
+}
+
+
+std::vector<double> Foam::dropletFiber::gridBlocks::cutSamples
+(
+    ::dropletFiber::CaptureLimit& limit,
+    const std::vector<double>& unremoved,
+    const std::vector<double>& summedParts,
+    const std::vector<double>& realisedOverGranted,
+    const List<List<scalar>>& remoteRatios,
+    parallelStatistics& statistics
+)
+{
+    addShortfalls(limit, unremoved, summedParts, statistics);
     // Each sample's cut: this block's corners, then the owners' answers
     std::vector<double> cut(grantLocal_.size(), 0.0);
     for (std::size_t p = 0; p < grantLocal_.size(); ++p)

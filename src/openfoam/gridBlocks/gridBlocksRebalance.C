@@ -121,12 +121,13 @@ void appendState
                 local.addBox(grid.depositBox(parcel, dt), costPerNodeWeight);
             }
             DynamicList<scalar> mine;
-            forAll(local.work(), t)
+            const std::vector<double>& work = local.work();
+            for (std::size_t t = 0; t < work.size(); ++t)
             {
-                if (local.work()[t] > 0)
+                if (work[t] > 0)
                 {
                     mine.append(scalar(t));
-                    mine.append(local.work()[t]);
+                    mine.append(work[t]);
                 }
             }
             sparse[Pstream::myProcNo()].transfer(mine);
