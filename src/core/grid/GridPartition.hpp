@@ -31,6 +31,17 @@
 // tiles per part do not constrain the cut). Deterministic: the same work gives the same
 // boxes on every processor.
 //
+// depositBisection(): blocks sized by the steady deposit's work (DepositWork, DepositBisection.cpp):
+// the same recursion on the tiles, each cut (any direction, any tile layer leaving a tile
+// per processor) minimising max(lower / lowerParts, upper / upperParts), where a side's work
+// is every parcel group whose tiles meet it, in full (a parcel reaching k blocks is
+// evaluated by each), plus its touched nodes' work. Bound: with L the largest work of the
+// groups meeting one tile layer plus that layer's touched work (any direction, whole grid),
+// some cut leaves each side within 2 L of its share, so every part's work lies within
+// W / P + 4.5 L, W = total(), the sum over the recursion levels of 2 L over the processors
+// of the side (1, 2, 3, 5, 9, ...: at most 2.24), while the tiles per part do not
+// constrain the cuts. Deterministic: the same groups in the same order give the same boxes.
+//
 // holdersOf(): the processors whose owned nodes a box of nodes meets (the blocks a
 // parcel's deposit reaches, DensityGrid::depositBox).
 #pragma once
@@ -44,6 +55,8 @@
 
 namespace dropletFiber
 {
+
+class DepositWork;
 
 // A subdomain's bounding box: min x y z, max x y z.
 using SubdomainBounds = std::array<double, 6>;
@@ -62,6 +75,9 @@ public:
     // Recursive bisection weighted by the work per tile (above); parts >= 1 and at most
     // the number of tiles (std::invalid_argument otherwise).
     static GridPartition weightedBisection(const TileWork& work, int parts);
+    // Recursive bisection by the steady deposit's work (above); parts >= 1 and at most the
+    // number of tiles (std::invalid_argument otherwise).
+    static GridPartition depositBisection(const DepositWork& work, int parts);
 
     // True when the boxes are pairwise disjoint, inside the grid, and hold every node.
     bool tiles(const GridSpec& spec) const;

@@ -1,0 +1,165 @@
+// GridPartition::depositBisection: grid blocks of whole tiles sized by the steady deposit's
+// work (DepositWork), a parcel group charged in full to each side its tiles meet.
+#include "grid/DepositWork.hpp"
+#include "grid/GridPartition.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace dropletFiber
+{
+
+namespace
+{
+
+using Groups = std::vector<DepositWork::ParcelGroup>;
+
+struct Cut
+{
+    int direction = -1;
+    int layers = 0;           // tile layers of the box below the cut
+    double score = 0.0;       // max(lower / lowerParts, upper / upperParts)
+};
+
+// The touched nodes' work of each tile layer of tileBox along d; the layers' node counts
+// where the box holds no work at all (then the cut evens the nodes).
+std::vector<double> touchedLayers(const TileWork& touched, const IndexBox& tileBox, int d, bool noGroups)
+{
+    const std::array<int, 3> n = tileBox.extents();
+    std::vector<double> layers(static_cast<std::size_t>(n[d]), 0.0);
+    std::vector<double> nodes(layers.size(), 0.0);
+    double sum = 0.0;
+    for (int k = tileBox.lo[2]; k <= tileBox.hi[2]; ++k)
+    {
+        for (int j = tileBox.lo[1]; j <= tileBox.hi[1]; ++j)
+        {
+            for (int i = tileBox.lo[0]; i <= tileBox.hi[0]; ++i)
+            {
+                const std::array<int, 3> at{{i, j, k}};
+                const auto layer = static_cast<std::size_t>(at[d] - tileBox.lo[d]);
+                const double w = touched.work()[flatNodeIndex(touched.tiles(), i, j, k)];
+                layers[layer] += w;
+                sum += w;
+                nodes[layer] += static_cast<double>(touched.nodesOf(IndexBox{at, at}).nodeCount());
+            }
+        }
+    }
+    return sum > 0.0 || !noGroups ? layers : nodes;
+}
+
+// The best cut of tileBox along d (direction -1: no cut leaves a tile to each processor).
+// lower(c) = the groups starting below layer c plus the touched layers below, upper(c) =
+// the groups ending at or above c plus the touched layers above: prefix sums.
+Cut bestCutAlong(const Groups& groups, const TileWork& touched, const IndexBox& tileBox, int d,
+                 int lowerParts, int parts)
+{
+    const std::array<int, 3> n = tileBox.extents();
+    const long others = static_cast<long>(tileBox.nodeCount()) / n[d];
+    const long first = (lowerParts + others - 1) / others;
+    const long last = n[d] - (parts - lowerParts + others - 1) / others;
+    Cut best;
+    if (first < 1 || first > last)
+    {
+        return best;
+    }
+    const std::vector<double> layers = touchedLayers(touched, tileBox, d, groups.empty());
+    std::vector<double> startsIn(layers);
+    std::vector<double> endsIn(layers);
+    for (const DepositWork::ParcelGroup& g : groups)
+    {
+        startsIn[static_cast<std::size_t>(g.tiles.lo[d] - tileBox.lo[d])] += g.work;
+        endsIn[static_cast<std::size_t>(g.tiles.hi[d] - tileBox.lo[d])] += g.work;
+    }
+    double upper = 0.0;
+    for (const double w : endsIn)
+    {
+        upper += w;
+    }
+    double lower = 0.0;
+    const double upperParts = parts - lowerParts;
+    for (long c = 1; c <= last; ++c)
+    {
+        lower += startsIn[static_cast<std::size_t>(c - 1)];
+        upper -= endsIn[static_cast<std::size_t>(c - 1)];
+        const double score = std::max(lower / lowerParts, upper / upperParts);
+        if (c >= first && (best.direction < 0 || score < best.score))
+        {
+            best = Cut{d, static_cast<int>(c), score};
+        }
+    }
+    return best;
+}
+
+// The groups meeting a side of the cut, clipped to it.
+Groups side(const Groups& groups, int d, int from, int to)
+{
+    Groups out;
+    for (DepositWork::ParcelGroup g : groups)
+    {
+        if (g.tiles.hi[d] >= from && g.tiles.lo[d] <= to)
+        {
+            g.tiles.lo[d] = std::max(g.tiles.lo[d], from);
+            g.tiles.hi[d] = std::min(g.tiles.hi[d], to);
+            out.push_back(g);
+        }
+    }
+    return out;
+}
+
+void bisectByDeposit(const Groups& groups, const TileWork& touched, const IndexBox& tileBox, int first,
+                     int parts, std::vector<IndexBox>& boxes)
+{
+    if (parts == 1)
+    {
+        boxes[static_cast<std::size_t>(first)] = touched.nodesOf(tileBox);
+        return;
+    }
+    const std::array<int, 3> n = tileBox.extents();
+    std::array<int, 3> order{{0, 1, 2}};
+    std::stable_sort(order.begin(), order.end(), [&n](int a, int b) { return n[a] > n[b]; });
+    const int lowerParts = parts / 2;
+    Cut best;
+    for (const int d : order)
+    {
+        const Cut cut = bestCutAlong(groups, touched, tileBox, d, lowerParts, parts);
+        if (cut.direction >= 0 && (best.direction < 0 || cut.score < best.score))
+        {
+            best = cut;
+        }
+    }
+    if (best.direction < 0)
+    {
+        throw std::invalid_argument("GridPartition::depositBisection: no cut of " + boxText(tileBox)
+                                    + " (tiles) leaves a tile to each of " + std::to_string(parts) + " parts");
+    }
+    const int d = best.direction;
+    const int cutAt = tileBox.lo[d] + best.layers;
+    IndexBox lower = tileBox;
+    IndexBox upper = tileBox;
+    lower.hi[d] = cutAt - 1;
+    upper.lo[d] = cutAt;
+    bisectByDeposit(side(groups, d, tileBox.lo[d], cutAt - 1), touched, lower, first, lowerParts, boxes);
+    bisectByDeposit(side(groups, d, cutAt, tileBox.hi[d]), touched, upper, first + lowerParts,
+                    parts - lowerParts, boxes);
+}
+
+} // namespace
+
+GridPartition GridPartition::depositBisection(const DepositWork& work, int parts)
+{
+    const TileWork& touched = work.touched();
+    if (parts < 1 || static_cast<std::size_t>(parts) > touched.tileCount())
+    {
+        throw std::invalid_argument("GridPartition::depositBisection: parts must be 1 to the "
+                                    + std::to_string(touched.tileCount()) + " tiles, not "
+                                    + std::to_string(parts));
+    }
+    std::vector<IndexBox> boxes(static_cast<std::size_t>(parts));
+    const std::array<int, 3>& t = touched.tiles();
+    bisectByDeposit(work.groups(), touched, IndexBox{{{0, 0, 0}}, {{t[0] - 1, t[1] - 1, t[2] - 1}}}, 0, parts,
+                    boxes);
+    return GridPartition(std::move(boxes));
+}
+
+} // namespace dropletFiber

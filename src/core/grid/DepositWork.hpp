@@ -1,0 +1,71 @@
+// DepositWork: the steady deposit's work over the grid, the input of
+// GridPartition::depositBisection (grid blocks sized by the deposit's work, docs/scaleOut.md).
+//
+// Two terms, on the tile lattice of a TileWork:
+// - Parcels: a parcel whose deposit box (DensityGrid::depositBox) reaches k blocks is
+//   evaluated in full by each of them (the kernel is normalised over the whole box, eq. 24:
+//   deposit() on its own block, depositCopy() on the others), so its work (the node weights
+//   of its box times the cost of one) is charged in full to every block its box meets.
+//   Parcels are grouped by the tiles their box meets, the work of a group summed: blocks
+//   made of whole tiles meet a group exactly when they meet each of its parcels' boxes, so
+//   the grouping loses nothing for them, and the list is bounded by the distinct tile boxes
+//   (at most tiles x e^3 for boxes of at most e tiles a side), not by the parcels.
+// - Touched nodes: the window update of the nodes the steps touch, a cost per node,
+//   spread evenly over the nodes of a box (TileWork::addBox).
+// Every processor adds its parcels and touched boxes; the groups are gathered (addGroup,
+// seven numbers each) and summed in the same order on every processor, so that all make
+// the same partition.
+#pragma once
+
+#include "grid/GridSpec.hpp"
+#include "grid/TileWork.hpp"
+
+#include <array>
+#include <cstddef>
+#include <map>
+#include <vector>
+
+namespace dropletFiber
+{
+
+class DepositWork
+{
+public:
+    // Parcels whose deposit boxes meet the same tiles, and their summed work.
+    struct ParcelGroup
+    {
+        IndexBox tiles;
+        double work = 0.0;
+    };
+
+    // Tiles over the grid's nodes, at most maxTilesPerDirection per direction (TileWork).
+    DepositWork(const std::array<int, 3>& gridNodes, int maxTilesPerDirection);
+
+    // A parcel's deposit box (grid node indices, clipped to the grid; empty: nothing) and its
+    // work, charged in full to every block the box meets.
+    void addParcel(const IndexBox& depositBox, double work);
+    // A group of another processor (tile indices), its work added to that of the same tiles.
+    void addGroup(const IndexBox& tiles, double work);
+    // perNode for every node of the box (grid indices), the window update of touched nodes.
+    void addTouched(const IndexBox& nodes, double perNode) { touched_.addBox(nodes, perNode); }
+
+    // The groups in the order of their tile boxes (lo, then hi; the same on every processor).
+    std::vector<ParcelGroup> groups() const;
+    std::size_t groupCount() const { return groups_.size(); }
+    const TileWork& touched() const { return touched_; }
+    TileWork& touched() { return touched_; }
+    const std::array<int, 3>& tiles() const { return touched_.tiles(); }
+
+    // The work of a block (grid node indices): every group whose tiles' nodes meet it, in
+    // full, plus its touched nodes' work. Exact for blocks of whole tiles; for others a
+    // group counts when any tile of it meets the block.
+    double workOf(const IndexBox& block) const;
+    // The parcels' work counted once, plus the touched nodes' (the serial deposit).
+    double total() const;
+
+private:
+    std::map<std::array<int, 6>, double> groups_;
+    TileWork touched_;
+};
+
+} // namespace dropletFiber
