@@ -6,14 +6,16 @@ Description
     re-partitioned by the deposit work of a step, and the averaging windows
     moved with their nodes.
 
-    Work per node (docs/scaleOut.md, measured with bench/scaleOut.sh): the
-    window update, 8.4 ns per node of a block, plus 47 ns per node weight
-    evaluated, where a parcel's deposit box (DensityGrid::depositBox) is the
-    node weights it costs, whichever blocks hold the nodes (its own
-    processor's and those its copies go to). Summed on tiles of the grid
-    (TileWork, at most 64 per direction) over the processors: each sends its
-    parcels' non-zero tiles, two numbers each, to all (gather and scatter
-    through the master).
+    The steady deposit's work (DepositWork, docs/scaleOut.md): a parcel costs
+    38 ns per node of its deposit box (DensityGrid::depositBox), charged in
+    full to every block the box meets (each evaluates its whole kernel), and
+    a touched node 9 ns (its step values and window update), the touched
+    nodes taken as the nodes of the tiles in the bounding box of all
+    parcels' tiles. Tiles of the grid at most 64 per direction; each
+    processor sends its parcels grouped by their boxes' tiles (seven numbers
+    a group, at most one per parcel) to all through the master, and every
+    processor sums them in processor order: the same groups, the same
+    partition (GridPartition::depositBisection).
 
     Moving the windows: processor p sends processor q the node values of
     its window on the nodes of its old block inside q's new block, 56 bytes
@@ -25,6 +27,7 @@ Description
 #include "gridBlocks.H"
 
 #include <algorithm>
+#include <utility>
 
 // * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
 
@@ -33,10 +36,12 @@ namespace
 
 using namespace Foam;
 
-//- Thread CPU time per node of a block's window update and per node weight
-//  of the deposit [s] (docs/scaleOut.md, the localised case's deposit)
-constexpr scalar windowCostPerNode = 8.4e-9;
-constexpr scalar costPerNodeWeight = 47e-9;
+//- Thread CPU time per node weight of a parcel's deposit box and per
+//  touched node of a step [s] (docs/scaleOut.md: DensityGrid's deposit and
+//  commit on 1e6 nodes, 255 parcels of 7,100 node weights per step in
+//  spray regions of 1.9e3 to 7.5e4 touched nodes)
+constexpr scalar costPerNodeWeight = 38e-9;
+constexpr scalar costPerTouchedNode = 9e-9;
 
 //- Tiles per direction of the work field: 64^3 = 2.6e5 at most, the cut
 //  placed to within a 64th of the grid
@@ -46,19 +51,23 @@ constexpr int maxTilesPerDirection = 64;
 constexpr scalar worthMoving = 0.05;
 
 
-//- The busiest block's work under the tile work
-scalar busiest
+//- The busiest block's work and the mean over the blocks (each block's
+//  work with its copies of the parcels its box meets)
+std::pair<scalar, scalar> busiestAndMean
 (
-    const ::dropletFiber::TileWork& work,
+    const ::dropletFiber::DepositWork& work,
     const ::dropletFiber::GridPartition& partition
 )
 {
     scalar most = 0;
+    scalar sum = 0;
     for (const auto& box : partition.boxes())
     {
-        most = max(most, work.workIn(box));
+        const scalar w = work.workOf(box);
+        most = max(most, w);
+        sum += w;
     }
-    return most;
+    return {most, sum/max(partition.processors(), 1)};
 }
 
 
@@ -100,7 +109,7 @@ void appendState
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-::dropletFiber::TileWork Foam::dropletFiber::gridBlocks::depositWork
+::dropletFiber::DepositWork Foam::dropletFiber::gridBlocks::depositWork
 (
     const ::dropletFiber::DensityGrid& grid,
     const std::vector<::dropletFiber::Parcel>& parcels,
@@ -109,26 +118,30 @@ void appendState
 ) const
 {
     using stage = parallelStatistics::stage;
-    ::dropletFiber::TileWork local(spec_.nodes, maxTilesPerDirection);
     List<scalarList> sparse(Pstream::nProcs());
     statistics.timed
     (
         stage::deposit,
         [&]()
         {
+            ::dropletFiber::DepositWork local(spec_.nodes, maxTilesPerDirection);
             for (const ::dropletFiber::Parcel& parcel : parcels)
             {
-                local.addBox(grid.depositBox(parcel, dt), costPerNodeWeight);
+                const ::dropletFiber::IndexBox box = grid.depositBox(parcel, dt);
+                local.addParcel(box, costPerNodeWeight*scalar(box.nodeCount()));
             }
-            DynamicList<scalar> mine;
-            const std::vector<double>& work = local.work();
-            for (std::size_t t = 0; t < work.size(); ++t)
+            DynamicList<scalar> mine(7*label(local.groupCount()));
+            for (const auto& group : local.groups())
             {
-                if (work[t] > 0)
+                for (int d = 0; d < 3; ++d)
                 {
-                    mine.append(scalar(t));
-                    mine.append(work[t]);
+                    mine.append(scalar(group.tiles.lo[d]));
                 }
+                for (int d = 0; d < 3; ++d)
+                {
+                    mine.append(scalar(group.tiles.hi[d]));
+                }
+                mine.append(group.work);
             }
             sparse[Pstream::myProcNo()].transfer(mine);
         }
@@ -139,22 +152,30 @@ void appendState
     );
     Pstream::gatherList(sparse);
     Pstream::scatterList(sparse);
-    // In processor order, then the windows: the same sums on every processor
-    ::dropletFiber::TileWork work(spec_.nodes, maxTilesPerDirection);
+    // In processor order: the same sums on every processor
+    ::dropletFiber::DepositWork work(spec_.nodes, maxTilesPerDirection);
     statistics.timed
     (
         stage::deposit,
         [&]()
         {
+            ::dropletFiber::IndexBox touched;
             forAll(sparse, proci)
             {
                 const scalarList& in = sparse[proci];
-                for (label i = 0; i + 1 < in.size(); i += 2)
+                for (label i = 0; i + 6 < in.size(); i += 7)
                 {
-                    work.work()[std::size_t(in[i])] += in[i + 1];
+                    ::dropletFiber::IndexBox tiles;
+                    for (int d = 0; d < 3; ++d)
+                    {
+                        tiles.lo[d] = int(in[i + d]);
+                        tiles.hi[d] = int(in[i + 3 + d]);
+                    }
+                    work.addGroup(tiles, in[i + 6]);
+                    touched = touched.united(tiles);
                 }
             }
-            work.addBox(spec_.fullBox(), windowCostPerNode);
+            work.addTouched(work.touched().nodesOf(touched), costPerTouchedNode);
         }
     );
     return work;
@@ -218,26 +239,31 @@ bool Foam::dropletFiber::gridBlocks::rebalance
     {
         return false;
     }
-    const ::dropletFiber::TileWork work =
+    const ::dropletFiber::DepositWork work =
         depositWork(grid, parcels, dt, statistics);
-    if (work.tileCount() < std::size_t(Pstream::nProcs()))
+    if (work.touched().tileCount() < std::size_t(Pstream::nProcs()))
     {
         return false;
     }
     // The same work on every processor: the same decision
     const ::dropletFiber::GridPartition next =
-        ::dropletFiber::GridPartition::weightedBisection(work, Pstream::nProcs());
-    const scalar now = busiest(work, partition_);
-    const scalar then = busiest(work, next);
-    if (next.boxes() == partition_.boxes() || then > (1 - worthMoving)*now)
+        ::dropletFiber::GridPartition::depositBisection(work, Pstream::nProcs());
+    const std::pair<scalar, scalar> now = busiestAndMean(work, partition_);
+    const std::pair<scalar, scalar> then = busiestAndMean(work, next);
+    if
+    (
+        next.boxes() == partition_.boxes()
+     || then.first > (1 - worthMoving)*now.first
+    )
     {
         return false;
     }
     windowParts = movedWindowParts(grid, next, statistics);
     Info<< "    grid blocks re-partitioned by deposit work: busiest block's"
-        << " predicted work " << now/(work.total()/Pstream::nProcs())
-        << " -> " << then/(work.total()/Pstream::nProcs())
-        << " of the mean" << nl;
+        << " predicted work / mean " << now.first/max(now.second, VSMALL)
+        << " -> " << then.first/max(then.second, VSMALL)
+        << " (busiest " << now.first/max(then.first, VSMALL)
+        << " times the new busiest)" << nl;
     partition_ = next;
     owned_ = partition_.owned(Pstream::myProcNo());
     balanced_ = true;
