@@ -206,8 +206,8 @@ void Foam::dropletFiber::gridBlocks::report(Ostream& os) const
     os  << "    grid blocks: " << Pstream::nProcs() << " processors, "
         << (
                balanced_
-             ? "by deposit work (recursive bisection weighted by the deposit's"
-               " work per tile, the restart state's partition)"
+             ? "by deposit work (recursive bisection weighted by the steady"
+               " deposit's work, the restart state's partition)"
              : bisected_
              ? "by recursive bisection of the grid (the subdomains' bounding"
                " boxes do not tile it: a manual decomposition, or a grid"

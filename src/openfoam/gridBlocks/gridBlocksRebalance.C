@@ -253,9 +253,13 @@ bool Foam::dropletFiber::gridBlocks::rebalance
     if
     (
         next.boxes() == partition_.boxes()
+     || now.first <= 0
      || then.first > (1 - worthMoving)*now.first
     )
     {
+        Info<< "    grid blocks kept: busiest block's predicted work / mean "
+            << now.first/max(now.second, VSMALL) << " (re-partitioned: "
+            << then.first/max(then.second, VSMALL) << ")" << nl;
         return false;
     }
     windowParts = movedWindowParts(grid, next, statistics);
