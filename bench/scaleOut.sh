@@ -19,7 +19,10 @@
 # first 5. X, Y, Z: max / mean over processors of the deposit's, fiber step's and
 # collision's thread CPU time per step (the work columns of parallelStatistics.dat,
 # summed over the same steps; 1 is even); C the sum of the three stages' maximum
-# thread CPU time per step in ms (scaleOutCase.py report). Runs with more processors
+# thread CPU time per step in ms (scaleOutCase.py report). With -blocks, a second
+# line gives the deposit's max / mean and busiest ms per step by phase: the window's
+# fill (steps 6-10), the steady steps (after 10, but every balanceSteps-th) with the
+# coupling's ms, and the re-partition steps. Runs with more processors
 # than cores are oversubscribed: on a small machine T then includes the waiting of
 # processes sharing a core (the thread CPU times do not). A benchmark: nothing is
 # judged; compare figures only from the same session.
@@ -74,7 +77,7 @@ while [ $# -gt 0 ]; do
         -tiny) nodesList="1e4"; ranksList="1 2"; steps=8 ;;
         -keep) scratch="$2"; shift ;;
         -h | -help)
-            sed -n '2,46p' "$0"
+            sed -n '2,53p' "$0"
             exit 0
             ;;
         *) echo "usage: $0 [-nodes LIST] [-ranks LIST] [-steps N] [-samplesPerSegment N] [-localised] [-tiny] [-keep DIR]" >&2; exit 2 ;;
@@ -133,7 +136,7 @@ for nodes in $nodesList; do
             echo "scaleOut: the run with $ranks processors and $total nodes failed: see $dir/log.*" >&2
             exit 1
         fi
-        python3 "$here/scaleOutCase.py" report "$dir" --ranks "$ranks" --nodes "$total"
+        python3 "$here/scaleOutCase.py" report "$dir" --ranks "$ranks" --nodes "$total" ${blocks:+--balance-steps "$balanceSteps"}
         echo "#   $(( $(date +%s) - start )) s, load average $(cut -d' ' -f1-3 /proc/loadavg)"
     done
 done

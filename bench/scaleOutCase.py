@@ -246,7 +246,32 @@ def report(args):
         f" depositMsPerStep={deposit_ms:.1f}"
         f"{work_figures(work)}"
     )
+    if args.balance_steps > 0 and statistics and "cpuDepositMax" in statistics[0]:
+        print(f"#   deposit by phase (step numbers from 1):{phase_figures(statistics, args.balance_steps)}")
     return 0
+
+
+def phase_figures(rows, balance_steps):
+    """The deposit's max / mean and the busiest processor's thread CPU ms per step in the
+    window's fill (steps 6-10), the steady steps (11 on, but the re-partition steps: every
+    balance_steps-th, which weigh the work and may move the window) and the re-partition
+    steps; and the coupling's (three stages' maxima) ms per steady step."""
+    stages = ("cpuDeposit", "cpuCollision", "cpuFibers")
+    phases = {"fill": [r for i, r in enumerate(rows) if 6 <= i + 1 <= 10],
+              "steady": [r for i, r in enumerate(rows) if i + 1 > 10 and (i + 1) % balance_steps],
+              "repartition": [r for i, r in enumerate(rows) if i + 1 > 5 and (i + 1) % balance_steps == 0]}
+    out = ""
+    for name, chosen in phases.items():
+        if not chosen:
+            continue
+        ms = 1e3 * sum(r["cpuDepositMax"] for r in chosen) / len(chosen)
+        out += f" {name} max/mean={imbalance(chosen, 'cpuDeposit'):.2f} maxMs={ms:.2f}"
+        if name == "steady":
+            coupling = 1e3 * sum(sum(r[s + "Max"] for s in stages) for r in chosen) / len(chosen)
+            weights = sum(r["nodeWeightsMax"] for r in chosen) / len(chosen)
+            out += (f" couplingMs={coupling:.2f} nodeWeightsMax={weights:.0f}"
+                    f" nodeWeights max/mean={imbalance(chosen, 'nodeWeights'):.2f};")
+    return out
 
 
 def imbalance(rows, figure):
@@ -353,6 +378,8 @@ def main():
     r.add_argument("--ranks", type=int, required=True)
     r.add_argument("--nodes", type=int, required=True)
     r.add_argument("--skip", type=int, default=5)
+    r.add_argument("--balance-steps", type=int, default=0,
+                   help="print the deposit by phase: fill, steady, re-partition steps (0: not)")
     e = sub.add_parser("estimate")
     e.add_argument("--nodes", type=int, nargs=3, default=[250, 250, 150])
     e.add_argument("--window", type=int, default=10)
