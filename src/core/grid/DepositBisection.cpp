@@ -18,8 +18,8 @@ using Groups = std::vector<DepositWork::ParcelGroup>;
 struct Cut
 {
     int direction = -1;
-    int layers = 0;           // tile layers of the box below the cut
-    double score = 0.0;       // max(lower / lowerParts, upper / upperParts)
+    int layers = 0;     // tile layers of the box below the cut
+    double score = 0.0; // max(lower / lowerParts, upper / upperParts)
 };
 
 // The touched nodes' work of each tile layer of tileBox along d; the layers' node counts
@@ -131,7 +131,8 @@ void bisectByDeposit(const Groups& groups, const TileWork& touched, const IndexB
     if (best.direction < 0)
     {
         throw std::invalid_argument("GridPartition::depositBisection: no cut of " + boxText(tileBox)
-                                    + " (tiles) leaves a tile to each of " + std::to_string(parts) + " parts");
+                                    + " (tiles) leaves a tile to each of " + std::to_string(parts)
+                                    + " parts");
     }
     const int d = best.direction;
     const int cutAt = tileBox.lo[d] + best.layers;

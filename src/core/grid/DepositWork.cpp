@@ -52,7 +52,8 @@ double DepositWork::workOf(const IndexBox& block) const
     double work = touched_.workIn(block);
     for (const auto& [key, w] : groups_)
     {
-        const IndexBox nodes = touched_.nodesOf(IndexBox{{{key[0], key[1], key[2]}}, {{key[3], key[4], key[5]}}});
+        const IndexBox nodes
+            = touched_.nodesOf(IndexBox{{{key[0], key[1], key[2]}}, {{key[3], key[4], key[5]}}});
         if (!nodes.intersected(block).empty())
         {
             work += w;

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <string>
 #include <stdexcept>
 
@@ -56,92 +55,6 @@ void bisect(const IndexBox& box, int first, int parts, std::vector<IndexBox>& bo
     upper.lo[d] = box.lo[d] + layers;
     bisect(lower.empty() ? IndexBox{} : lower, first, lowerParts, boxes);
     bisect(upper.empty() ? IndexBox{} : upper, first + lowerParts, parts - lowerParts, boxes);
-}
-
-// The work of each tile layer of tileBox along d (node counts where the box holds no work:
-// the cut then evens the nodes).
-std::vector<double> layerWork(const TileWork& work, const IndexBox& tileBox, int d)
-{
-    const std::array<int, 3> n = tileBox.extents();
-    std::vector<double> layers(static_cast<std::size_t>(n[d]), 0.0);
-    std::vector<double> nodes(layers.size(), 0.0);
-    double sum = 0.0;
-    for (int k = tileBox.lo[2]; k <= tileBox.hi[2]; ++k)
-    {
-        for (int j = tileBox.lo[1]; j <= tileBox.hi[1]; ++j)
-        {
-            for (int i = tileBox.lo[0]; i <= tileBox.hi[0]; ++i)
-            {
-                const std::array<int, 3> at{{i, j, k}};
-                const auto layer = static_cast<std::size_t>(at[d] - tileBox.lo[d]);
-                const double w = work.work()[flatNodeIndex(work.tiles(), i, j, k)];
-                layers[layer] += w;
-                sum += w;
-                nodes[layer] += static_cast<double>(work.nodesOf(IndexBox{at, at}).nodeCount());
-            }
-        }
-    }
-    return sum > 0.0 ? layers : nodes;
-}
-
-// The tile layers below the cut along d: the lower part's share of the work nearest, each
-// part keeping a tile per processor (-1: no such cut along d).
-int cutLayers(const TileWork& work, const IndexBox& tileBox, int d, int lowerParts, int parts)
-{
-    const std::array<int, 3> n = tileBox.extents();
-    const long others = static_cast<long>(tileBox.nodeCount()) / n[d];
-    const long first = (lowerParts + others - 1) / others;
-    const long last = n[d] - (parts - lowerParts + others - 1) / others;
-    if (first < 1 || first > last)
-    {
-        return -1;
-    }
-    const std::vector<double> layers = layerWork(work, tileBox, d);
-    const double total = std::accumulate(layers.begin(), layers.end(), 0.0);
-    const double share = total * static_cast<double>(lowerParts) / static_cast<double>(parts);
-    double below = std::accumulate(layers.begin(), layers.begin() + first, 0.0);
-    long best = first;
-    double bestMiss = std::abs(below - share);
-    for (long c = first + 1; c <= last; ++c)
-    {
-        below += layers[static_cast<std::size_t>(c - 1)];
-        if (std::abs(below - share) < bestMiss)
-        {
-            bestMiss = std::abs(below - share);
-            best = c;
-        }
-    }
-    return static_cast<int>(best);
-}
-
-void bisectWeighted(const TileWork& work, const IndexBox& tileBox, int first, int parts,
-                    std::vector<IndexBox>& boxes)
-{
-    if (parts == 1)
-    {
-        boxes[static_cast<std::size_t>(first)] = work.nodesOf(tileBox);
-        return;
-    }
-    const std::array<int, 3> n = tileBox.extents();
-    std::array<int, 3> order{{0, 1, 2}};
-    std::stable_sort(order.begin(), order.end(), [&n](int a, int b) { return n[a] > n[b]; });
-    const int lowerParts = parts / 2;
-    for (const int d : order)
-    {
-        const int layers = cutLayers(work, tileBox, d, lowerParts, parts);
-        if (layers > 0)
-        {
-            IndexBox lower = tileBox;
-            IndexBox upper = tileBox;
-            lower.hi[d] = tileBox.lo[d] + layers - 1;
-            upper.lo[d] = tileBox.lo[d] + layers;
-            bisectWeighted(work, lower, first, lowerParts, boxes);
-            bisectWeighted(work, upper, first + lowerParts, parts - lowerParts, boxes);
-            return;
-        }
-    }
-    throw std::invalid_argument("GridPartition::weightedBisection: no cut of " + boxText(tileBox)
-                                + " (tiles) leaves a tile to each of " + std::to_string(parts) + " parts");
 }
 
 // A simple or hierarchical decomposition splits the cells by count, so the layer of
@@ -200,20 +113,6 @@ GridPartition GridPartition::bisection(const GridSpec& spec, int parts)
     }
     std::vector<IndexBox> boxes(static_cast<std::size_t>(parts));
     bisect(spec.fullBox(), 0, parts, boxes);
-    return GridPartition(std::move(boxes));
-}
-
-GridPartition GridPartition::weightedBisection(const TileWork& work, int parts)
-{
-    if (parts < 1 || static_cast<std::size_t>(parts) > work.tileCount())
-    {
-        throw std::invalid_argument("GridPartition::weightedBisection: parts must be 1 to the "
-                                    + std::to_string(work.tileCount()) + " tiles, not "
-                                    + std::to_string(parts));
-    }
-    std::vector<IndexBox> boxes(static_cast<std::size_t>(parts));
-    const std::array<int, 3>& t = work.tiles();
-    bisectWeighted(work, IndexBox{{{0, 0, 0}}, {{t[0] - 1, t[1] - 1, t[2] - 1}}}, 0, parts, boxes);
     return GridPartition(std::move(boxes));
 }
 

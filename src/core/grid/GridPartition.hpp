@@ -21,33 +21,23 @@
 // node counts in proportion to their processor counts (deterministic; correct, only the
 // blocks then match the processors' parcels less well: more traffic).
 //
-// weightedBisection(): blocks sized by deposit work (docs/scaleOut.md, balanced blocks).
-// The same recursion on a lattice of tiles (TileWork), the cut along the direction of most
-// tiles at the tile layer whose work below is nearest to the lower part's share (work in
-// proportion to the processor counts of the two parts), each part left at least one tile
-// per processor. Bound: a cut misses its share by at most half the work of one tile layer
-// of the box it cuts, so with L the largest work of a tile layer of the whole grid (any
-// direction) every part's work lies within ceil(log2 P) L / 2 of total / P (while the
-// tiles per part do not constrain the cut). Deterministic: the same work gives the same
-// boxes on every processor.
-//
-// depositBisection(): blocks sized by the steady deposit's work (DepositWork, DepositBisection.cpp):
-// the same recursion on the tiles, each cut (any direction, any tile layer leaving a tile
-// per processor) minimising max(lower / lowerParts, upper / upperParts), where a side's work
-// is every parcel group whose tiles meet it, in full (a parcel reaching k blocks is
-// evaluated by each), plus its touched nodes' work. Bound: with L the largest work of the
-// groups meeting one tile layer plus that layer's touched work (any direction, whole grid),
-// some cut leaves each side within 2 L of its share, so every part's work lies within
-// W / P + 4.5 L, W = total(), the sum over the recursion levels of 2 L over the processors
-// of the side (1, 2, 3, 5, 9, ...: at most 2.24), while the tiles per part do not
-// constrain the cuts. Deterministic: the same groups in the same order give the same boxes.
+// depositBisection(): blocks sized by the steady deposit's work (docs/scaleOut.md, balanced
+// blocks; DepositWork, DepositBisection.cpp): the same recursion on a lattice of tiles
+// (TileWork), each cut (any direction, any tile layer leaving a tile per processor)
+// minimising max(lower / lowerParts, upper / upperParts), where a side's work is every
+// parcel group whose tiles meet it, in full (a parcel reaching k blocks is evaluated by
+// each), plus its touched nodes' work. Bound: with L the largest work of the groups meeting
+// one tile layer plus that layer's touched work (any direction, whole grid), some cut
+// leaves each side within 2 L of its share, so every part's work lies within W / P + 4.5 L,
+// W = DepositWork::total() (4.5: the sum over the levels of 2 L over the side's processors,
+// 1, 2, 3, 5, 9, ...), while the tiles per part do not constrain the cuts. Deterministic:
+// the same groups in the same order give the same boxes.
 //
 // holdersOf(): the processors whose owned nodes a box of nodes meets (the blocks a
 // parcel's deposit reaches, DensityGrid::depositBox).
 #pragma once
 
 #include "grid/GridSpec.hpp"
-#include "grid/TileWork.hpp"
 
 #include <array>
 #include <cstddef>
@@ -72,9 +62,6 @@ public:
                                              const std::vector<SubdomainBounds>& bounds);
     // Recursive bisection of the grid into `parts` boxes (parts >= 1).
     static GridPartition bisection(const GridSpec& spec, int parts);
-    // Recursive bisection weighted by the work per tile (above); parts >= 1 and at most
-    // the number of tiles (std::invalid_argument otherwise).
-    static GridPartition weightedBisection(const TileWork& work, int parts);
     // Recursive bisection by the steady deposit's work (above); parts >= 1 and at most the
     // number of tiles (std::invalid_argument otherwise).
     static GridPartition depositBisection(const DepositWork& work, int parts);

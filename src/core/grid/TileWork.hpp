@@ -1,14 +1,10 @@
-// TileWork: the deposit work over the grid on a coarse lattice of tiles, the input of
-// GridPartition::weightedBisection (grid blocks sized by deposit work, docs/scaleOut.md).
-// The grid's nodes are grouped in tiles of tileNodes[d] nodes per direction (the last tile
-// of a direction may hold fewer); work[t] is the work of tile t (flat index over the
-// tiles, i fastest). Coarse so that every processor can hold the whole field and sum it
-// over processors at a re-partition (at most maxTilesPerDirection per direction); work
-// is taken as even over a tile's nodes where a box cuts a tile (workIn).
-//
-// A processor's deposit work (docs/scaleOut.md, measured in bench/scaleOut.sh): the
-// window update of its nodes, windowCostPerNode each, plus the node weights of the
-// parcels reaching its nodes, costPerNodeWeight each (addBox with a parcel's deposit box).
+// TileWork: a work field over the grid on a coarse lattice of tiles: the touched nodes'
+// term of DepositWork, and the tiles GridPartition::depositBisection cuts along (grid blocks
+// sized by deposit work, docs/scaleOut.md). The grid's nodes are grouped in tiles of
+// tileNodes[d] nodes per direction (the last tile of a direction may hold fewer); work[t]
+// is the work of tile t (flat index over the tiles, i fastest). Coarse so that every
+// processor can hold the whole field (at most maxTilesPerDirection per direction); work is
+// taken as even over a tile's nodes where a box cuts a tile (workIn).
 #pragma once
 
 #include "grid/GridSpec.hpp"
