@@ -4,8 +4,8 @@
 # Compares the restart state written at T (fibers, injector counters, totals,
 # averaging window) to TOL relative (default 1e-10), and the per-step table rows
 # after T/2 (maxSegmentLengthError apart, below; SKIP: more table columns left
-# out, compareTables.py --skip); parallel: both runs on 2 ranks, each processor's
-# state compared.
+# out, compareTables.py --skip); parallel: both runs on 2 ranks (RESTART_RANKS, as the
+# case's decomposeParDict says), each processor's state compared.
 set -euo pipefail
 caseDir="$1"; work="$2"; half="$3"; end="$4"; mode="${5:-serial}"; tol="${6:-1e-10}"
 skip="maxSegmentLengthError${7:+,$7}"
@@ -20,7 +20,7 @@ cp -r "$caseDir" "$work/full"
 cp -r "$caseDir" "$work/split"
 allrunArgs=(); mpi=()
 if [ "$mode" = parallel ]; then
-    allrunArgs=(-parallel); mpi=(mpirun -np 2)
+    allrunArgs=(-parallel); mpi=(mpirun -np "${RESTART_RANKS:-2}")
 fi
 (cd "$work/full" && ./Allrun "${allrunArgs[@]}" > /dev/null)
 (
@@ -43,7 +43,7 @@ done
 grep -q "restarted from" "$work/split/log.restart" || die "the restarted run did not read the restart state"
 state=uniform/dropletFiber/dropletFiber
 dirs=(.)
-[ "$mode" = parallel ] && dirs=(processor0 processor1)
+[ "$mode" = parallel ] && mapfile -t dirs < <(seq -f "processor%g" 0 $(( ${RESTART_RANKS:-2} - 1 )))
 for dir in "${dirs[@]}"; do
     "$PY" "$here/compareState.py" "$work/full/$dir/$end/$state" "$work/split/$dir/$end/$state" "$tol"
     # the averaging window (binary list), value by value. Not bit for bit: OpenFOAM's own

@@ -1,5 +1,6 @@
 // GridPartition::depositBisection: grid blocks of whole tiles sized by the steady deposit's
-// work (DepositWork), a parcel group charged in full to each side its tiles meet.
+// work (DepositWork): a side of a cut, given to processors S, does the work of every group
+// S holds plus every other group whose tiles meet it, in full.
 #include "grid/DepositWork.hpp"
 #include "grid/GridPartition.hpp"
 
@@ -14,6 +15,25 @@ namespace
 {
 
 using Groups = std::vector<DepositWork::ParcelGroup>;
+
+// The processors of a part, first to first + parts - 1, and the work each holds (all its
+// groups, wherever they lie).
+struct Processors
+{
+    int first = 0;
+    int parts = 1;
+    bool holds(int holder) const { return holder >= first && holder < first + parts; }
+};
+
+double heldBy(const std::vector<double>& held, const Processors& side)
+{
+    double sum = 0.0;
+    for (int p = side.first; p < side.first + side.parts; ++p)
+    {
+        sum += held[static_cast<std::size_t>(p)];
+    }
+    return sum;
+}
 
 struct Cut
 {
@@ -49,15 +69,18 @@ std::vector<double> touchedLayers(const TileWork& touched, const IndexBox& tileB
 }
 
 // The best cut of tileBox along d (direction -1: no cut leaves a tile to each processor).
-// lower(c) = the groups starting below layer c plus the touched layers below, upper(c) =
-// the groups ending at or above c plus the touched layers above: prefix sums.
-Cut bestCutAlong(const Groups& groups, const TileWork& touched, const IndexBox& tileBox, int d,
-                 int lowerParts, int parts)
+// lower(c) = the work the lower processors hold, plus the other groups starting below
+// layer c, plus the touched layers below; upper(c) likewise: prefix sums.
+Cut bestCutAlong(const Groups& groups, const std::vector<double>& held, const TileWork& touched,
+                 const IndexBox& tileBox, int d, const Processors& part)
 {
+    const int lowerParts = part.parts / 2;
+    const Processors lowerSide{part.first, lowerParts};
+    const Processors upperSide{part.first + lowerParts, part.parts - lowerParts};
     const std::array<int, 3> n = tileBox.extents();
     const long others = static_cast<long>(tileBox.nodeCount()) / n[d];
-    const long first = (lowerParts + others - 1) / others;
-    const long last = n[d] - (parts - lowerParts + others - 1) / others;
+    const long first = (lowerSide.parts + others - 1) / others;
+    const long last = n[d] - (upperSide.parts + others - 1) / others;
     Cut best;
     if (first < 1 || first > last)
     {
@@ -68,21 +91,26 @@ Cut bestCutAlong(const Groups& groups, const TileWork& touched, const IndexBox& 
     std::vector<double> endsIn(layers);
     for (const DepositWork::ParcelGroup& g : groups)
     {
-        startsIn[static_cast<std::size_t>(g.tiles.lo[d] - tileBox.lo[d])] += g.work;
-        endsIn[static_cast<std::size_t>(g.tiles.hi[d] - tileBox.lo[d])] += g.work;
+        if (!lowerSide.holds(g.holder))
+        {
+            startsIn[static_cast<std::size_t>(g.tiles.lo[d] - tileBox.lo[d])] += g.work;
+        }
+        if (!upperSide.holds(g.holder))
+        {
+            endsIn[static_cast<std::size_t>(g.tiles.hi[d] - tileBox.lo[d])] += g.work;
+        }
     }
-    double upper = 0.0;
+    double upper = heldBy(held, upperSide);
     for (const double w : endsIn)
     {
         upper += w;
     }
-    double lower = 0.0;
-    const double upperParts = parts - lowerParts;
+    double lower = heldBy(held, lowerSide);
     for (long c = 1; c <= last; ++c)
     {
         lower += startsIn[static_cast<std::size_t>(c - 1)];
         upper -= endsIn[static_cast<std::size_t>(c - 1)];
-        const double score = std::max(lower / lowerParts, upper / upperParts);
+        const double score = std::max(lower / lowerSide.parts, upper / upperSide.parts);
         if (c >= first && (best.direction < 0 || score < best.score))
         {
             best = Cut{d, static_cast<int>(c), score};
@@ -107,22 +135,21 @@ Groups side(const Groups& groups, int d, int from, int to)
     return out;
 }
 
-void bisectByDeposit(const Groups& groups, const TileWork& touched, const IndexBox& tileBox, int first,
-                     int parts, std::vector<IndexBox>& boxes)
+void bisectByDeposit(const Groups& groups, const std::vector<double>& held, const TileWork& touched,
+                     const IndexBox& tileBox, const Processors& part, std::vector<IndexBox>& boxes)
 {
-    if (parts == 1)
+    if (part.parts == 1)
     {
-        boxes[static_cast<std::size_t>(first)] = touched.nodesOf(tileBox);
+        boxes[static_cast<std::size_t>(part.first)] = touched.nodesOf(tileBox);
         return;
     }
     const std::array<int, 3> n = tileBox.extents();
     std::array<int, 3> order{{0, 1, 2}};
     std::stable_sort(order.begin(), order.end(), [&n](int a, int b) { return n[a] > n[b]; });
-    const int lowerParts = parts / 2;
     Cut best;
     for (const int d : order)
     {
-        const Cut cut = bestCutAlong(groups, touched, tileBox, d, lowerParts, parts);
+        const Cut cut = bestCutAlong(groups, held, touched, tileBox, d, part);
         if (cut.direction >= 0 && (best.direction < 0 || cut.score < best.score))
         {
             best = cut;
@@ -131,7 +158,7 @@ void bisectByDeposit(const Groups& groups, const TileWork& touched, const IndexB
     if (best.direction < 0)
     {
         throw std::invalid_argument("GridPartition::depositBisection: no cut of " + boxText(tileBox)
-                                    + " (tiles) leaves a tile to each of " + std::to_string(parts)
+                                    + " (tiles) leaves a tile to each of " + std::to_string(part.parts)
                                     + " parts");
     }
     const int d = best.direction;
@@ -140,9 +167,11 @@ void bisectByDeposit(const Groups& groups, const TileWork& touched, const IndexB
     IndexBox upper = tileBox;
     lower.hi[d] = cutAt - 1;
     upper.lo[d] = cutAt;
-    bisectByDeposit(side(groups, d, tileBox.lo[d], cutAt - 1), touched, lower, first, lowerParts, boxes);
-    bisectByDeposit(side(groups, d, cutAt, tileBox.hi[d]), touched, upper, first + lowerParts,
-                    parts - lowerParts, boxes);
+    const int lowerParts = part.parts / 2;
+    bisectByDeposit(side(groups, d, tileBox.lo[d], cutAt - 1), held, touched, lower,
+                    Processors{part.first, lowerParts}, boxes);
+    bisectByDeposit(side(groups, d, cutAt, tileBox.hi[d]), held, touched, upper,
+                    Processors{part.first + lowerParts, part.parts - lowerParts}, boxes);
 }
 
 } // namespace
@@ -156,10 +185,19 @@ GridPartition GridPartition::depositBisection(const DepositWork& work, int parts
                                     + std::to_string(touched.tileCount()) + " tiles, not "
                                     + std::to_string(parts));
     }
+    const Groups groups = work.groups();
+    std::vector<double> held(static_cast<std::size_t>(parts), 0.0);
+    for (const DepositWork::ParcelGroup& g : groups)
+    {
+        if (g.holder >= 0 && g.holder < parts)
+        {
+            held[static_cast<std::size_t>(g.holder)] += g.work;
+        }
+    }
     std::vector<IndexBox> boxes(static_cast<std::size_t>(parts));
     const std::array<int, 3>& t = touched.tiles();
-    bisectByDeposit(work.groups(), touched, IndexBox{{{0, 0, 0}}, {{t[0] - 1, t[1] - 1, t[2] - 1}}}, 0, parts,
-                    boxes);
+    bisectByDeposit(groups, held, touched, IndexBox{{{0, 0, 0}}, {{t[0] - 1, t[1] - 1, t[2] - 1}}},
+                    Processors{0, parts}, boxes);
     return GridPartition(std::move(boxes));
 }
 

@@ -7,15 +7,16 @@ Description
     moved with their nodes.
 
     The steady deposit's work (DepositWork, docs/scaleOut.md): a parcel costs
-    38 ns per node of its deposit box (DensityGrid::depositBox), charged in
-    full to every block the box meets (each evaluates its whole kernel), and
-    a touched node 9 ns (its step values and window update), the touched
-    nodes taken as the nodes of the tiles in the bounding box of all
-    parcels' tiles. Tiles of the grid at most 64 per direction; each
-    processor sends its parcels grouped by their boxes' tiles (seven numbers
-    a group, at most one per parcel) to all through the master, and every
-    processor sums them in processor order: the same groups, the same
-    partition (GridPartition::depositBisection).
+    16 ns per node of its deposit box (DensityGrid::depositBox), charged in
+    full to the processor holding it (deposit() evaluates its whole kernel
+    whatever the block) and to every other block the box meets
+    (depositCopy()), and a touched node 3.7 ns (its step values and window
+    update), the touched nodes taken as the nodes of the tiles in the
+    bounding box of all parcels' tiles. Tiles of the grid at most 64 per
+    direction; each processor sends its parcels grouped by their boxes'
+    tiles (eight numbers a group, at most one per parcel) to all through the
+    master, and every processor sums them in processor order: the same
+    groups, the same partition (GridPartition::depositBisection).
 
     Moving the windows: processor p sends processor q the node values of
     its window on the nodes of its old block inside q's new block, 56 bytes
@@ -37,11 +38,10 @@ namespace
 using namespace Foam;
 
 //- Thread CPU time per node weight of a parcel's deposit box and per
-//  touched node of a step [s] (docs/scaleOut.md: DensityGrid's deposit and
-//  commit on 1e6 nodes, 255 parcels of 7,100 node weights per step in
-//  spray regions of 1.9e3 to 7.5e4 touched nodes)
-constexpr scalar costPerNodeWeight = 38e-9;
-constexpr scalar costPerTouchedNode = 9e-9;
+//  touched node of a step [s] (docs/scaleOut.md: fitted to each
+//  processor's steady steps in bench/scaleOut.sh -localised, 1 and 4 ranks)
+constexpr scalar costPerNodeWeight = 16e-9;
+constexpr scalar costPerTouchedNode = 3.7e-9;
 
 //- Tiles per direction of the work field: 64^3 = 2.6e5 at most, the cut
 //  placed to within a 64th of the grid
@@ -61,9 +61,9 @@ std::pair<scalar, scalar> busiestAndMean
 {
     scalar most = 0;
     scalar sum = 0;
-    for (const auto& box : partition.boxes())
+    for (label p = 0; p < partition.processors(); ++p)
     {
-        const scalar w = work.workOf(box);
+        const scalar w = work.workOf(partition.owned(p), p);
         most = max(most, w);
         sum += w;
     }
@@ -128,11 +128,17 @@ void appendState
             for (const ::dropletFiber::Parcel& parcel : parcels)
             {
                 const ::dropletFiber::IndexBox box = grid.depositBox(parcel, dt);
-                local.addParcel(box, costPerNodeWeight*scalar(box.nodeCount()));
+                local.addParcel
+                (
+                    box,
+                    Pstream::myProcNo(),
+                    costPerNodeWeight*scalar(box.nodeCount())
+                );
             }
-            DynamicList<scalar> mine(7*label(local.groupCount()));
+            DynamicList<scalar> mine(8*label(local.groupCount()));
             for (const auto& group : local.groups())
             {
+                mine.append(scalar(group.holder));
                 for (int d = 0; d < 3; ++d)
                 {
                     mine.append(scalar(group.tiles.lo[d]));
@@ -163,15 +169,15 @@ void appendState
             forAll(sparse, proci)
             {
                 const scalarList& in = sparse[proci];
-                for (label i = 0; i + 6 < in.size(); i += 7)
+                for (label i = 0; i + 7 < in.size(); i += 8)
                 {
                     ::dropletFiber::IndexBox tiles;
                     for (int d = 0; d < 3; ++d)
                     {
-                        tiles.lo[d] = int(in[i + d]);
-                        tiles.hi[d] = int(in[i + 3 + d]);
+                        tiles.lo[d] = int(in[i + 1 + d]);
+                        tiles.hi[d] = int(in[i + 4 + d]);
                     }
-                    work.addGroup(tiles, in[i + 6]);
+                    work.addGroup(tiles, int(in[i]), in[i + 7]);
                     touched = touched.united(tiles);
                 }
             }
