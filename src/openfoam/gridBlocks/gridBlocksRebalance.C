@@ -52,7 +52,8 @@ constexpr scalar worthMoving = 0.05;
 
 
 //- The busiest block's work and the mean over the blocks (each block's
-//  work with its copies of the parcels its box meets)
+//  work: the parcels its processor holds and the copies of those its box
+//  meets)
 std::pair<scalar, scalar> busiestAndMean
 (
     const ::dropletFiber::DepositWork& work,
