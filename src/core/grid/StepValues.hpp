@@ -44,6 +44,9 @@ public:
     StepValues(const std::array<int, 3>& gridNodes, const IndexBox& storage);
 
     const IndexBox& storageBox() const { return storage_; }
+    // True when some node of the box (grid indices) is stored here: a deposit whose nodes
+    // all lie in other blocks adds nothing here, and is not evaluated (StepDeposit::wants).
+    bool storesAnyOf(const IndexBox& box) const { return !box.intersected(storage_).empty(); }
     // The stored nodes the step touched (grid indices).
     const IndexBox& touchedBox() const { return stepBox_; }
     // storage.nodeCount() * nQuantities doubles over the storage box (flatIndexInBox),
@@ -150,6 +153,10 @@ public:
     {
     }
     bool accumulates() const override { return true; }
+    // A parcel held here whose deposit reaches other blocks only (balanced blocks: the
+    // spray's nodes owned elsewhere): its copies are deposited there, its statistics and
+    // deposit log kept here, and its weights not evaluated here (docs/scaleOut.md).
+    bool wants(const IndexBox& box) const override { return values_.storesAnyOf(box); }
     void addListed(const NodeOmegas& nodes, double inverseSum, const IndexBox& box) override;
     void addSeparable(SeparableWeight& rows, const SeparableTables& tables, double inverseSum,
                       const IndexBox& box) override;

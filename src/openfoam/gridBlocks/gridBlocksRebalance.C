@@ -8,9 +8,9 @@ Description
 
     The steady deposit's work (DepositWork, docs/scaleOut.md): a parcel costs
     16 ns per node of its deposit box (DensityGrid::depositBox), charged in
-    full to the processor holding it (deposit() evaluates its whole kernel
-    whatever the block) and to every other block the box meets
-    (depositCopy()), and a touched node 3.7 ns (its step values and window
+    full to every block the box meets (each evaluates the whole kernel: eq.
+    24 normalises over it; the processor holding the parcel evaluates it only
+    where the box meets its own block, StepDeposit::wants), and a touched node 3.7 ns (its step values and window
     update), the touched nodes taken as the nodes of the tiles in the
     bounding box of all parcels' tiles. Tiles of the grid at most 64 per
     direction; each processor sends its parcels grouped by their boxes'
@@ -129,10 +129,12 @@ void appendState
             for (const ::dropletFiber::Parcel& parcel : parcels)
             {
                 const ::dropletFiber::IndexBox box = grid.depositBox(parcel, dt);
+                // No holder: the holder weighs the parcel only where its
+                // box meets the holder's block, as any block
                 local.addParcel
                 (
                     box,
-                    Pstream::myProcNo(),
+                    -1,
                     costPerNodeWeight*scalar(box.nodeCount())
                 );
             }

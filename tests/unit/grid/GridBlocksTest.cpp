@@ -339,6 +339,52 @@ TEST(GridBlocks, NodesOfOtherBlocksAreLeftToThem)
     EXPECT_THROW(block.windowTotal(foreign, sums), std::out_of_range);
 }
 
+// A parcel held by a block its deposit does not reach (balanced blocks: the spray's nodes
+// owned by other processors): the holder counts it and logs it but evaluates no weight;
+// the block it reaches evaluates it as the whole grid does.
+TEST(GridBlocks, HolderOutsideTheParcelsReachEvaluatesNoWeight)
+{
+    const GridSpec spec = grid3D();
+    const GridPartition partition = GridPartition::bisection(spec, 2);
+    Blocks blocks = makeBlocks(partition, spec, 1);
+    DensityGrid whole(spec);
+    Parcel parcel;
+    parcel.diameter = 2e-5;
+    parcel.nParticle = 200.0;
+    parcel.rhoDroplet = 1000.0;
+    // In the corner of the grid farthest from the cut
+    const IndexBox far = partition.owned(1);
+    const int holder = far.lo[0] > 0 || far.lo[1] > 0 || far.lo[2] > 0 ? 0 : 1;
+    const IndexBox reached = partition.owned(1 - holder);
+    parcel.position = spec.lower + (spec.upper - spec.lower).cwiseProduct(Eigen::Vector3d(0.95, 0.95, 0.95));
+    if (reached.lo[0] == 0 && reached.lo[1] == 0 && reached.lo[2] == 0)
+    {
+        parcel.position = spec.lower + (spec.upper - spec.lower).cwiseProduct(Eigen::Vector3d(0.05, 0.05, 0.05));
+    }
+    const double dt = 1e-3;
+    const IndexBox box = whole.depositBox(parcel, dt);
+    ASSERT_FALSE(box.empty());
+    ASSERT_TRUE(box.intersected(partition.owned(holder)).empty()) << "the test parcel reaches its holder";
+    ASSERT_EQ(box.intersected(reached), box);
+
+    depositOnBlocks(blocks, holder, parcel, dt);
+    whole.deposit(parcel, dt);
+    const DensityGrid& held = *blocks.grids[static_cast<std::size_t>(holder)];
+    const DensityGrid& other = *blocks.grids[static_cast<std::size_t>(1 - holder)];
+    // Counted once, by its holder, with its whole mass on the grid...
+    EXPECT_EQ(held.stepStatistics().parcels, 1);
+    EXPECT_EQ(held.stepStatistics().massIn, parcelMass(parcel));
+    EXPECT_EQ(held.stepStatistics().massDeposited, parcelMass(parcel));
+    // ...and weighed by the block it reaches only, as the whole grid weighs it
+    EXPECT_GT(whole.stepStatistics().nodesVisited, 0);
+    EXPECT_EQ(held.stepStatistics().nodesVisited, 0);
+    EXPECT_EQ(other.copyStatistics().nodesVisited, whole.stepStatistics().nodesVisited);
+    EXPECT_TRUE(held.stepBox().empty());
+    commit(blocks);
+    whole.commitStep();
+    EXPECT_EQ(assembledTotals(spec, blocks), whole.windowTotals());
+}
+
 TEST(GridBlocks, WindowStateRestoresOnTheSameBlockOnly)
 {
     const GridSpec spec = grid3D();
