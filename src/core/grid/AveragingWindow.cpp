@@ -1,5 +1,7 @@
 #include "grid/AveragingWindow.hpp"
 
+#include "grid/LiveBox.hpp"
+
 #include <algorithm>
 #include <stdexcept>
 #include <string>
@@ -41,9 +43,9 @@ AveragingWindow::AveragingWindow(const std::array<int, 3>& nodes, int nQuantitie
 }
 
 AveragingWindow::AveragingWindow(const std::array<int, 3>& gridNodes, const IndexBox& region, int nQuantities,
-                                 int length)
-    : gridNodes_(gridNodes), region_(region), nodes_(region.extents()), nQuantities_(nQuantities),
-      length_(length)
+                                 int length, bool liveBox)
+    : gridNodes_(gridNodes), region_(region), regionNodes_(region.extents()), tracksLive_(liveBox),
+      live_(liveBox ? IndexBox{} : region), nodes_(live_.extents()), nQuantities_(nQuantities), length_(length)
 {
     if (length < 1)
     {
@@ -55,7 +57,7 @@ AveragingWindow::AveragingWindow(const std::array<int, 3>& gridNodes, const Inde
         throw std::invalid_argument("averaging window: region " + boxText(region)
                                     + " is not a block of the grid");
     }
-    const std::size_t size = region.nodeCount() * static_cast<std::size_t>(nQuantities);
+    const std::size_t size = live_.nodeCount() * static_cast<std::size_t>(nQuantities);
     slots_.resize(static_cast<std::size_t>(length));
     slotBoxes_.resize(static_cast<std::size_t>(length));
     total_.assign(size, 0.0);
@@ -76,8 +78,8 @@ IndexBox AveragingWindow::toRegion(const IndexBox& box) const
     IndexBox local;
     for (int d = 0; d < 3; ++d)
     {
-        local.lo[d] = box.lo[d] - region_.lo[d];
-        local.hi[d] = box.hi[d] - region_.lo[d];
+        local.lo[d] = box.lo[d] - live_.lo[d];
+        local.hi[d] = box.hi[d] - live_.lo[d];
     }
     return local;
 }
@@ -91,8 +93,8 @@ IndexBox AveragingWindow::toGrid(const IndexBox& box) const
     IndexBox global;
     for (int d = 0; d < 3; ++d)
     {
-        global.lo[d] = box.lo[d] + region_.lo[d];
-        global.hi[d] = box.hi[d] + region_.lo[d];
+        global.lo[d] = box.lo[d] + live_.lo[d];
+        global.hi[d] = box.hi[d] + live_.lo[d];
     }
     return global;
 }
@@ -107,7 +109,7 @@ void AveragingWindow::forEachBoxRow(const IndexBox& box, F&& f) const
 
 void AveragingWindow::push(const std::vector<double>& step, const IndexBox& box)
 {
-    if (step.size() != total_.size())
+    if (step.size() != region_.nodeCount() * static_cast<std::size_t>(nQuantities_))
     {
         throw std::invalid_argument("averaging window: step array has the wrong size");
     }
@@ -149,6 +151,10 @@ void AveragingWindow::filledSlot(std::size_t slot, const IndexBox& local, const 
 void AveragingWindow::push(const double* step, const IndexBox& stepRegion, const IndexBox& box)
 {
     checkStepBox(box, stepRegion);
+    if (tracksLive_)
+    {
+        growLive(grownLiveBox(live_, box, region_));
+    }
     IndexBox evicted;
     const std::size_t slot = takeSlot(evicted);
     std::vector<double>& target = slots_[slot];
@@ -166,7 +172,7 @@ void AveragingWindow::push(const double* step, const IndexBox& stepRegion, const
     forEachRowIn(box, stepRegion,
                  [&](const IndexRow& row)
                  {
-                     const std::size_t to = flatIndexInBox(region_, box.lo[0], row.j + stepRegion.lo[1],
+                     const std::size_t to = flatIndexInBox(live_, box.lo[0], row.j + stepRegion.lo[1],
                                                            row.k + stepRegion.lo[2]);
                      std::copy(step + row.first * q, step + (row.first + row.length) * q,
                                target.begin() + static_cast<std::ptrdiff_t>(to * q));
@@ -180,7 +186,7 @@ void AveragingWindow::pushSwappingUncleared(std::vector<double>& step, const Ind
     {
         throw std::invalid_argument("averaging window: step array has the wrong size");
     }
-    checkStepBox(box, region_);
+    checkStepBox(box, live_);
     IndexBox evicted;
     const std::size_t slot = takeSlot(evicted);
     // The slot is zero outside the evicted step's box, or not allocated yet: it becomes
@@ -196,10 +202,12 @@ void AveragingWindow::pushSwappingUncleared(std::vector<double>& step, const Ind
 
 double AveragingWindow::newestStepValue(std::size_t node, int q) const
 {
-    if (filled_ == 0)
+    std::size_t index = 0;
+    if (filled_ == 0 || !liveIndex(node, index))
     {
         return 0.0;
     }
+    node = index;
     // A slot is zero outside its box (push clears the evicted box, pushSwappingUncleared's
     // caller does), so any node reads it.
     const std::vector<double>& newest = slots_[slotIndex(filled_ - 1)];
@@ -216,7 +224,61 @@ const std::vector<double>& AveragingWindow::total() const
     return total_;
 }
 
+double AveragingWindow::newestStepValueAt(const std::array<int, 3>& node, int q) const
+{
+    std::size_t index = 0;
+    if (filled_ == 0 || !liveIndexAt(node, index))
+    {
+        return 0.0;
+    }
+    return slots_[slotIndex(filled_ - 1)][index * static_cast<std::size_t>(nQuantities_)
+                                          + static_cast<std::size_t>(q)];
+}
+
+bool AveragingWindow::liveIndex(std::size_t node, std::size_t& index) const
+{
+    if (!tracksLive_)
+    {
+        index = node;
+        return true;
+    }
+    const std::array<int, 3> local = nodeIndicesOfFlat(regionNodes_, node);
+    return liveIndexAt({{local[0] + region_.lo[0], local[1] + region_.lo[1], local[2] + region_.lo[2]}}, index);
+}
+
+bool AveragingWindow::liveIndexAt(const std::array<int, 3>& node, std::size_t& index) const
+{
+    if (!live_.holds(node[0], node[1], node[2]))
+    {
+        return false;
+    }
+    index = flatIndexInBox(live_, node[0], node[1], node[2]);
+    return true;
+}
+
 void AveragingWindow::nodeTotal(std::size_t node, double* sums) const
+{
+    std::size_t index = 0;
+    if (!liveIndex(node, index))
+    {
+        std::fill(sums, sums + nQuantities_, 0.0);
+        return;
+    }
+    nodeTotalOfLive(index, sums);
+}
+
+void AveragingWindow::nodeTotalAt(const std::array<int, 3>& node, double* sums) const
+{
+    std::size_t index = 0;
+    if (!liveIndexAt(node, index))
+    {
+        std::fill(sums, sums + nQuantities_, 0.0);
+        return;
+    }
+    nodeTotalOfLive(index, sums);
+}
+
+void AveragingWindow::nodeTotalOfLive(std::size_t node, double* sums) const
 {
     const std::size_t q = static_cast<std::size_t>(nQuantities_);
     const std::size_t offset = node * q;
@@ -239,6 +301,24 @@ void AveragingWindow::nodeTotal(std::size_t node, double* sums) const
 }
 
 void AveragingWindow::prefetchNodeTotal(std::size_t node) const
+{
+    std::size_t index = 0;
+    if (liveIndex(node, index))
+    {
+        prefetchNodeTotalOfLive(index);
+    }
+}
+
+void AveragingWindow::prefetchNodeTotalAt(const std::array<int, 3>& node) const
+{
+    std::size_t index = 0;
+    if (liveIndexAt(node, index))
+    {
+        prefetchNodeTotalOfLive(index);
+    }
+}
+
+void AveragingWindow::prefetchNodeTotalOfLive(std::size_t node) const
 {
     const std::size_t q = static_cast<std::size_t>(nQuantities_);
     const std::size_t offset = node * q;
@@ -320,7 +400,7 @@ WindowState AveragingWindow::save() const
     for (int age = 0; age < filled_; ++age)
     {
         const IndexBox& b = slotBoxes_[slotIndex(age)];
-        const IndexBox g = block ? toGrid(b) : b;
+        const IndexBox g = toGrid(b);
         state.counters.insert(state.counters.end(), {g.lo[0], g.lo[1], g.lo[2], g.hi[0], g.hi[1], g.hi[2]});
         const std::vector<double>& slot = slots_[slotIndex(age)];
         forEachBoxRow(b,
@@ -454,6 +534,15 @@ void AveragingWindow::restore(const WindowState& state)
         ? boxes.size() - static_cast<std::size_t>(length_)
         : 0;
     clear(state.counters[7]);
+    if (tracksLive_)
+    {
+        IndexBox held;
+        for (std::size_t s = skip; s < boxes.size(); ++s)
+        {
+            held = held.united(boxes[s].intersected(region_));
+        }
+        relayout(held);
+    }
     std::size_t position = 0;
     for (std::size_t s = 0; s < boxes.size(); ++s)
     {
@@ -477,6 +566,14 @@ void AveragingWindow::clear(std::int64_t committed)
     {
         slot.clear();
     }
+    if (tracksLive_)
+    {
+        // Nothing held: the replay or the restore that follows grows it again
+        live_ = IndexBox{};
+        nodes_ = live_.extents();
+        total_.clear();
+        summedAt_.clear();
+    }
     std::fill(slotBoxes_.begin(), slotBoxes_.end(), IndexBox{});
     std::fill(total_.begin(), total_.end(), 0.0);
     head_ = 0;
@@ -490,16 +587,70 @@ void AveragingWindow::copySavedSlot(const double* saved, const IndexBox& savedBo
                                     std::vector<double>& slot) const
 {
     // The saved slot's values cover savedBox (i fastest); this window keeps the part in its
-    // region, row by row.
+    // region (inside its live box), row by row.
     const std::size_t q = static_cast<std::size_t>(nQuantities_);
     forEachRowIn(
-        kept, region_,
+        kept, live_,
         [&](const IndexRow& row)
         {
             const double* from = saved
-                + flatIndexInBox(savedBox, kept.lo[0], row.j + region_.lo[1], row.k + region_.lo[2]) * q;
+                + flatIndexInBox(savedBox, kept.lo[0], row.j + live_.lo[1], row.k + live_.lo[2]) * q;
             std::copy(from, from + row.length * q, slot.begin() + static_cast<std::ptrdiff_t>(row.first * q));
         });
+}
+
+void AveragingWindow::growLive(const IndexBox& box)
+{
+    const IndexBox grown = live_.united(box.intersected(region_));
+    if (grown != live_)
+    {
+        relayout(grown);
+    }
+}
+
+void AveragingWindow::relayout(const IndexBox& grown)
+{
+    const std::size_t q = static_cast<std::size_t>(nQuantities_);
+    const std::size_t size = grown.nodeCount() * q;
+    for (int age = 0; age < filled_; ++age)
+    {
+        // A slot is zero outside its step's box: that box is all there is to copy (the
+        // slots not in the window are not allocated yet)
+        const std::size_t s = slotIndex(age);
+        std::vector<double> moved(size, 0.0);
+        copyBoxValues(slots_[s].data(), live_, moved.data(), grown, toGrid(slotBoxes_[s]), q);
+        slots_[s].swap(moved);
+    }
+    std::vector<double> total(size, 0.0);
+    copyBoxValues(total_.data(), live_, total.data(), grown, live_, q);
+    total_.swap(total);
+    std::vector<std::int64_t> summedAt(grown.nodeCount(), -1);
+    copyBoxValues(summedAt_.data(), live_, summedAt.data(), grown, live_, 1);
+    summedAt_.swap(summedAt);
+    // The boxes in the grown box's indices: the same nodes
+    const IndexBox stale = toGrid(staleBox_);
+    std::vector<IndexBox> slotBoxes(slotBoxes_.size());
+    for (std::size_t s = 0; s < slotBoxes_.size(); ++s)
+    {
+        slotBoxes[s] = toGrid(slotBoxes_[s]);
+    }
+    live_ = grown;
+    nodes_ = grown.extents();
+    staleBox_ = toRegion(stale);
+    for (std::size_t s = 0; s < slotBoxes_.size(); ++s)
+    {
+        slotBoxes_[s] = toRegion(slotBoxes[s]);
+    }
+}
+
+std::size_t AveragingWindow::heldBytes() const
+{
+    std::size_t values = total_.size();
+    for (const auto& slot : slots_)
+    {
+        values += slot.size();
+    }
+    return values * sizeof(double) + summedAt_.size() * sizeof(std::int64_t);
 }
 
 } // namespace dropletFiber
