@@ -176,7 +176,9 @@ Foam::dropletFiber::gridBlocks::exchangeLists
 
 ::dropletFiber::GridBlock Foam::dropletFiber::gridBlocks::block() const
 {
-    return {owned_, owned_};
+    // The live box only: a block's memory, its window's fill and a window
+    // move follow the nodes its spray reaches, not its size
+    return {owned_, owned_, true};
 }
 
 
