@@ -45,7 +45,8 @@ AveragingWindow::AveragingWindow(const std::array<int, 3>& nodes, int nQuantitie
 AveragingWindow::AveragingWindow(const std::array<int, 3>& gridNodes, const IndexBox& region, int nQuantities,
                                  int length, bool liveBox)
     : gridNodes_(gridNodes), region_(region), regionNodes_(region.extents()), tracksLive_(liveBox),
-      live_(liveBox ? IndexBox{} : region), nodes_(live_.extents()), nQuantities_(nQuantities), length_(length)
+      live_(liveBox ? IndexBox{} : region), nodes_(live_.extents()), nQuantities_(nQuantities),
+      length_(length)
 {
     if (length < 1)
     {
@@ -231,8 +232,8 @@ double AveragingWindow::newestStepValueAt(const std::array<int, 3>& node, int q)
     {
         return 0.0;
     }
-    return slots_[slotIndex(filled_ - 1)][index * static_cast<std::size_t>(nQuantities_)
-                                          + static_cast<std::size_t>(q)];
+    return slots_[slotIndex(filled_ - 1)]
+                 [index * static_cast<std::size_t>(nQuantities_) + static_cast<std::size_t>(q)];
 }
 
 bool AveragingWindow::liveIndex(std::size_t node, std::size_t& index) const
@@ -243,7 +244,8 @@ bool AveragingWindow::liveIndex(std::size_t node, std::size_t& index) const
         return true;
     }
     const std::array<int, 3> local = nodeIndicesOfFlat(regionNodes_, node);
-    return liveIndexAt({{local[0] + region_.lo[0], local[1] + region_.lo[1], local[2] + region_.lo[2]}}, index);
+    return liveIndexAt({{local[0] + region_.lo[0], local[1] + region_.lo[1], local[2] + region_.lo[2]}},
+                       index);
 }
 
 bool AveragingWindow::liveIndexAt(const std::array<int, 3>& node, std::size_t& index) const
@@ -589,14 +591,14 @@ void AveragingWindow::copySavedSlot(const double* saved, const IndexBox& savedBo
     // The saved slot's values cover savedBox (i fastest); this window keeps the part in its
     // region (inside its live box), row by row.
     const std::size_t q = static_cast<std::size_t>(nQuantities_);
-    forEachRowIn(
-        kept, live_,
-        [&](const IndexRow& row)
-        {
-            const double* from = saved
-                + flatIndexInBox(savedBox, kept.lo[0], row.j + live_.lo[1], row.k + live_.lo[2]) * q;
-            std::copy(from, from + row.length * q, slot.begin() + static_cast<std::ptrdiff_t>(row.first * q));
-        });
+    forEachRowIn(kept, live_,
+                 [&](const IndexRow& row)
+                 {
+                     const double* from = saved
+                         + flatIndexInBox(savedBox, kept.lo[0], row.j + live_.lo[1], row.k + live_.lo[2]) * q;
+                     std::copy(from, from + row.length * q,
+                               slot.begin() + static_cast<std::ptrdiff_t>(row.first * q));
+                 });
 }
 
 void AveragingWindow::growLive(const IndexBox& box)

@@ -36,8 +36,8 @@ void copyBoxValues(const T* from, const IndexBox& fromLayout, T* to, const Index
     forEachRowIn(box, fromLayout,
                  [&](const IndexRow& row)
                  {
-                     const std::size_t target
-                         = flatIndexInBox(toLayout, box.lo[0], row.j + fromLayout.lo[1], row.k + fromLayout.lo[2]);
+                     const std::size_t target = flatIndexInBox(toLayout, box.lo[0], row.j + fromLayout.lo[1],
+                                                               row.k + fromLayout.lo[2]);
                      std::copy(from + row.first * q, from + (row.first + row.length) * q, to + target * q);
                  });
 }

@@ -95,8 +95,9 @@ StepValues::StepValues(const std::array<int, 3>& gridNodes, const IndexBox& stor
 double* StepValues::valuesOfBlockNode(std::size_t node)
 {
     const std::array<int, 3> n = nodeIndicesOfFlat(gridNodes_, node);
-    return live_.holds(n[0], n[1], n[2]) ? step_.data() + flatIndexInBox(live_, n[0], n[1], n[2]) * nQuantities
-                                         : nullptr;
+    return live_.holds(n[0], n[1], n[2])
+        ? step_.data() + flatIndexInBox(live_, n[0], n[1], n[2]) * nQuantities
+        : nullptr;
 }
 
 void StepValues::relayout(const IndexBox& grown)

@@ -160,8 +160,8 @@ void expectSameFields(const DensityGrid& live, const DensityGrid& dense)
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     for (int n = 0; n < 50; ++n)
     {
-        const Eigen::Vector3d point = spec.lower + (spec.upper - spec.lower).cwiseProduct(
-                                                       Eigen::Vector3d(unit(rng), unit(rng), unit(rng)));
+        const Eigen::Vector3d point = spec.lower
+            + (spec.upper - spec.lower).cwiseProduct(Eigen::Vector3d(unit(rng), unit(rng), unit(rng)));
         const CornerWeights corners = multilinearWeights(spec, point);
         std::array<double, nQuantities> x{}, y{};
         live.addOwnedCornerSums(corners, x);
@@ -211,7 +211,8 @@ std::vector<GridBlock> splitAt(const GridSpec& spec, int cut, bool live)
 
 // Deposits step s on a block: the parcels whose deposit reaches its owned nodes. The
 // expected live box follows each parcel's touched box (a dense probe's step box).
-void depositStep(DensityGrid& grid, const std::vector<Parcel>& parcels, DensityGrid* probe, IndexBox* expected)
+void depositStep(DensityGrid& grid, const std::vector<Parcel>& parcels, DensityGrid* probe,
+                 IndexBox* expected)
 {
     for (const Parcel& p : parcels)
     {
@@ -299,7 +300,8 @@ TEST_P(LiveBoxBlocks, SameAsDenseAndSized)
                            double sums[nQuantities];
                            std::fill(sums, sums + nQuantities, -1.0);
                            live[b].windowTotal(n, sums);
-                           ASSERT_TRUE(std::all_of(sums, sums + nQuantities, [](double v) { return v == 0.0; }));
+                           ASSERT_TRUE(
+                               std::all_of(sums, sums + nQuantities, [](double v) { return v == 0.0; }));
                        }
                    });
         EXPECT_EQ(static_cast<std::size_t>(outside), blocks[b].owned.nodeCount() - held.nodeCount());
