@@ -16,7 +16,7 @@ IndexBox grownLiveBox(const IndexBox& live, const IndexBox& touched, const Index
     IndexBox grown = joined;
     for (int d = 0; d < 3; ++d)
     {
-        const int margin = std::max(liveBoxMinimumMargin, (joined.hi[d] - joined.lo[d] + 1) / 4);
+        const int margin = std::max(liveBoxMinimumMargin, (joined.hi[d] - joined.lo[d] + 1) / 2);
         // Only the sides the touched box pushed out move (an empty live box: all of them)
         if (live.empty() || reached.lo[d] < live.lo[d])
         {

@@ -3,13 +3,16 @@
 // ahead of a spray that spreads (docs/scaleOut.md, memory per processor).
 //
 // Growth rule (grownLiveBox): where a box reaches nodes of the block outside the live
-// box, each side that must move goes past the union of the two by a margin of a quarter
-// of the union's extent in that direction (at least minimumMargin nodes), clipped to the
-// block; the sides that need not move stay. A spray that spreads by d nodes per step over
-// an extent L then regrows about every L / (4 d) steps, and each regrowth multiplies the
-// extent by up to 1.5: O(log) regrowths, each copying the values held, and the box stays
-// within 1.5 times the touched nodes' extent plus the margin per direction. A spray that
-// stays put costs nothing after its first step.
+// box, each side that must move goes past the union of the two by a margin of half the
+// union's extent in that direction (at least liveBoxMinimumMargin nodes), clipped to the
+// block; the sides that need not move stay. Why half: a regrowth re-allocates and copies
+// the W + 2 arrays of the whole live box (W + 1 times 56 bytes per node, the cost of a
+// window's fill), so the regrowths of a spray that spreads must grow the box
+// geometrically: each at least 1.5 times in the direction pushed, and all of them
+// together cost at most about 3 fills of the final live box (a quarter, 1.25 times per
+// regrowth, measured 5 fills: bench/scaleOut.sh -localised, 12 regrowths in 60 steps);
+// the box stays within 1.5 times the touched nodes' extent plus the margin per direction
+// pushed. A spray that stays put costs nothing after its first step.
 #pragma once
 
 #include "grid/GridSpec.hpp"

@@ -32,7 +32,7 @@ constexpr std::size_t bytesPerNode(int window)
 }
 
 // The rule of LiveBox.hpp in words: each side the touched nodes push out moves past the
-// union by max(2, extent / 4) of the union in that direction, clipped to the block.
+// union by max(2, extent / 2) of the union in that direction, clipped to the block.
 IndexBox expectedGrowth(const IndexBox& live, const IndexBox& touched, const IndexBox& block)
 {
     const IndexBox inside = touched.intersected(block);
@@ -44,7 +44,7 @@ IndexBox expectedGrowth(const IndexBox& live, const IndexBox& touched, const Ind
     const std::array<int, 3> extent = result.extents();
     for (int d = 0; d < 3; ++d)
     {
-        const int margin = extent[d] / 4 > 2 ? extent[d] / 4 : 2;
+        const int margin = extent[d] / 2 > 2 ? extent[d] / 2 : 2;
         if (live.empty() || inside.lo[d] < live.lo[d])
         {
             result.lo[d] = std::max(result.lo[d] - margin, block.lo[d]);
@@ -68,16 +68,17 @@ IndexBox box(std::array<int, 3> lo, std::array<int, 3> hi)
 TEST(LiveBox, GrowthRuleByHand)
 {
     const IndexBox block = box({{0, 0, 0}}, {{40, 30, 0}});
-    // Empty: 4 x 4 nodes, margins max(2, 1) = 2 on every side (the flat z clipped)
+    // Empty: 4 x 4 nodes, margins max(2, 4 / 2) = 2 on every side (the flat z clipped)
     const IndexBox first = grownLiveBox(IndexBox{}, box({{10, 5, 0}}, {{13, 8, 0}}), block);
     EXPECT_EQ(first, box({{8, 3, 0}}, {{15, 10, 0}}));
     // Inside: unchanged
     EXPECT_EQ(grownLiveBox(first, box({{9, 4, 0}}, {{15, 10, 0}}), block), first);
-    // Pushed out in +x only: the union is 8..31 (24 nodes), that side moves 6 past it
-    const IndexBox second = grownLiveBox(first, box({{28, 6, 0}}, {{31, 9, 0}}), block);
-    EXPECT_EQ(second, box({{8, 3, 0}}, {{37, 10, 0}}));
-    // Clipped to the block
-    EXPECT_EQ(grownLiveBox(second, box({{30, 0, 0}}, {{45, 2, 0}}), block), box({{8, 0, 0}}, {{40, 10, 0}}));
+    // Pushed out in +x only: the union is 8..23 (16 nodes), that side moves 8 past it
+    const IndexBox second = grownLiveBox(first, box({{20, 6, 0}}, {{23, 9, 0}}), block);
+    EXPECT_EQ(second, box({{8, 3, 0}}, {{31, 10, 0}}));
+    // Pushed in -y and +x: y 0..10 (11 nodes, margin 5, clipped at 0), x 8..34 (27, margin 13,
+    // clipped at 40)
+    EXPECT_EQ(grownLiveBox(second, box({{30, 0, 0}}, {{34, 2, 0}}), block), box({{8, 0, 0}}, {{40, 10, 0}}));
     // Outside the block: nothing
     EXPECT_EQ(grownLiveBox(second, box({{41, 0, 0}}, {{45, 2, 0}}), block), second);
 }
@@ -102,8 +103,8 @@ std::vector<Parcel> sprayOfStep(const GridSpec& spec, int s, bool separable)
         for (int d = 0; d < 3; ++d)
         {
             const double size = spec.upper[d] - spec.lower[d];
-            const double centre = d == 0 ? 0.15 + 0.09 * s : 0.4;
-            const double half = 0.03 + 0.035 * s;
+            const double centre = d == 0 ? 0.1 + 0.06 * s : 0.4;
+            const double half = 0.02 + 0.015 * s;
             p.position[d] = spec.flat(d) ? 0.5 * (spec.lower[d] + spec.upper[d])
                                          : spec.lower[d] + size * (centre + half * (2.0 * unit(rng) - 1.0));
             p.velocity[d] = spec.flat(d) ? 0.0 : 2.0 * (unit(rng) - 0.3);
