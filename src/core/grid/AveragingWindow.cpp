@@ -61,6 +61,7 @@ AveragingWindow::AveragingWindow(const std::array<int, 3>& gridNodes, const Inde
     const std::size_t size = live_.nodeCount() * static_cast<std::size_t>(nQuantities);
     slots_.resize(static_cast<std::size_t>(length));
     slotBoxes_.resize(static_cast<std::size_t>(length));
+    slotLayouts_.resize(static_cast<std::size_t>(length));
     total_.assign(size, 0.0);
     summedAt_.assign(size / static_cast<std::size_t>(nQuantities), -1);
 }
@@ -159,16 +160,21 @@ void AveragingWindow::push(const double* step, const IndexBox& stepRegion, const
     IndexBox evicted;
     const std::size_t slot = takeSlot(evicted);
     std::vector<double>& target = slots_[slot];
-    if (target.empty())
+    if (target.empty() || slotLayouts_[slot] != live_)
     {
+        // Not used yet, or laid out over an earlier live box
         target.assign(total_.size(), 0.0);
+        slotLayouts_[slot] = live_;
     }
-    forEachBoxRow(evicted,
-                  [&](std::size_t offset, std::size_t count)
-                  {
-                      std::fill(target.begin() + static_cast<std::ptrdiff_t>(offset),
-                                target.begin() + static_cast<std::ptrdiff_t>(offset + count), 0.0);
-                  });
+    else
+    {
+        forEachBoxRow(evicted,
+                      [&](std::size_t offset, std::size_t count)
+                      {
+                          std::fill(target.begin() + static_cast<std::ptrdiff_t>(offset),
+                                    target.begin() + static_cast<std::ptrdiff_t>(offset + count), 0.0);
+                      });
+    }
     const std::size_t q = static_cast<std::size_t>(nQuantities_);
     forEachRowIn(box, stepRegion,
                  [&](const IndexRow& row)
@@ -193,11 +199,16 @@ void AveragingWindow::pushSwappingUncleared(std::vector<double>& step, const Ind
     // The slot is zero outside the evicted step's box, or not allocated yet: it becomes
     // the caller's next step array, to be cleared over that box by the caller.
     slots_[slot].swap(step);
-    if (step.empty())
-    {
-        step.assign(total_.size(), 0.0);
-    }
+    const bool sameLayout = slotLayouts_[slot] == live_;
+    slotLayouts_[slot] = live_;
     dirty = toGrid(evicted);
+    if (step.empty() || !sameLayout)
+    {
+        // Not used yet, or laid out over an earlier live box (the live box grew since):
+        // a new array, zero everywhere
+        step.assign(total_.size(), 0.0);
+        dirty = IndexBox{};
+    }
     filledSlot(slot, toRegion(box), evicted);
 }
 
@@ -208,11 +219,7 @@ double AveragingWindow::newestStepValue(std::size_t node, int q) const
     {
         return 0.0;
     }
-    node = index;
-    // A slot is zero outside its box (push clears the evicted box, pushSwappingUncleared's
-    // caller does), so any node reads it.
-    const std::vector<double>& newest = slots_[slotIndex(filled_ - 1)];
-    return newest[node * static_cast<std::size_t>(nQuantities_) + static_cast<std::size_t>(q)];
+    return newestStepValueAt(gridIndicesOfLive(index), q);
 }
 
 const std::vector<double>& AveragingWindow::total() const
@@ -227,13 +234,21 @@ const std::vector<double>& AveragingWindow::total() const
 
 double AveragingWindow::newestStepValueAt(const std::array<int, 3>& node, int q) const
 {
-    std::size_t index = 0;
-    if (filled_ == 0 || !liveIndexAt(node, index))
+    // A slot is zero outside its box (push clears the evicted box, pushSwappingUncleared's
+    // caller does), so any node of its layout reads it; zero outside the layout.
+    if (filled_ == 0)
     {
         return 0.0;
     }
-    return slots_[slotIndex(filled_ - 1)]
-                 [index * static_cast<std::size_t>(nQuantities_) + static_cast<std::size_t>(q)];
+    const std::size_t newest = slotIndex(filled_ - 1);
+    const IndexBox& layout = slotLayouts_[newest];
+    if (!layout.holds(node[0], node[1], node[2]))
+    {
+        return 0.0;
+    }
+    return slots_[newest]
+                 [flatIndexInBox(layout, node[0], node[1], node[2]) * static_cast<std::size_t>(nQuantities_)
+                  + static_cast<std::size_t>(q)];
 }
 
 bool AveragingWindow::liveIndex(std::size_t node, std::size_t& index) const
@@ -291,7 +306,13 @@ void AveragingWindow::nodeTotalOfLive(std::size_t node, double* sums) const
         std::fill(total, total + q, 0.0);
         for (int age = 0; age < filled_; ++age)
         {
-            const double* slot = slots_[slotIndex(age)].data() + offset;
+            // A slot laid out over an earlier live box is zero outside it: adding that
+            // zero would change no sum (a total is never -0)
+            const double* slot = slotValuesAt(slotIndex(age), node);
+            if (slot == nullptr)
+            {
+                continue;
+            }
             for (std::size_t n = 0; n < q; ++n)
             {
                 total[n] += slot[n];
@@ -337,27 +358,81 @@ void AveragingWindow::prefetchNodeTotalOfLive(std::size_t node) const
     }
     for (int age = 0; age < filled_; ++age)
     {
-        request(slots_[slotIndex(age)].data() + offset);
+        const double* slot = slotValuesAt(slotIndex(age), node);
+        if (slot != nullptr)
+        {
+            request(slot);
+        }
     }
+}
+
+const double* AveragingWindow::slotValuesAt(std::size_t slot, std::size_t node) const
+{
+    const IndexBox& layout = slotLayouts_[slot];
+    if (layout == live_)
+    {
+        return slots_[slot].data() + node * static_cast<std::size_t>(nQuantities_);
+    }
+    const std::array<int, 3> n = gridIndicesOfLive(node);
+    return layout.holds(n[0], n[1], n[2]) ? slots_[slot].data()
+            + flatIndexInBox(layout, n[0], n[1], n[2]) * static_cast<std::size_t>(nQuantities_)
+                                          : nullptr;
+}
+
+std::array<int, 3> AveragingWindow::gridIndicesOfLive(std::size_t node) const
+{
+    const std::array<int, 3> n = nodeIndicesOfFlat(nodes_, node);
+    return {{n[0] + live_.lo[0], n[1] + live_.lo[1], n[2] + live_.lo[2]}};
 }
 
 void AveragingWindow::recomputeTotal(const IndexBox& box) const
 {
-    forEachBoxRow(box,
-                  [&](std::size_t offset, std::size_t count)
-                  {
-                      double* total = total_.data() + offset;
-                      std::fill(total, total + count, 0.0);
-                      // Oldest to newest: the same order in a continuous and a restored run.
-                      for (int age = 0; age < filled_; ++age)
-                      {
-                          const double* slot = slots_[slotIndex(age)].data() + offset;
-                          for (std::size_t n = 0; n < count; ++n)
-                          {
-                              total[n] += slot[n];
-                          }
-                      }
-                  });
+    const std::size_t q = static_cast<std::size_t>(nQuantities_);
+    forEachRow(box, nodes_,
+               [&](const IndexRow& row)
+               {
+                   double* total = total_.data() + row.first * q;
+                   std::fill(total, total + row.length * q, 0.0);
+                   // Oldest to newest: the same order in a continuous and a restored run.
+                   for (int age = 0; age < filled_; ++age)
+                   {
+                       const std::size_t s = slotIndex(age);
+                       // The row's part in the slot's layout (all of it unless the live box
+                       // grew since the slot was laid out: zero outside)
+                       std::size_t skip = 0;
+                       std::size_t count = row.length;
+                       const double* slot = slotRow(s, box.lo[0], row, skip, count);
+                       for (std::size_t n = 0; n < count * q; ++n)
+                       {
+                           total[skip * q + n] += slot[n];
+                       }
+                   }
+               });
+}
+
+const double* AveragingWindow::slotRow(std::size_t slot, int i, const IndexRow& row, std::size_t& skip,
+                                       std::size_t& count) const
+{
+    const IndexBox& layout = slotLayouts_[slot];
+    if (layout == live_)
+    {
+        return slots_[slot].data() + row.first * static_cast<std::size_t>(nQuantities_);
+    }
+    // Grid indices of the row: i .. i + length - 1 (live indices) at (j, k)
+    const int lo = i + live_.lo[0];
+    const int hi = lo + static_cast<int>(row.length) - 1;
+    const int j = row.j + live_.lo[1];
+    const int k = row.k + live_.lo[2];
+    const int from = std::max(lo, layout.lo[0]);
+    const int to = std::min(hi, layout.hi[0]);
+    if (j < layout.lo[1] || j > layout.hi[1] || k < layout.lo[2] || k > layout.hi[2] || from > to)
+    {
+        count = 0;
+        return nullptr;
+    }
+    skip = static_cast<std::size_t>(from - lo);
+    count = static_cast<std::size_t>(to - from + 1);
+    return slots_[slot].data() + flatIndexInBox(layout, from, j, k) * static_cast<std::size_t>(nQuantities_);
 }
 
 IndexBox AveragingWindow::box() const
@@ -404,16 +479,22 @@ WindowState AveragingWindow::save() const
         const IndexBox& b = slotBoxes_[slotIndex(age)];
         const IndexBox g = toGrid(b);
         state.counters.insert(state.counters.end(), {g.lo[0], g.lo[1], g.lo[2], g.hi[0], g.hi[1], g.hi[2]});
-        const std::vector<double>& slot = slots_[slotIndex(age)];
-        forEachBoxRow(b,
-                      [&](std::size_t offset, std::size_t count)
-                      {
-                          state.values.insert(state.values.end(),
-                                              slot.begin() + static_cast<std::ptrdiff_t>(offset),
-                                              slot.begin() + static_cast<std::ptrdiff_t>(offset + count));
-                      });
+        appendSlotValues(slotIndex(age), g, state.values);
     }
     return state;
+}
+
+void AveragingWindow::appendSlotValues(std::size_t slot, const IndexBox& box,
+                                       std::vector<double>& values) const
+{
+    const std::size_t q = static_cast<std::size_t>(nQuantities_);
+    const std::vector<double>& from = slots_[slot];
+    forEachRowIn(box, slotLayouts_[slot],
+                 [&](const IndexRow& row)
+                 {
+                     values.insert(values.end(), from.begin() + static_cast<std::ptrdiff_t>(row.first * q),
+                                   from.begin() + static_cast<std::ptrdiff_t>((row.first + row.length) * q));
+                 });
 }
 
 WindowState AveragingWindow::savePart(const IndexBox& part) const
@@ -433,14 +514,7 @@ WindowState AveragingWindow::savePart(const IndexBox& part) const
         const IndexBox kept = toGrid(slotBoxes_[slotIndex(age)]).intersected(part);
         const IndexBox g = kept.empty() ? IndexBox{} : kept;
         state.counters.insert(state.counters.end(), {g.lo[0], g.lo[1], g.lo[2], g.hi[0], g.hi[1], g.hi[2]});
-        const std::vector<double>& slot = slots_[slotIndex(age)];
-        forEachBoxRow(toRegion(g),
-                      [&](std::size_t offset, std::size_t count)
-                      {
-                          state.values.insert(state.values.end(),
-                                              slot.begin() + static_cast<std::ptrdiff_t>(offset),
-                                              slot.begin() + static_cast<std::ptrdiff_t>(offset + count));
-                      });
+        appendSlotValues(slotIndex(age), g, state.values);
     }
     return state;
 }
@@ -552,6 +626,7 @@ void AveragingWindow::restore(const WindowState& state)
         {
             std::vector<double>& slot = slots_[static_cast<std::size_t>(filled_)];
             slot.assign(total_.size(), 0.0);
+            slotLayouts_[static_cast<std::size_t>(filled_)] = live_;
             const IndexBox kept = boxes[s].intersected(region_);
             copySavedSlot(state.values.data() + position, boxes[s], kept, slot);
             slotBoxes_[static_cast<std::size_t>(filled_)] = kept.empty() ? IndexBox{} : toRegion(kept);
@@ -577,6 +652,7 @@ void AveragingWindow::clear(std::int64_t committed)
         summedAt_.clear();
     }
     std::fill(slotBoxes_.begin(), slotBoxes_.end(), IndexBox{});
+    std::fill(slotLayouts_.begin(), slotLayouts_.end(), IndexBox{});
     std::fill(total_.begin(), total_.end(), 0.0);
     head_ = 0;
     filled_ = 0;
@@ -613,17 +689,9 @@ void AveragingWindow::growLive(const IndexBox& box)
 void AveragingWindow::relayout(const IndexBox& grown)
 {
     const std::size_t q = static_cast<std::size_t>(nQuantities_);
-    const std::size_t size = grown.nodeCount() * q;
-    for (int age = 0; age < filled_; ++age)
-    {
-        // A slot is zero outside its step's box: that box is all there is to copy (the
-        // slots not in the window are not allocated yet)
-        const std::size_t s = slotIndex(age);
-        std::vector<double> moved(size, 0.0);
-        copyBoxValues(slots_[s].data(), live_, moved.data(), grown, toGrid(slotBoxes_[s]), q);
-        slots_[s].swap(moved);
-    }
-    std::vector<double> total(size, 0.0);
+    // The slots keep their layouts (read through slotLayouts_): each is laid out anew
+    // when it next takes a step, so a regrowth copies the total and stamps only
+    std::vector<double> total(grown.nodeCount() * q, 0.0);
     copyBoxValues(total_.data(), live_, total.data(), grown, live_, q);
     total_.swap(total);
     std::vector<std::int64_t> summedAt(grown.nodeCount(), -1);

@@ -38,9 +38,12 @@
 //
 // Live box (liveBox = true): slots, total and stamps cover only the part of the region
 // the pushed steps touched (liveBox(), empty at first; LiveBox.hpp), so that a block's
-// memory follows its spray, not its size. A push outside it grows it first (the values
-// held copied, unchanged); the other nodes of the region read as zero, which is what a
-// dense window holds there. Every value, and every sum's order, is the dense window's.
+// memory follows its spray, not its size. A push outside it grows it first: the total
+// and stamps are copied into the grown box; each slot keeps the layout of the live box it
+// was filled in until it takes a new step (then laid out over the grown box, as a slot is
+// allocated while the window fills), so a regrowth does not copy the W slots. The other
+// nodes read as zero, which is what a dense window holds there. Every value, and every
+// sum's order, is the dense window's.
 #pragma once
 
 #include "grid/GridSpec.hpp"
@@ -163,6 +166,18 @@ private:
     bool liveIndex(std::size_t node, std::size_t& index) const;
     bool liveIndexAt(const std::array<int, 3>& node, std::size_t& index) const;
     void nodeTotalOfLive(std::size_t index, double* sums) const;
+    std::array<int, 3> gridIndicesOfLive(std::size_t index) const;
+    // A slot's values of the node at live index `node`; nullptr outside the slot's layout
+    // (zero there).
+    const double* slotValuesAt(std::size_t slot, std::size_t node) const;
+    // The part of a row of the live box (its first node at live index i, row.j, row.k)
+    // inside the slot's layout: its values, `skip` nodes after the row's first, `count`
+    // nodes (0: none).
+    const double* slotRow(std::size_t slot, int i, const IndexRow& row, std::size_t& skip,
+                          std::size_t& count) const;
+    // The slot's values of the nodes of box (grid indices, inside its layout) appended, i
+    // fastest.
+    void appendSlotValues(std::size_t slot, const IndexBox& box, std::vector<double>& values) const;
     void prefetchNodeTotalOfLive(std::size_t index) const;
     // The arrays laid out over `grown` (holding the live box), the values copied.
     void relayout(const IndexBox& grown);
@@ -200,6 +215,9 @@ private:
     int length_;
     std::vector<std::vector<double>> slots_;
     std::vector<IndexBox> slotBoxes_;
+    // The box (grid indices) each slot's array is laid out over: the live box when it took
+    // its step (a regrowth leaves the slots as they are; push lays a slot out anew)
+    std::vector<IndexBox> slotLayouts_;
     int head_ = 0; // slot of the oldest step
     int filled_ = 0;
     std::int64_t committed_ = 0;
