@@ -62,7 +62,7 @@ AveragingWindow::AveragingWindow(const std::array<int, 3>& gridNodes, const Inde
     slots_.resize(static_cast<std::size_t>(length));
     slotBoxes_.resize(static_cast<std::size_t>(length));
     slotLayouts_.resize(static_cast<std::size_t>(length));
-    total_.assign(size, 0.0);
+    total_ = zeroedNodeValues(size);
     summedAt_.assign(size / static_cast<std::size_t>(nQuantities), -1);
 }
 
@@ -159,11 +159,11 @@ void AveragingWindow::push(const double* step, const IndexBox& stepRegion, const
     }
     IndexBox evicted;
     const std::size_t slot = takeSlot(evicted);
-    std::vector<double>& target = slots_[slot];
+    NodeValueArray& target = slots_[slot];
     if (target.empty() || slotLayouts_[slot] != live_)
     {
         // Not used yet, or laid out over an earlier live box
-        target.assign(total_.size(), 0.0);
+        target = zeroedNodeValues(total_.size());
         slotLayouts_[slot] = live_;
     }
     else
@@ -187,7 +187,7 @@ void AveragingWindow::push(const double* step, const IndexBox& stepRegion, const
     filledSlot(slot, toRegion(box), evicted);
 }
 
-void AveragingWindow::pushSwappingUncleared(std::vector<double>& step, const IndexBox& box, IndexBox& dirty)
+void AveragingWindow::pushSwappingUncleared(NodeValueArray& step, const IndexBox& box, IndexBox& dirty)
 {
     if (step.size() != total_.size())
     {
@@ -206,7 +206,7 @@ void AveragingWindow::pushSwappingUncleared(std::vector<double>& step, const Ind
     {
         // Not used yet, or laid out over an earlier live box (the live box grew since):
         // a new array, zero everywhere
-        step.assign(total_.size(), 0.0);
+        step = zeroedNodeValues(total_.size());
         dirty = IndexBox{};
     }
     filledSlot(slot, toRegion(box), evicted);
@@ -222,7 +222,7 @@ double AveragingWindow::newestStepValue(std::size_t node, int q) const
     return newestStepValueAt(gridIndicesOfLive(index), q);
 }
 
-const std::vector<double>& AveragingWindow::total() const
+const NodeValueArray& AveragingWindow::total() const
 {
     if (!staleBox_.empty())
     {
@@ -488,7 +488,7 @@ void AveragingWindow::appendSlotValues(std::size_t slot, const IndexBox& box,
                                        std::vector<double>& values) const
 {
     const std::size_t q = static_cast<std::size_t>(nQuantities_);
-    const std::vector<double>& from = slots_[slot];
+    const NodeValueArray& from = slots_[slot];
     forEachRowIn(box, slotLayouts_[slot],
                  [&](const IndexRow& row)
                  {
@@ -624,8 +624,8 @@ void AveragingWindow::restore(const WindowState& state)
     {
         if (s >= skip)
         {
-            std::vector<double>& slot = slots_[static_cast<std::size_t>(filled_)];
-            slot.assign(total_.size(), 0.0);
+            NodeValueArray& slot = slots_[static_cast<std::size_t>(filled_)];
+            slot = zeroedNodeValues(total_.size());
             slotLayouts_[static_cast<std::size_t>(filled_)] = live_;
             const IndexBox kept = boxes[s].intersected(region_);
             copySavedSlot(state.values.data() + position, boxes[s], kept, slot);
@@ -662,7 +662,7 @@ void AveragingWindow::clear(std::int64_t committed)
 }
 
 void AveragingWindow::copySavedSlot(const double* saved, const IndexBox& savedBox, const IndexBox& kept,
-                                    std::vector<double>& slot) const
+                                    NodeValueArray& slot) const
 {
     // The saved slot's values cover savedBox (i fastest); this window keeps the part in its
     // region (inside its live box), row by row.
@@ -691,7 +691,7 @@ void AveragingWindow::relayout(const IndexBox& grown)
     const std::size_t q = static_cast<std::size_t>(nQuantities_);
     // The slots keep their layouts (read through slotLayouts_): each is laid out anew
     // when it next takes a step, so a regrowth copies the total and stamps only
-    std::vector<double> total(grown.nodeCount() * q, 0.0);
+    NodeValueArray total = zeroedNodeValues(grown.nodeCount() * q);
     copyBoxValues(total_.data(), live_, total.data(), grown, live_, q);
     total_.swap(total);
     std::vector<std::int64_t> summedAt(grown.nodeCount(), -1);

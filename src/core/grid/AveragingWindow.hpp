@@ -47,6 +47,7 @@
 #pragma once
 
 #include "grid/GridSpec.hpp"
+#include "grid/NodeValueArray.hpp"
 
 #include <array>
 #include <cstdint>
@@ -108,7 +109,7 @@ public:
     // that is zero outside `dirty` (grid indices; empty: zero everywhere) and holds the
     // evicted step's values inside it: the caller zeroes that box before it accumulates
     // the next step there, and before it pushes the array again.
-    void pushSwappingUncleared(std::vector<double>& step, const IndexBox& box, IndexBox& dirty);
+    void pushSwappingUncleared(NodeValueArray& step, const IndexBox& box, IndexBox& dirty);
     // The block of the grid this window holds (grid indices).
     const IndexBox& region() const { return region_; }
     // The nodes its arrays cover (grid indices): region() for a dense window.
@@ -120,7 +121,7 @@ public:
 
     // The window total of every node of liveBox(), laid out over it (brings the stale box
     // up to date first).
-    const std::vector<double>& total() const;
+    const NodeValueArray& total() const;
     // The window total of one node (index in the region), nQuantities values into `sums`
     // (no full update); zero outside the live box.
     void nodeTotal(std::size_t node, double* sums) const;
@@ -195,7 +196,7 @@ private:
     std::vector<IndexBox> savedSlotBoxes(const WindowState& state) const;
     // The part `kept` of a saved slot whose values cover savedBox, into slot (this region).
     void copySavedSlot(const double* saved, const IndexBox& savedBox, const IndexBox& kept,
-                       std::vector<double>& slot) const;
+                       NodeValueArray& slot) const;
     bool boxHolds(const IndexBox& box, std::size_t node) const;
     template <class F>
     void forEachBoxRow(const IndexBox& box, F&& f) const;
@@ -213,7 +214,7 @@ private:
     std::array<int, 3> nodes_;       // of the live box (the arrays' indices: flatIndexInBox)
     int nQuantities_;
     int length_;
-    std::vector<std::vector<double>> slots_;
+    std::vector<NodeValueArray> slots_;
     std::vector<IndexBox> slotBoxes_;
     // The box (grid indices) each slot's array is laid out over: the live box when it took
     // its step (a regrowth leaves the slots as they are; push lays a slot out anew)
@@ -223,7 +224,7 @@ private:
     std::int64_t committed_ = 0;
     // total_ (over the live box) is a cache of the slots' sum, valid outside staleBox_, and inside it at the
     // nodes whose summedAt_ equals committed_ (summed by nodeTotal since the last push).
-    mutable std::vector<double> total_;
+    mutable NodeValueArray total_;
     mutable IndexBox staleBox_;
     mutable std::vector<std::int64_t> summedAt_;
 };

@@ -186,12 +186,12 @@ public:
     // data() anew after each commit. Writing through the non-const accessor (or
     // unpackStep) makes the step one that the deposit log cannot replay: saveWindow() then
     // saves node values until W deposited steps have followed.
-    std::vector<double>& stepValues()
+    NodeValueArray& stepValues()
     {
         log_.markIncomplete();
         return step_.values();
     }
-    const std::vector<double>& stepValues() const { return step_.values(); }
+    const NodeValueArray& stepValues() const { return step_.values(); }
     // The stored nodes the step touched (grid indices).
     IndexBox stepBox() const { return step_.touchedBox(); }
     // Copies the box's values (nQuantities per node, i fastest; the box inside the storage
@@ -214,7 +214,7 @@ public:
     std::int64_t committedSteps() const { return window_.committedSteps(); }
     // The window sums of the nodes of windowLiveBox() (the owned box for a dense block),
     // laid out over it; the other owned nodes' are zero.
-    const std::vector<double>& windowTotals() const { return window_.total(); }
+    const NodeValueArray& windowTotals() const { return window_.total(); }
     const IndexBox& windowLiveBox() const { return window_.liveBox(); }
     // The window's restart state: the deposit log of its steps (DepositLog, formats 3 and
     // 4), or its node values (AveragingWindow, formats 1 and 2): the smaller of the two

@@ -88,7 +88,7 @@ StepValues::StepValues(const std::array<int, 3>& gridNodes, const IndexBox& stor
     : gridNodes_(gridNodes), storage_(storage), tracksLive_(liveBox), live_(liveBox ? IndexBox{} : storage),
       storesWholeGrid_(wholeGrid(gridNodes, live_))
 {
-    step_.assign(live_.nodeCount() * nQuantities, 0.0);
+    step_ = zeroedNodeValues(live_.nodeCount() * nQuantities);
     rowPending_.assign(live_.empty() ? 0 : storageRow(0, live_.hi[2] - live_.lo[2] + 1), 0);
 }
 
@@ -104,7 +104,7 @@ void StepValues::relayout(const IndexBox& grown)
 {
     // The evicted step's rows zeroed first: the array then holds the step's values only
     clearPendingRows();
-    std::vector<double> moved(grown.nodeCount() * nQuantities, 0.0);
+    NodeValueArray moved = zeroedNodeValues(grown.nodeCount() * nQuantities);
     copyBoxValues(step_.data(), live_, moved.data(), grown, stepBox_, nQuantities);
     step_.swap(moved);
     live_ = grown;

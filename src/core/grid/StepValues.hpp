@@ -57,12 +57,12 @@ public:
     const IndexBox& touchedBox() const { return stepBox_; }
     // liveBox().nodeCount() * nQuantities doubles over the live box (flatIndexInBox),
     // zero outside touchedBox(); the pending rows cleared first.
-    std::vector<double>& values()
+    NodeValueArray& values()
     {
         clearPendingRows();
         return step_;
     }
-    const std::vector<double>& values() const
+    const NodeValueArray& values() const
     {
         clearPendingRows();
         return step_;
@@ -161,7 +161,7 @@ private:
     IndexBox live_;        // storage_ when !tracksLive_
     bool storesWholeGrid_; // flat node index = array index
     // mutable: the lazy clearing gives the same values, so const readers may clear first
-    mutable std::vector<double> step_;
+    mutable NodeValueArray step_;
     IndexBox stepBox_;
     mutable IndexBox dirty_;
     mutable std::vector<unsigned char> rowPending_;

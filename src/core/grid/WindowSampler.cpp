@@ -195,7 +195,7 @@ double WindowSampler::windowMassPerStep(const AveragingWindow& window) const
     double mass = 0.0;
     // Over the window's live box: the other owned nodes hold zero (the same sum, the
     // nodes in the same order)
-    const std::vector<double>& total = window.total();
+    const NodeValueArray& total = window.total();
     for (std::size_t n = 0; n < total.size() / nQuantities; ++n)
     {
         mass += total[n * nQuantities + quantityMass];
