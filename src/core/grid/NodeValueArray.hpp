@@ -1,21 +1,26 @@
 // NodeValueArray: the per-node arrays of a grid's step values and averaging window
 // (nQuantities doubles per node), zero when allocated without the array being written:
-// the memory comes from calloc, whose large blocks are fresh pages of the operating
-// system, zero already and given a physical page only when first touched. A window slot
-// or step array laid out over a block's live box (LiveBox.hpp) then costs the pages its
-// deposits touch, not the whole box: the window's fill follows the spray.
+// arrays of a megabyte or more are fresh anonymous pages of the operating system (mmap),
+// zero already and given a physical page only when first touched; smaller ones come from
+// calloc. (calloc alone would not do: glibc serves blocks below its mmap threshold, which
+// grows to 32 MB as such blocks are freed, from the heap, and zeroes all of them.) A
+// window slot or step array laid out over a block's live box (LiveBox.hpp) then costs
+// the pages its deposits touch, not the whole box: the window's fill follows the spray.
 #pragma once
 
 #include <algorithm>
 #include <cstddef>
 #include <cstdlib>
 #include <new>
+#include <utility>
+
+#include <sys/mman.h>
 #include <vector>
 
 namespace dropletFiber
 {
 
-// calloc'd storage; elements constructed without arguments are left as they are (zero).
+// Zeroed storage; elements constructed without arguments are left as they are (zero).
 template <class T>
 struct ZeroedAllocator
 {
@@ -27,14 +32,37 @@ struct ZeroedAllocator
     }
     T* allocate(std::size_t n)
     {
-        void* memory = std::calloc(n, sizeof(T));
+        const std::size_t bytes = n * sizeof(T);
+        void* memory = nullptr;
+        if (bytes >= pagesFrom)
+        {
+            memory = ::mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+            memory = memory == MAP_FAILED ? nullptr : memory;
+        }
+        else
+        {
+            memory = std::calloc(n, sizeof(T));
+        }
         if (memory == nullptr && n != 0)
         {
             throw std::bad_alloc();
         }
         return static_cast<T*>(memory);
     }
-    void deallocate(T* p, std::size_t) noexcept { std::free(p); }
+    void deallocate(T* p, std::size_t n) noexcept
+    {
+        const std::size_t bytes = n * sizeof(T);
+        if (bytes >= pagesFrom)
+        {
+            ::munmap(p, bytes);
+        }
+        else
+        {
+            std::free(p);
+        }
+    }
+    // Arrays from this size on are mapped pages of their own
+    static constexpr std::size_t pagesFrom = std::size_t(1) << 20;
     // Value-initialisation without a write: calloc's zero is the value
     template <class U>
     void construct(U* p) noexcept
