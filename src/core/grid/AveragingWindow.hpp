@@ -2,7 +2,8 @@
 // window [t_min, t_max] of eq. 26), and their total.
 //
 // Storage: a ring of W slots, each a full per-node array (GridQuantities layout), filled
-// as steps are committed (a slot is allocated when first used), plus the window total.
+// as steps are committed (a slot is allocated when first used, its pages zero until
+// touched: NodeValueArray), plus the window total.
 // Memory: (filled slots + 1) * nodes * nQuantities * 8 bytes, e.g. 56 bytes per node
 // and slot for the 7 quantities. Every slot is zero outside its step's box.
 //

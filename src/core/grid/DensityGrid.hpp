@@ -53,7 +53,8 @@
 // per owned node), and the window's 8-byte stamp: (W + 2) * 56 + 8 bytes per node for the
 // whole grid, e.g. 250 x 250 nodes, W = 10: 43 MB. A block with a live box
 // (GridBlock::live) holds these for the nodes of its live box only (storedNodes()): the
-// part of its owned box its deposits have reached, grown as they spread (LiveBox.hpp). The deposit log: 72 bytes per parcel deposited on the grid in each of the
+// part of its owned box its deposits have reached, grown as they spread (LiveBox.hpp);
+// the arrays' pages are resident only where written (NodeValueArray). The deposit log: 72 bytes per parcel deposited on the grid in each of the
 // W (+1) steps, e.g. 4,000 parcels per step, W = 10: 3.2 MB.
 // Time per parcel: ~ nodes within reach of its path (one erf-type evaluation each, or a
 // few multiplications with the separable tables).
