@@ -84,24 +84,38 @@ bool wholeGrid(const std::array<int, 3>& gridNodes, const IndexBox& box)
 
 } // namespace
 
-StepValues::StepValues(const std::array<int, 3>& gridNodes, const IndexBox& storage)
-    : gridNodes_(gridNodes), storage_(storage), storesWholeGrid_(wholeGrid(gridNodes, storage))
+StepValues::StepValues(const std::array<int, 3>& gridNodes, const IndexBox& storage, bool liveBox)
+    : gridNodes_(gridNodes), storage_(storage), tracksLive_(liveBox), live_(liveBox ? IndexBox{} : storage),
+      storesWholeGrid_(wholeGrid(gridNodes, live_))
 {
-    step_.assign(storage_.nodeCount() * nQuantities, 0.0);
-    rowPending_.assign(storageRow(0, storage_.hi[2] - storage_.lo[2] + 1), 0);
+    step_ = zeroedNodeValues(live_.nodeCount() * nQuantities);
+    rowPending_.assign(live_.empty() ? 0 : storageRow(0, live_.hi[2] - live_.lo[2] + 1), 0);
 }
 
 double* StepValues::valuesOfBlockNode(std::size_t node)
 {
     const std::array<int, 3> n = nodeIndicesOfFlat(gridNodes_, node);
-    return storage_.holds(n[0], n[1], n[2])
-        ? step_.data() + flatIndexInBox(storage_, n[0], n[1], n[2]) * nQuantities
+    return live_.holds(n[0], n[1], n[2])
+        ? step_.data() + flatIndexInBox(live_, n[0], n[1], n[2]) * nQuantities
         : nullptr;
+}
+
+void StepValues::relayout(const IndexBox& grown)
+{
+    // The evicted step's rows zeroed first: the array then holds the step's values only
+    clearPendingRows();
+    NodeValueArray moved = zeroedNodeValues(grown.nodeCount() * nQuantities);
+    copyBoxValues(step_.data(), live_, moved.data(), grown, stepBox_, nQuantities);
+    step_.swap(moved);
+    live_ = grown;
+    storesWholeGrid_ = wholeGrid(gridNodes_, live_);
+    rowPending_.assign(storageRow(0, live_.hi[2] - live_.lo[2] + 1), 0);
 }
 
 void StepValues::addListed(const NodeOmegas& nodes, double inverseSum, const ParcelTotals& totals,
                            const IndexBox& box)
 {
+    cover(box);
     clearPendingRowsOf(box); // the weighted nodes lie inside it
     if (storesWholeGrid_)
     {
@@ -140,18 +154,19 @@ std::size_t StepValues::addSeparable(SeparableWeight& rows, double inverseSum, c
 {
     // The stored part of the box only: no node list, no per-node index arithmetic (a block
     // evaluates only its part of a copy).
+    cover(box);
     const IndexBox stored = box.intersected(storage_);
     const auto first = static_cast<std::size_t>(stored.lo[0] - box.lo[0]);
     // The values of the row rowsAhead further in j (the next layer's at a layer's end: a
     // wasted request), requested while this one is added: rows of a few dozen nodes are too
     // short for the hardware's prefetcher, on grids beyond the caches.
     const std::size_t rowAhead
-        = rowsAhead * static_cast<std::size_t>(storage_.hi[0] - storage_.lo[0] + 1) * nQuantities;
-    forEachRowIn(stored, storage_,
+        = rowsAhead * static_cast<std::size_t>(live_.hi[0] - live_.lo[0] + 1) * nQuantities;
+    forEachRowIn(stored, live_,
                  [&](const IndexRow& row)
                  {
-                     const double* omega = rows.row(row.j + storage_.lo[1] - box.lo[1],
-                                                    row.k + storage_.lo[2] - box.lo[2], first, row.length);
+                     const double* omega = rows.row(row.j + live_.lo[1] - box.lo[1],
+                                                    row.k + live_.lo[2] - box.lo[2], first, row.length);
                      // First write into the row this step: the evicted step's values go
                      // (the row is being brought into cache by this parcel anyway)
                      const std::size_t rowIndex = storageRow(row.j, row.k);
@@ -174,13 +189,13 @@ void StepValues::pack(const IndexBox& box, double* values) const
 {
     checkStored(box, storage_, "packStep");
     clearPendingRowsOf(box);
-    forEachRowIn(box, storage_,
-                 [&](const IndexRow& row)
-                 {
-                     const double* first = step_.data() + row.first * nQuantities;
-                     std::copy(first, first + row.length * nQuantities,
-                               values + row.offsetInBox * nQuantities);
-                 });
+    const IndexBox held = box.intersected(live_);
+    if (held != box)
+    {
+        // The nodes outside the live box hold zero
+        std::fill(values, values + box.nodeCount() * nQuantities, 0.0);
+    }
+    copyBoxValues(step_.data(), live_, values, box, held, nQuantities);
 }
 
 void StepValues::unpack(const IndexBox& box, const double* values, std::size_t count)
@@ -194,8 +209,9 @@ void StepValues::unpack(const IndexBox& box, const double* values, std::size_t c
     {
         throw std::invalid_argument("DensityGrid::unpackStep: value count does not match the box");
     }
+    cover(box);
     clearPendingRowsOf(box); // the rows' parts outside the box keep the step's values
-    forEachRowIn(box, storage_,
+    forEachRowIn(box, live_,
                  [&](const IndexRow& row)
                  {
                      const double* first = values + row.offsetInBox * nQuantities;
@@ -209,6 +225,12 @@ void StepValues::commitTo(AveragingWindow& window, const IndexBox& owned)
 {
     if (storage_ == owned)
     {
+        // The same layout on both sides: each live box grown to their union
+        window.growLive(live_);
+        if (window.liveBox() != live_)
+        {
+            relayout(window.liveBox());
+        }
         // The array has the window's layout (serial runs; blocks of the function object
         // store their owned nodes only): it becomes the newest slot (zero outside stepBox_
         // once the rows no deposit reached are cleared) and the evicted slot the next array,
@@ -221,8 +243,8 @@ void StepValues::commitTo(AveragingWindow& window, const IndexBox& owned)
     }
     else
     {
-        window.push(step_.data(), storage_, stepBox_.intersected(owned));
-        forEachRowIn(stepBox_, storage_,
+        window.push(step_.data(), live_, stepBox_.intersected(owned));
+        forEachRowIn(stepBox_, live_,
                      [&](const IndexRow& row)
                      {
                          double* values = step_.data() + row.first * nQuantities;
@@ -234,7 +256,7 @@ void StepValues::commitTo(AveragingWindow& window, const IndexBox& owned)
 
 void StepValues::zeroPendingRow(std::size_t row) const
 {
-    const auto rowNodes = static_cast<std::size_t>(storage_.hi[0] - storage_.lo[0] + 1);
+    const auto rowNodes = static_cast<std::size_t>(live_.hi[0] - live_.lo[0] + 1);
     const auto dirtyNodes = static_cast<std::size_t>(dirty_.hi[0] - dirty_.lo[0] + 1);
     double* first = step_.data() + (row * rowNodes + static_cast<std::size_t>(dirty_.lo[0])) * nQuantities;
     std::fill(first, first + dirtyNodes * nQuantities, 0.0);
@@ -248,10 +270,10 @@ void StepValues::clearPendingRowsOf(const IndexBox& box) const
         return;
     }
     // The box's rows in storage indices, within the dirty rows
-    const int jLo = std::max(box.lo[1] - storage_.lo[1], dirty_.lo[1]);
-    const int jHi = std::min(box.hi[1] - storage_.lo[1], dirty_.hi[1]);
-    const int kLo = std::max(box.lo[2] - storage_.lo[2], dirty_.lo[2]);
-    const int kHi = std::min(box.hi[2] - storage_.lo[2], dirty_.hi[2]);
+    const int jLo = std::max(box.lo[1] - live_.lo[1], dirty_.lo[1]);
+    const int jHi = std::min(box.hi[1] - live_.lo[1], dirty_.hi[1]);
+    const int kLo = std::max(box.lo[2] - live_.lo[2], dirty_.lo[2]);
+    const int kHi = std::min(box.hi[2] - live_.lo[2], dirty_.hi[2]);
     for (int k = kLo; k <= kHi; ++k)
     {
         for (int j = jLo; j <= jHi; ++j)
@@ -290,8 +312,8 @@ void StepValues::markDirty(const IndexBox& dirty)
     }
     for (int d = 0; d < 3; ++d)
     {
-        dirty_.lo[d] = dirty.lo[d] - storage_.lo[d];
-        dirty_.hi[d] = dirty.hi[d] - storage_.lo[d];
+        dirty_.lo[d] = dirty.lo[d] - live_.lo[d];
+        dirty_.hi[d] = dirty.hi[d] - live_.lo[d];
     }
     for (int k = dirty_.lo[2]; k <= dirty_.hi[2]; ++k)
     {

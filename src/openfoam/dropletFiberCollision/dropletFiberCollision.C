@@ -164,7 +164,13 @@ void Foam::functionObjects::dropletFiberCollision::buildStatefulParts
             gridDict,
             [this]()
             {
-                return new dropletFiber::gridBlocks(mesh_, gridSettings_.spec);
+                // Live boxes with balanced blocks only: dense blocks deposit
+                // faster where the spray spreads (docs/scaleOut.md)
+                return new dropletFiber::gridBlocks
+                (
+                    mesh_, gridSettings_.spec,
+                    Pstream::parRun() && gridSettings_.balancedBlocks
+                );
             }
         )
     );

@@ -82,12 +82,14 @@ void appendParcel
 Foam::dropletFiber::gridBlocks::gridBlocks
 (
     const fvMesh& mesh,
-    const ::dropletFiber::GridSpec& spec
+    const ::dropletFiber::GridSpec& spec,
+    const bool liveBoxes
 )
 :
     spec_(spec),
     bisected_(false),
     balanced_(false),
+    liveBoxes_(liveBoxes),
     buffers_(Pstream::commsTypes::nonBlocking),
     outgoing_(Pstream::nProcs())
 {
@@ -176,7 +178,9 @@ Foam::dropletFiber::gridBlocks::exchangeLists
 
 ::dropletFiber::GridBlock Foam::dropletFiber::gridBlocks::block() const
 {
-    return {owned_, owned_};
+    // Live boxes: a block's memory, its window's fill and a window move
+    // follow the nodes its spray reaches, not its size
+    return {owned_, owned_, liveBoxes_};
 }
 
 

@@ -94,7 +94,7 @@ TEST(DepositedShare, LeavesTheStepAndItsStatisticsAlone)
     DensityGrid grid(spec, KernelSettings{}, 1);
     const std::vector<Parcel> parcels = randomParcels(spec, 20, 5);
     grid.deposit(parcels[1], 1e-3);
-    const std::vector<double> before = grid.stepValues();
+    const NodeValueArray before = grid.stepValues();
     const std::int64_t parcelsBefore = grid.stepStatistics().parcels;
     const DensityGrid::NodeFraction one = [](std::size_t) { return 1.0; };
     const DensityGrid::NodeBoxTest askAll = [](const IndexBox&) { return true; };

@@ -87,7 +87,7 @@ TEST(AveragingWindow, NodeTotalAndTotalAreTheChronologicalSumBitForBit)
         }
         if (step % 2 == 1)
         {
-            const std::vector<double>& total = window.total();
+            const NodeValueArray& total = window.total();
             for (std::size_t v = 0; v < total.size(); ++v)
             {
                 double expected = 0.0;
@@ -167,7 +167,7 @@ namespace
 {
 // The array pushSwappingUncleared hands back must be zero outside its dirty box (grid
 // indices); the caller then clears that box, as DensityGrid does row by row.
-void expectZeroOutsideThenClear(std::vector<double>& step, const IndexBox& region, const IndexBox& dirty)
+void expectZeroOutsideThenClear(NodeValueArray& step, const IndexBox& region, const IndexBox& dirty)
 {
     forEachRowIn(region, region,
                  [&](const IndexRow& row)
@@ -209,8 +209,8 @@ TEST(AveragingWindow, SwappedStepArraysGiveTheChronologicalSumBitForBit)
         const std::size_t regionValues = region.nodeCount() * nq;
         AveragingWindow window(nodes, region, nq, length);
         std::unique_ptr<AveragingWindow> restored;
-        std::vector<double> accumulator(regionValues, 0.0);
-        std::vector<double> restoredAccumulator(regionValues, 0.0);
+        NodeValueArray accumulator(regionValues, 0.0);
+        NodeValueArray restoredAccumulator(regionValues, 0.0);
         std::deque<std::vector<double>> history; // the last `length` steps, oldest first
         std::deque<IndexBox> boxes;              // their boxes
         std::mt19937 rng(31);
@@ -275,7 +275,7 @@ TEST(AveragingWindow, SwappedStepArraysGiveTheChronologicalSumBitForBit)
                         ASSERT_EQ(w->newestStepValue(n, static_cast<int>(q)), history.back()[n * nq + q]);
                     }
                 }
-                const std::vector<double>& total = w->total();
+                const NodeValueArray& total = w->total();
                 for (std::size_t v = 0; v < regionValues; ++v)
                 {
                     double expected = 0.0;

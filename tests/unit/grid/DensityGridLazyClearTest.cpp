@@ -144,7 +144,8 @@ void expectSameWindow(const DensityGrid& a, const DensityGrid& b, int step)
     EXPECT_EQ(differing, 0u) << "after step " << step;
 }
 
-std::size_t differingValues(const std::vector<double>& a, const std::vector<double>& b)
+template <class A, class B>
+std::size_t differingValues(const A& a, const B& b)
 {
     std::size_t differing = a.size() == b.size() ? 0 : 1;
     for (std::size_t n = 0; n < std::min(a.size(), b.size()); ++n)

@@ -35,7 +35,7 @@ double massOf(double n, double diameter, double rho)
 double stepMass(const DensityGrid& grid)
 {
     double m = 0.0;
-    const std::vector<double>& v = grid.stepValues();
+    const NodeValueArray& v = grid.stepValues();
     for (std::size_t n = 0; n < grid.spec().nodeCount(); ++n)
     {
         m += v[n * nQuantities + quantityMass];
@@ -179,7 +179,7 @@ TEST(DensityGrid, ParcelReachingNoNodeFallsBackToBilinearWeights)
     EXPECT_EQ(grid.stepStatistics().parcelsFallback, 1);
     const double mass = massOf(1.0, 2e-6, 1000.0);
     const double fx = 0.3, fy = 0.6; // position within the cell (10..11, 7..8) mm
-    const std::vector<double>& v = grid.stepValues();
+    const NodeValueArray& v = grid.stepValues();
     auto nodeMass = [&](int i, int j) { return v[spec.flatIndex(i, j, 0) * nQuantities + quantityMass]; };
     EXPECT_NEAR(nodeMass(10, 7), mass * (1 - fx) * (1 - fy), 1e-9 * mass);
     EXPECT_NEAR(nodeMass(11, 7), mass * fx * (1 - fy), 1e-9 * mass);
@@ -592,7 +592,7 @@ TEST(DensityGrid, CommittedStepsAreTheLastWStepArraysBitForBit)
     };
     DensityGrid grid(spec, KernelSettings{}, length);
     std::unique_ptr<DensityGrid> restored;
-    std::deque<std::vector<double>> history; // the last W step arrays, oldest first
+    std::deque<NodeValueArray> history; // the last W step arrays, oldest first
     for (int step = 0; step < 10; ++step)
     {
         for (DensityGrid* g : {&grid, restored.get()})
@@ -613,7 +613,7 @@ TEST(DensityGrid, CommittedStepsAreTheLastWStepArraysBitForBit)
             restored = std::make_unique<DensityGrid>(spec, KernelSettings{}, length);
             restored->restoreWindow(grid.saveWindow());
         }
-        std::vector<double> expected(history.back().size(), 0.0);
+        NodeValueArray expected(history.back().size(), 0.0);
         for (const auto& s : history)
             for (std::size_t v = 0; v < expected.size(); ++v)
                 expected[v] += s[v];

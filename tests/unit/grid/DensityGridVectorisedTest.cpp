@@ -213,7 +213,7 @@ TEST(DensityGridVectorised, PortablePathIsThePerNodeDeposit)
                 }
             }
             ASSERT_EQ(grid.stepStatistics().parcelsPartlyOutside, 0);
-            const std::vector<double>& values = grid.stepValues();
+            const NodeValueArray& values = grid.stepValues();
             for (std::size_t v = 0; v < values.size(); ++v)
             {
                 ASSERT_EQ(values[v], reference[v])

@@ -79,7 +79,8 @@ std::vector<double> assembledTotals(const GridSpec& spec, const Blocks& blocks)
     return totals;
 }
 
-void expectNear(const std::vector<double>& actual, const std::vector<double>& expected, double relative)
+template <class Expected>
+void expectNear(const std::vector<double>& actual, const Expected& expected, double relative)
 {
     ASSERT_EQ(actual.size(), expected.size());
     double largest = 0.0;
