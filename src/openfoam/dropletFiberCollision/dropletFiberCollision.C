@@ -164,13 +164,7 @@ void Foam::functionObjects::dropletFiberCollision::buildStatefulParts
             gridDict,
             [this]()
             {
-                // Live boxes with balanced blocks only: dense blocks deposit
-                // faster where the spray spreads (docs/scaleOut.md)
-                return new dropletFiber::gridBlocks
-                (
-                    mesh_, gridSettings_.spec,
-                    Pstream::parRun() && gridSettings_.balancedBlocks
-                );
+                return new dropletFiber::gridBlocks(mesh_, gridSettings_.spec);
             }
         )
     );
