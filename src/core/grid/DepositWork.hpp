@@ -3,11 +3,11 @@
 //
 // Two terms, on the tile lattice of a TileWork:
 // - Parcels: a parcel is evaluated in full (its kernel is normalised over its whole deposit
-//   box, DensityGrid::depositBox, eq. 24) by the processor holding it (deposit(), whatever
-//   its block) and by every other block its box meets (depositCopy()). Its work (the node
-//   weights of its box times the cost of one) is charged in full to its holder and to every
-//   other block its box meets; a parcel of no holder (holder -1) to the blocks its box
-//   meets only. Parcels are grouped by holder and the tiles their box meets, the work of a
+//   box, DensityGrid::depositBox, eq. 24) by every block its box meets (depositCopy(), and
+//   deposit() on its holder where the box meets the holder's block: StepDeposit::wants).
+//   Its work (the node weights of its box times the cost of one) is charged in full to
+//   every block its box meets, and to its holder besides where a holder is given (a
+//   holder that evaluates every parcel it holds; the function object gives none: -1). Parcels are grouped by holder and the tiles their box meets, the work of a
 //   group summed: blocks made of whole tiles meet a group exactly when they meet each of
 //   its parcels' boxes, so the grouping loses nothing for them, and the list is bounded by
 //   the distinct (holder, tile box) pairs, not by the parcels.

@@ -360,7 +360,8 @@ TEST(GridBlocks, HolderOutsideTheParcelsReachEvaluatesNoWeight)
     parcel.position = spec.lower + (spec.upper - spec.lower).cwiseProduct(Eigen::Vector3d(0.95, 0.95, 0.95));
     if (reached.lo[0] == 0 && reached.lo[1] == 0 && reached.lo[2] == 0)
     {
-        parcel.position = spec.lower + (spec.upper - spec.lower).cwiseProduct(Eigen::Vector3d(0.05, 0.05, 0.05));
+        parcel.position
+            = spec.lower + (spec.upper - spec.lower).cwiseProduct(Eigen::Vector3d(0.05, 0.05, 0.05));
     }
     const double dt = 1e-3;
     const IndexBox box = whole.depositBox(parcel, dt);
