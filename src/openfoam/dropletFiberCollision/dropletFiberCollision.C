@@ -13,6 +13,7 @@ Description
 
 #include "dropletFiberCollision.H"
 #include "dictionaryChecks.H"
+#include "grid/NodeValueArray.hpp"
 #include "dictionaryKeys.H"
 #include "collisionSettings.H"
 #include "plausibility.H"
@@ -170,6 +171,12 @@ void Foam::functionObjects::dropletFiberCollision::buildStatefulParts
     );
     // The blocks first: the memory check counts the largest block's nodes
     checkMemory(dict);
+    if (Pstream::parRun() && gridSettings_.balancedBlocks)
+    {
+        // Moved windows' pages resident at once, not touched in the steps
+        // after a move on the spray's blocks (NodeValueArray.hpp)
+        ::dropletFiber::populateNodeValuePages(true);
+    }
     grid_.reset
     (
         dropletFiber::checkedCoreCall
