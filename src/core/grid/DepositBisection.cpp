@@ -40,7 +40,38 @@ struct Cut
     int direction = -1;
     int layers = 0;     // tile layers of the box below the cut
     double score = 0.0; // max(lower / lowerParts, upper / upperParts)
+    // max over the sides of nodes / (parts x maxNodesPerPart): a cut within the cap <= 1
+    double overCap = 0.0;
+    // Within the cap before over it; then the lower score (or the lower excess).
+    bool betterThan(const Cut& other) const
+    {
+        if (direction < 0 || other.direction < 0)
+        {
+            return direction >= 0;
+        }
+        const bool within = overCap <= 1.0;
+        if (within != (other.overCap <= 1.0))
+        {
+            return within;
+        }
+        return within ? score < other.score : overCap < other.overCap;
+    }
 };
+
+// The node count of each tile layer of tileBox along d.
+std::vector<double> layerNodes(const TileWork& touched, const IndexBox& tileBox, int d)
+{
+    const std::array<int, 3> n = tileBox.extents();
+    std::vector<double> nodes(static_cast<std::size_t>(n[d]), 0.0);
+    for (int t = 0; t < n[d]; ++t)
+    {
+        IndexBox layer = tileBox;
+        layer.lo[d] = tileBox.lo[d] + t;
+        layer.hi[d] = tileBox.lo[d] + t;
+        nodes[static_cast<std::size_t>(t)] = static_cast<double>(touched.nodesOf(layer).nodeCount());
+    }
+    return nodes;
+}
 
 // The touched nodes' work of each tile layer of tileBox along d; the layers' node counts
 // where the box holds no work at all (then the cut evens the nodes).
@@ -72,7 +103,7 @@ std::vector<double> touchedLayers(const TileWork& touched, const IndexBox& tileB
 // lower(c) = the work the lower processors hold, plus the other groups starting below
 // layer c, plus the touched layers below; upper(c) likewise: prefix sums.
 Cut bestCutAlong(const Groups& groups, const std::vector<double>& held, const TileWork& touched,
-                 const IndexBox& tileBox, int d, const Processors& part)
+                 const IndexBox& tileBox, int d, const Processors& part, double maxNodesPerPart)
 {
     const int lowerParts = part.parts / 2;
     const Processors lowerSide{part.first, lowerParts};
@@ -106,14 +137,22 @@ Cut bestCutAlong(const Groups& groups, const std::vector<double>& held, const Ti
         upper += w;
     }
     double lower = heldBy(held, lowerSide);
+    const std::vector<double> nodes = layerNodes(touched, tileBox, d);
+    const double boxNodes = static_cast<double>(touched.nodesOf(tileBox).nodeCount());
+    double lowerNodes = 0.0;
     for (long c = 1; c <= last; ++c)
     {
         lower += startsIn[static_cast<std::size_t>(c - 1)];
         upper -= endsIn[static_cast<std::size_t>(c - 1)];
+        lowerNodes += nodes[static_cast<std::size_t>(c - 1)];
         const double score = std::max(lower / lowerSide.parts, upper / upperSide.parts);
-        if (c >= first && (best.direction < 0 || score < best.score))
+        const double overCap
+            = std::max(lowerNodes / lowerSide.parts, (boxNodes - lowerNodes) / upperSide.parts)
+            / maxNodesPerPart;
+        const Cut cut{d, static_cast<int>(c), score, overCap};
+        if (c >= first && cut.betterThan(best))
         {
-            best = Cut{d, static_cast<int>(c), score};
+            best = cut;
         }
     }
     return best;
@@ -136,7 +175,8 @@ Groups side(const Groups& groups, int d, int from, int to)
 }
 
 void bisectByDeposit(const Groups& groups, const std::vector<double>& held, const TileWork& touched,
-                     const IndexBox& tileBox, const Processors& part, std::vector<IndexBox>& boxes)
+                     const IndexBox& tileBox, const Processors& part, double maxNodesPerPart,
+                     std::vector<IndexBox>& boxes)
 {
     if (part.parts == 1)
     {
@@ -149,8 +189,8 @@ void bisectByDeposit(const Groups& groups, const std::vector<double>& held, cons
     Cut best;
     for (const int d : order)
     {
-        const Cut cut = bestCutAlong(groups, held, touched, tileBox, d, part);
-        if (cut.direction >= 0 && (best.direction < 0 || cut.score < best.score))
+        const Cut cut = bestCutAlong(groups, held, touched, tileBox, d, part, maxNodesPerPart);
+        if (cut.betterThan(best))
         {
             best = cut;
         }
@@ -169,15 +209,20 @@ void bisectByDeposit(const Groups& groups, const std::vector<double>& held, cons
     upper.lo[d] = cutAt;
     const int lowerParts = part.parts / 2;
     bisectByDeposit(side(groups, d, tileBox.lo[d], cutAt - 1), held, touched, lower,
-                    Processors{part.first, lowerParts}, boxes);
+                    Processors{part.first, lowerParts}, maxNodesPerPart, boxes);
     bisectByDeposit(side(groups, d, cutAt, tileBox.hi[d]), held, touched, upper,
-                    Processors{part.first + lowerParts, part.parts - lowerParts}, boxes);
+                    Processors{part.first + lowerParts, part.parts - lowerParts}, maxNodesPerPart, boxes);
 }
 
 } // namespace
 
-GridPartition GridPartition::depositBisection(const DepositWork& work, int parts)
+GridPartition GridPartition::depositBisection(const DepositWork& work, int parts, double maxNodesPerPart)
 {
+    if (!(maxNodesPerPart > 0.0))
+    {
+        throw std::invalid_argument("GridPartition::depositBisection: maxNodesPerPart must be positive, not "
+                                    + std::to_string(maxNodesPerPart));
+    }
     const TileWork& touched = work.touched();
     if (parts < 1 || static_cast<std::size_t>(parts) > touched.tileCount())
     {
@@ -197,7 +242,7 @@ GridPartition GridPartition::depositBisection(const DepositWork& work, int parts
     std::vector<IndexBox> boxes(static_cast<std::size_t>(parts));
     const std::array<int, 3>& t = touched.tiles();
     bisectByDeposit(groups, held, touched, IndexBox{{{0, 0, 0}}, {{t[0] - 1, t[1] - 1, t[2] - 1}}},
-                    Processors{0, parts}, boxes);
+                    Processors{0, parts}, maxNodesPerPart, boxes);
     return GridPartition(std::move(boxes));
 }
 

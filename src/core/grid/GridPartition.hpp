@@ -42,6 +42,7 @@
 #include "grid/GridSpec.hpp"
 
 #include <array>
+#include <limits>
 #include <cstddef>
 #include <vector>
 
@@ -65,8 +66,12 @@ public:
     // Recursive bisection of the grid into `parts` boxes (parts >= 1).
     static GridPartition bisection(const GridSpec& spec, int parts);
     // Recursive bisection by the steady deposit's work (above); parts >= 1 and at most the
-    // number of tiles (std::invalid_argument otherwise).
-    static GridPartition depositBisection(const DepositWork& work, int parts);
+    // number of tiles (std::invalid_argument otherwise). maxNodesPerPart: a cut must leave
+    // each side at most this many nodes per processor of it, so that a block's memory stays
+    // near 1/P where the spray is in a corner; where no cut of a box allows it (tile layers
+    // too coarse), the cut that exceeds it least.
+    static GridPartition depositBisection(const DepositWork& work, int parts,
+                                          double maxNodesPerPart = std::numeric_limits<double>::infinity());
 
     // True when the boxes are pairwise disjoint, inside the grid, and hold every node.
     bool tiles(const GridSpec& spec) const;

@@ -276,3 +276,29 @@ TEST(DepositBisection, GroupsSumParcelsOfTheSameTilesAndPartitionsAreDeterminist
     EXPECT_EQ(std::max(even.owned(0).nodeCount(), even.owned(1).nodeCount()), 600u);
     EXPECT_THROW(GridPartition::depositBisection(none, 126), std::invalid_argument);
 }
+
+TEST(DepositBisection, NodeCapKeepsEveryPartNearItsShareOfTheGrid)
+{
+    // The corner spray of above: by work alone the parts outside the corner are large
+    const std::array<int, 3> nodes{{48, 48, 48}};
+    const Spray spray = sprayIn(300, 5, 2, 18, 0.05, 3);
+    const DepositWork work = workOf(spray, nodes, 24);
+    const double gridNodes = 48.0 * 48.0 * 48.0;
+    for (const int parts : {2, 3, 4})
+    {
+        const double cap = 1.25 * gridNodes / parts;
+        std::size_t uncappedMost = 0;
+        for (const IndexBox& box : GridPartition::depositBisection(work, parts).boxes())
+        {
+            uncappedMost = std::max(uncappedMost, box.nodeCount());
+        }
+        EXPECT_GT(static_cast<double>(uncappedMost), cap) << parts;
+        const GridPartition capped = GridPartition::depositBisection(work, parts, cap);
+        ASSERT_TRUE(capped.tiles(gridOf(nodes))) << parts;
+        for (const IndexBox& box : capped.boxes())
+        {
+            EXPECT_LE(static_cast<double>(box.nodeCount()), cap) << parts;
+        }
+    }
+    EXPECT_THROW(GridPartition::depositBisection(work, 2, 0.0), std::invalid_argument);
+}
