@@ -13,8 +13,8 @@
 //   the distinct (holder, tile box) pairs, not by the parcels.
 // - Touched nodes: the window update of the nodes the steps touch, a cost per node,
 //   spread evenly over the nodes of a box (TileWork::addBox).
-// Every processor adds its parcels; the groups are gathered (addGroup, eight numbers each)
-// and summed in the same order on every processor, so that all make the same partition.
+// Every processor adds its parcels; the groups are gathered (addGroup: the function object
+// sends seven numbers each, the tile box and the work, no holder) and summed in the same order on every processor, so that all make the same partition.
 #pragma once
 
 #include "grid/GridSpec.hpp"

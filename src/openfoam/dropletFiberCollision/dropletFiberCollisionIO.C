@@ -185,8 +185,8 @@ void Foam::functionObjects::dropletFiberCollision::reportStep
 
 void Foam::functionObjects::dropletFiberCollision::writeParallelStatistics()
 {
-    // The grid nodes this processor stores (its block's live box: the owned
-    // nodes its deposits reached) and the fibers it holds
+    // The grid nodes this processor stores (its block) and the fibers it
+    // holds
     parallelStatistics_.holding(grid_->storedNodes(), held_.size());
     const dropletFiber::parallelStatistics::spread all =
         parallelStatistics_.overProcessors();

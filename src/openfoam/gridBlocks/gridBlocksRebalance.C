@@ -9,14 +9,16 @@ Description
     The steady deposit's work (DepositWork, docs/scaleOut.md): a parcel costs
     16 ns per node of its deposit box (DensityGrid::depositBox), charged in
     full to every block the box meets (each evaluates the whole kernel: eq.
-    24 normalises over it; the processor holding the parcel evaluates it only
-    where the box meets its own block, StepDeposit::wants), and a touched node 3.7 ns (its step values and window
-    update), the touched nodes taken as the nodes of the tiles in the
-    bounding box of all parcels' tiles. Tiles of the grid at most 64 per
-    direction; each processor sends its parcels grouped by their boxes'
-    tiles (eight numbers a group, at most one per parcel) to all through the
-    master, and every processor sums them in processor order: the same
-    groups, the same partition (GridPartition::depositBisection).
+    24 normalises over it; the processor holding the parcel evaluates it
+    only where the box meets its own block, StepDeposit::wants), and a
+    touched node 3.7 ns (its step values and window update), the touched
+    nodes taken as the nodes of the tiles in the bounding box of all
+    parcels' tiles. Tiles of the grid at most 64 per direction; each
+    processor sends its parcels grouped by their boxes' tiles (seven numbers
+    a group, at most one per parcel) to all through the master, and every
+    processor sums them in processor order: the same groups, the same
+    partition (GridPartition::depositBisection), each block at most 1.5
+    times its share of the nodes.
 
     Moving the windows: processor p sends processor q the node values of
     its window on the nodes of its old block inside q's new block, 56 bytes
@@ -143,10 +145,10 @@ void appendState
                     costPerNodeWeight*scalar(box.nodeCount())
                 );
             }
-            DynamicList<scalar> mine(8*label(local.groupCount()));
+            // Seven numbers a group: no holder is charged (-1 on receipt)
+            DynamicList<scalar> mine(7*label(local.groupCount()));
             for (const auto& group : local.groups())
             {
-                mine.append(scalar(group.holder));
                 for (int d = 0; d < 3; ++d)
                 {
                     mine.append(scalar(group.tiles.lo[d]));
@@ -177,15 +179,15 @@ void appendState
             forAll(sparse, proci)
             {
                 const scalarList& in = sparse[proci];
-                for (label i = 0; i + 7 < in.size(); i += 8)
+                for (label i = 0; i + 6 < in.size(); i += 7)
                 {
                     ::dropletFiber::IndexBox tiles;
                     for (int d = 0; d < 3; ++d)
                     {
-                        tiles.lo[d] = int(in[i + 1 + d]);
-                        tiles.hi[d] = int(in[i + 4 + d]);
+                        tiles.lo[d] = int(in[i + d]);
+                        tiles.hi[d] = int(in[i + 3 + d]);
                     }
-                    work.addGroup(tiles, int(in[i]), in[i + 7]);
+                    work.addGroup(tiles, -1, in[i + 6]);
                     touched = touched.united(tiles);
                 }
             }
