@@ -1,6 +1,6 @@
 // GridPartition::depositBisection: grid blocks of whole tiles sized by the steady deposit's
-// work (DepositWork): a side of a cut, given to processors S, does the work of every group
-// S holds plus every other group whose tiles meet it, in full.
+// work (DepositWork): a side of a cut does the work of every group whose tiles meet it, in
+// full, plus its touched nodes' work.
 #include "grid/DepositWork.hpp"
 #include "grid/GridPartition.hpp"
 
@@ -16,24 +16,12 @@ namespace
 
 using Groups = std::vector<DepositWork::ParcelGroup>;
 
-// The processors of a part, first to first + parts - 1, and the work each holds (all its
-// groups, wherever they lie).
+// The processors of a part, first to first + parts - 1.
 struct Processors
 {
     int first = 0;
     int parts = 1;
-    bool holds(int holder) const { return holder >= first && holder < first + parts; }
 };
-
-double heldBy(const std::vector<double>& held, const Processors& side)
-{
-    double sum = 0.0;
-    for (int p = side.first; p < side.first + side.parts; ++p)
-    {
-        sum += held[static_cast<std::size_t>(p)];
-    }
-    return sum;
-}
 
 struct Cut
 {
@@ -100,10 +88,10 @@ std::vector<double> touchedLayers(const TileWork& touched, const IndexBox& tileB
 }
 
 // The best cut of tileBox along d (direction -1: no cut leaves a tile to each processor).
-// lower(c) = the work the lower processors hold, plus the other groups starting below
-// layer c, plus the touched layers below; upper(c) likewise: prefix sums.
-Cut bestCutAlong(const Groups& groups, const std::vector<double>& held, const TileWork& touched,
-                 const IndexBox& tileBox, int d, const Processors& part, double maxNodesPerPart)
+// lower(c) = the groups starting below layer c plus the touched layers below; upper(c)
+// likewise: prefix sums.
+Cut bestCutAlong(const Groups& groups, const TileWork& touched, const IndexBox& tileBox, int d,
+                 const Processors& part, double maxNodesPerPart)
 {
     const int lowerParts = part.parts / 2;
     const Processors lowerSide{part.first, lowerParts};
@@ -122,21 +110,15 @@ Cut bestCutAlong(const Groups& groups, const std::vector<double>& held, const Ti
     std::vector<double> endsIn(layers);
     for (const DepositWork::ParcelGroup& g : groups)
     {
-        if (!lowerSide.holds(g.holder))
-        {
-            startsIn[static_cast<std::size_t>(g.tiles.lo[d] - tileBox.lo[d])] += g.work;
-        }
-        if (!upperSide.holds(g.holder))
-        {
-            endsIn[static_cast<std::size_t>(g.tiles.hi[d] - tileBox.lo[d])] += g.work;
-        }
+        startsIn[static_cast<std::size_t>(g.tiles.lo[d] - tileBox.lo[d])] += g.work;
+        endsIn[static_cast<std::size_t>(g.tiles.hi[d] - tileBox.lo[d])] += g.work;
     }
-    double upper = heldBy(held, upperSide);
+    double upper = 0.0;
     for (const double w : endsIn)
     {
         upper += w;
     }
-    double lower = heldBy(held, lowerSide);
+    double lower = 0.0;
     const std::vector<double> nodes = layerNodes(touched, tileBox, d);
     const double boxNodes = static_cast<double>(touched.nodesOf(tileBox).nodeCount());
     double lowerNodes = 0.0;
@@ -174,9 +156,8 @@ Groups side(const Groups& groups, int d, int from, int to)
     return out;
 }
 
-void bisectByDeposit(const Groups& groups, const std::vector<double>& held, const TileWork& touched,
-                     const IndexBox& tileBox, const Processors& part, double maxNodesPerPart,
-                     std::vector<IndexBox>& boxes)
+void bisectByDeposit(const Groups& groups, const TileWork& touched, const IndexBox& tileBox,
+                     const Processors& part, double maxNodesPerPart, std::vector<IndexBox>& boxes)
 {
     if (part.parts == 1)
     {
@@ -189,7 +170,7 @@ void bisectByDeposit(const Groups& groups, const std::vector<double>& held, cons
     Cut best;
     for (const int d : order)
     {
-        const Cut cut = bestCutAlong(groups, held, touched, tileBox, d, part, maxNodesPerPart);
+        const Cut cut = bestCutAlong(groups, touched, tileBox, d, part, maxNodesPerPart);
         if (cut.betterThan(best))
         {
             best = cut;
@@ -208,9 +189,9 @@ void bisectByDeposit(const Groups& groups, const std::vector<double>& held, cons
     lower.hi[d] = cutAt - 1;
     upper.lo[d] = cutAt;
     const int lowerParts = part.parts / 2;
-    bisectByDeposit(side(groups, d, tileBox.lo[d], cutAt - 1), held, touched, lower,
+    bisectByDeposit(side(groups, d, tileBox.lo[d], cutAt - 1), touched, lower,
                     Processors{part.first, lowerParts}, maxNodesPerPart, boxes);
-    bisectByDeposit(side(groups, d, cutAt, tileBox.hi[d]), held, touched, upper,
+    bisectByDeposit(side(groups, d, cutAt, tileBox.hi[d]), touched, upper,
                     Processors{part.first + lowerParts, part.parts - lowerParts}, maxNodesPerPart, boxes);
 }
 
@@ -230,18 +211,9 @@ GridPartition GridPartition::depositBisection(const DepositWork& work, int parts
                                     + std::to_string(touched.tileCount()) + " tiles, not "
                                     + std::to_string(parts));
     }
-    const Groups groups = work.groups();
-    std::vector<double> held(static_cast<std::size_t>(parts), 0.0);
-    for (const DepositWork::ParcelGroup& g : groups)
-    {
-        if (g.holder >= 0 && g.holder < parts)
-        {
-            held[static_cast<std::size_t>(g.holder)] += g.work;
-        }
-    }
     std::vector<IndexBox> boxes(static_cast<std::size_t>(parts));
     const std::array<int, 3>& t = touched.tiles();
-    bisectByDeposit(groups, held, touched, IndexBox{{{0, 0, 0}}, {{t[0] - 1, t[1] - 1, t[2] - 1}}},
+    bisectByDeposit(work.groups(), touched, IndexBox{{{0, 0, 0}}, {{t[0] - 1, t[1] - 1, t[2] - 1}}},
                     Processors{0, parts}, maxNodesPerPart, boxes);
     return GridPartition(std::move(boxes));
 }

@@ -8,7 +8,7 @@ DepositWork::DepositWork(const std::array<int, 3>& gridNodes, int maxTilesPerDir
 {
 }
 
-void DepositWork::addParcel(const IndexBox& depositBox, int holder, double work)
+void DepositWork::addParcel(const IndexBox& depositBox, double work)
 {
     const std::array<int, 3>& t = tiles();
     const IndexBox all = touched_.nodesOf(IndexBox{{{0, 0, 0}}, {{t[0] - 1, t[1] - 1, t[2] - 1}}});
@@ -24,20 +24,20 @@ void DepositWork::addParcel(const IndexBox& depositBox, int holder, double work)
         tileBox.lo[d] = nodes.lo[d] / size[d];
         tileBox.hi[d] = nodes.hi[d] / size[d];
     }
-    addGroup(tileBox, holder, work);
+    addGroup(tileBox, work);
 }
 
-void DepositWork::addGroup(const IndexBox& tiles, int holder, double work)
+void DepositWork::addGroup(const IndexBox& tiles, double work)
 {
-    groups_[{{holder, tiles.lo[0], tiles.lo[1], tiles.lo[2], tiles.hi[0], tiles.hi[1], tiles.hi[2]}}] += work;
+    groups_[{{tiles.lo[0], tiles.lo[1], tiles.lo[2], tiles.hi[0], tiles.hi[1], tiles.hi[2]}}] += work;
 }
 
 namespace
 {
 
-IndexBox tilesOfKey(const std::array<int, 7>& key)
+IndexBox tilesOfKey(const std::array<int, 6>& key)
 {
-    return IndexBox{{{key[1], key[2], key[3]}}, {{key[4], key[5], key[6]}}};
+    return IndexBox{{{key[0], key[1], key[2]}}, {{key[3], key[4], key[5]}}};
 }
 
 } // namespace
@@ -48,17 +48,17 @@ std::vector<DepositWork::ParcelGroup> DepositWork::groups() const
     out.reserve(groups_.size());
     for (const auto& [key, work] : groups_)
     {
-        out.push_back(ParcelGroup{tilesOfKey(key), key[0], work});
+        out.push_back(ParcelGroup{tilesOfKey(key), work});
     }
     return out;
 }
 
-double DepositWork::workOf(const IndexBox& block, int processor) const
+double DepositWork::workOf(const IndexBox& block) const
 {
     double work = block.empty() ? 0.0 : touched_.workIn(block);
     for (const auto& [key, w] : groups_)
     {
-        if (key[0] == processor || !touched_.nodesOf(tilesOfKey(key)).intersected(block).empty())
+        if (!touched_.nodesOf(tilesOfKey(key)).intersected(block).empty())
         {
             work += w;
         }

@@ -25,15 +25,14 @@
 // blocks; DepositWork, DepositBisection.cpp): the same recursion on a lattice of tiles
 // (TileWork), the lower part's processors first, each cut (any direction, any tile layer
 // leaving a tile per processor) minimising max(lower / lowerParts, upper / upperParts),
-// where a side's work is every parcel group its processors hold plus every other group
-// whose tiles meet it, in full (a parcel is evaluated by its holder and by each other block
-// its box reaches), plus its touched nodes' work. Bound, for groups of no holder: with L
+// where a side's work is every parcel group whose tiles meet it, in full (a parcel is
+// evaluated by each block its box reaches), plus its touched nodes' work. Bound: with L
 // the largest work of the groups meeting one tile layer plus that layer's touched work (any
 // direction, whole grid), some cut leaves each side within 2 L of its share, so every
 // part's work lies within W / P + 4.5 L, W = DepositWork::total() (4.5: the sum over the
 // levels of 2 L over the side's processors, 1, 2, 3, 5, 9, ...), while the tiles per part
-// do not constrain the cuts. With holders, a processor's held work is a floor no cut
-// moves. Deterministic: the same groups in the same order give the same boxes.
+// do not constrain the cuts. Deterministic: the same groups in the same order give the
+// same boxes.
 //
 // holdersOf(): the processors whose owned nodes a box of nodes meets (the blocks a
 // parcel's deposit reaches, DensityGrid::depositBox).

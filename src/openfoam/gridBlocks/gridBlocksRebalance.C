@@ -59,8 +59,7 @@ constexpr scalar worthMoving = 0.05;
 
 
 //- The busiest block's work and the mean over the blocks (each block's
-//  work: the parcels its processor holds and the copies of those its box
-//  meets)
+//  work: the parcels whose deposit boxes meet it, in full)
 std::pair<scalar, scalar> busiestAndMean
 (
     const ::dropletFiber::DepositWork& work,
@@ -71,7 +70,7 @@ std::pair<scalar, scalar> busiestAndMean
     scalar sum = 0;
     for (label p = 0; p < partition.processors(); ++p)
     {
-        const scalar w = work.workOf(partition.owned(p), p);
+        const scalar w = work.workOf(partition.owned(p));
         most = max(most, w);
         sum += w;
     }
@@ -136,16 +135,11 @@ void appendState
             for (const ::dropletFiber::Parcel& parcel : parcels)
             {
                 const ::dropletFiber::IndexBox box = grid.depositBox(parcel, dt);
-                // No holder: the holder weighs the parcel only where its
-                // box meets the holder's block, as any block
-                local.addParcel
-                (
-                    box,
-                    -1,
-                    costPerNodeWeight*scalar(box.nodeCount())
-                );
+                // The holder weighs the parcel only where its box meets
+                // the holder's block, as any block
+                local.addParcel(box, costPerNodeWeight*scalar(box.nodeCount()));
             }
-            // Seven numbers a group: no holder is charged (-1 on receipt)
+            // Seven numbers a group: the tile box and the work
             DynamicList<scalar> mine(7*label(local.groupCount()));
             for (const auto& group : local.groups())
             {
@@ -187,7 +181,7 @@ void appendState
                         tiles.lo[d] = int(in[i + d]);
                         tiles.hi[d] = int(in[i + 3 + d]);
                     }
-                    work.addGroup(tiles, -1, in[i + 6]);
+                    work.addGroup(tiles, in[i + 6]);
                     touched = touched.united(tiles);
                 }
             }

@@ -1,6 +1,6 @@
 // Grid blocks sized by the steady deposit's work: GridPartition::depositBisection on a
 // DepositWork. Each part's work is computed here by an explicit loop over the parcels (a
-// parcel in full to its holder and to every other part its deposit box meets) and the nodes
+// parcel in full to every part its deposit box meets) and the nodes
 // (touched work per node), not from the groups or the tiles; the cuts are compared with a
 // brute force over every cut of the box.
 #include "grid/DepositWork.hpp"
@@ -20,7 +20,6 @@ struct Spray
 {
     std::vector<IndexBox> boxes; // the parcels' deposit boxes (nodes)
     std::vector<double> work;    // each parcel's work
-    std::vector<int> holders;    // each parcel's holder (-1: none)
     double touchedPerNode = 0.0; // over each parcel's box, once per parcel
 };
 
@@ -34,10 +33,9 @@ GridSpec gridOf(const std::array<int, 3>& nodes)
 }
 
 // Parcels with boxes of `side` nodes a side, the lower corner uniform in [from, to] per
-// direction, held by processors uniform in [-1, holders - 1] (holders 0: none held).
-Spray sprayIn(int parcels, int side, int from, int to, double touchedPerNode, unsigned seed, int holders = 0)
+// direction.
+Spray sprayIn(int parcels, int side, int from, int to, double touchedPerNode, unsigned seed)
 {
-    std::uniform_int_distribution<int> holder(-1, holders - 1);
     std::mt19937 random(seed);
     std::uniform_int_distribution<int> corner(from, to);
     std::uniform_real_distribution<double> scale(0.5, 1.5);
@@ -53,7 +51,6 @@ Spray sprayIn(int parcels, int side, int from, int to, double touchedPerNode, un
         }
         spray.boxes.push_back(box);
         spray.work.push_back(scale(random) * static_cast<double>(box.nodeCount()));
-        spray.holders.push_back(holders > 0 ? holder(random) : -1);
     }
     return spray;
 }
@@ -63,21 +60,20 @@ DepositWork workOf(const Spray& spray, const std::array<int, 3>& nodes, int maxT
     DepositWork work(nodes, maxTiles);
     for (std::size_t p = 0; p < spray.boxes.size(); ++p)
     {
-        work.addParcel(spray.boxes[p], spray.holders[p], spray.work[p]);
+        work.addParcel(spray.boxes[p], spray.work[p]);
         work.addTouched(spray.boxes[p], spray.touchedPerNode);
     }
     return work;
 }
 
-// The work of processors first to last - 1 on a part, parcel by parcel and node by node.
-double partWork(const Spray& spray, const IndexBox& part, int first, int last)
+// The work on a part, parcel by parcel and node by node.
+double partWork(const Spray& spray, const IndexBox& part)
 {
     double work = 0.0;
     for (std::size_t p = 0; p < spray.boxes.size(); ++p)
     {
         const IndexBox common = spray.boxes[p].intersected(part);
-        const bool held = spray.holders[p] >= first && spray.holders[p] < last;
-        if (held || !common.empty())
+        if (!common.empty())
         {
             work += spray.work[p];
         }
@@ -86,16 +82,10 @@ double partWork(const Spray& spray, const IndexBox& part, int first, int last)
     return work;
 }
 
-double partWork(const Spray& spray, const IndexBox& part, int processor)
-{
-    return partWork(spray, part, processor, processor + 1);
-}
-
 // The smallest max(lower / lowerParts, upper / upperParts) over every cut of a box of tiles
-// given to processors first to first + parts - 1 (the lower part's first), each side
-// keeping a tile per processor, the sides' work by partWork.
-double bruteForceBestCut(const Spray& spray, const DepositWork& work, const IndexBox& tileBox, int first,
-                         int parts)
+// given to `parts` processors (the lower part's first), each side keeping a tile per
+// processor, the sides' work by partWork.
+double bruteForceBestCut(const Spray& spray, const DepositWork& work, const IndexBox& tileBox, int parts)
 {
     const int lowerParts = parts / 2;
     double best = 1e300;
@@ -112,10 +102,8 @@ double bruteForceBestCut(const Spray& spray, const DepositWork& work, const Inde
             {
                 continue;
             }
-            const double l
-                = partWork(spray, work.touched().nodesOf(lower), first, first + lowerParts) / lowerParts;
-            const double u = partWork(spray, work.touched().nodesOf(upper), first + lowerParts, first + parts)
-                / (parts - lowerParts);
+            const double l = partWork(spray, work.touched().nodesOf(lower)) / lowerParts;
+            const double u = partWork(spray, work.touched().nodesOf(upper)) / (parts - lowerParts);
             best = std::min(best, std::max(l, u));
         }
     }
@@ -145,41 +133,31 @@ IndexBox tileBoxOf(const DepositWork& work, const IndexBox& nodes)
 TEST(DepositBisection, TwoPartsTakeTheBestCutOfABruteForce)
 {
     const std::array<int, 3> nodes{{20, 16, 12}};
-    for (const int holders : {0, 2})
-    {
-        const Spray spray = sprayIn(60, 4, 0, 8, 0.3, 11, holders);
-        const DepositWork work = workOf(spray, nodes, 8);
-        const GridPartition partition = GridPartition::depositBisection(work, 2);
-        ASSERT_TRUE(partition.tiles(gridOf(nodes)));
-        const double most
-            = std::max(partWork(spray, partition.owned(0), 0), partWork(spray, partition.owned(1), 1));
-        EXPECT_NEAR(most, bruteForceBestCut(spray, work, tilesOf(work), 0, 2), 1e-9 * most) << holders;
-        // The groups' sum per block is the parcels' (blocks of whole tiles)
-        EXPECT_NEAR(work.workOf(partition.owned(1), 1), partWork(spray, partition.owned(1), 1), 1e-9 * most);
-    }
+    const Spray spray = sprayIn(60, 4, 0, 8, 0.3, 11);
+    const DepositWork work = workOf(spray, nodes, 8);
+    const GridPartition partition = GridPartition::depositBisection(work, 2);
+    ASSERT_TRUE(partition.tiles(gridOf(nodes)));
+    const double most = std::max(partWork(spray, partition.owned(0)), partWork(spray, partition.owned(1)));
+    EXPECT_NEAR(most, bruteForceBestCut(spray, work, tilesOf(work), 2), 1e-9 * most);
+    // The groups' sum per block is the parcels' (blocks of whole tiles)
+    EXPECT_NEAR(work.workOf(partition.owned(1)), partWork(spray, partition.owned(1)), 1e-9 * most);
 }
 
 TEST(DepositBisection, ThreePartsTakeTheBestCutAtEachLevel)
 {
     const std::array<int, 3> nodes{{18, 14, 10}};
-    for (const int holders : {0, 3})
-    {
-        const Spray spray = sprayIn(80, 3, 1, 7, 0.2, 5, holders);
-        const DepositWork work = workOf(spray, nodes, 7);
-        const GridPartition partition = GridPartition::depositBisection(work, 3);
-        ASSERT_TRUE(partition.tiles(gridOf(nodes)));
-        // First cut: processor 0 below, 1 and 2 above
-        const IndexBox upper = partition.owned(1).united(partition.owned(2));
-        ASSERT_EQ(upper.nodeCount(), partition.owned(1).nodeCount() + partition.owned(2).nodeCount());
-        const double first
-            = std::max(partWork(spray, partition.owned(0), 0), partWork(spray, upper, 1, 3) / 2.0);
-        EXPECT_NEAR(first, bruteForceBestCut(spray, work, tilesOf(work), 0, 3), 1e-9 * first) << holders;
-        // Second cut, inside the upper box
-        const double second
-            = std::max(partWork(spray, partition.owned(1), 1), partWork(spray, partition.owned(2), 2));
-        EXPECT_NEAR(second, bruteForceBestCut(spray, work, tileBoxOf(work, upper), 1, 2), 1e-9 * second)
-            << holders;
-    }
+    const Spray spray = sprayIn(80, 3, 1, 7, 0.2, 5);
+    const DepositWork work = workOf(spray, nodes, 7);
+    const GridPartition partition = GridPartition::depositBisection(work, 3);
+    ASSERT_TRUE(partition.tiles(gridOf(nodes)));
+    // First cut: processor 0 below, 1 and 2 above
+    const IndexBox upper = partition.owned(1).united(partition.owned(2));
+    ASSERT_EQ(upper.nodeCount(), partition.owned(1).nodeCount() + partition.owned(2).nodeCount());
+    const double first = std::max(partWork(spray, partition.owned(0)), partWork(spray, upper) / 2.0);
+    EXPECT_NEAR(first, bruteForceBestCut(spray, work, tilesOf(work), 3), 1e-9 * first);
+    // Second cut, inside the upper box
+    const double second = std::max(partWork(spray, partition.owned(1)), partWork(spray, partition.owned(2)));
+    EXPECT_NEAR(second, bruteForceBestCut(spray, work, tileBoxOf(work, upper), 2), 1e-9 * second);
 }
 
 TEST(DepositBisection, SprayInACornerOverFourPartsWithinTheBound)
@@ -198,10 +176,10 @@ TEST(DepositBisection, SprayInACornerOverFourPartsWithinTheBound)
             IndexBox layer = tilesOf(work);
             layer.lo[d] = t;
             layer.hi[d] = t;
-            largestLayer = std::max(largestLayer, partWork(spray, work.touched().nodesOf(layer), -1));
+            largestLayer = std::max(largestLayer, partWork(spray, work.touched().nodesOf(layer)));
         }
     }
-    const double total = partWork(spray, gridOf(nodes).fullBox(), -1);
+    const double total = partWork(spray, gridOf(nodes).fullBox());
     EXPECT_NEAR(work.total(), total, 1e-9 * total);
     for (const int parts : {2, 3, 4, 5, 7})
     {
@@ -211,7 +189,7 @@ TEST(DepositBisection, SprayInACornerOverFourPartsWithinTheBound)
         double sum = 0.0;
         for (int p = 0; p < parts; ++p)
         {
-            const double w = partWork(spray, partition.owned(p), p);
+            const double w = partWork(spray, partition.owned(p));
             EXPECT_LE(w, total / parts + 4.5 * largestLayer) << parts << " parts, part " << p;
             most = std::max(most, w);
             sum += w;
@@ -225,7 +203,7 @@ TEST(DepositBisection, SprayInACornerOverFourPartsWithinTheBound)
         double evenMost = 0.0;
         for (int p = 0; p < parts; ++p)
         {
-            evenMost = std::max(evenMost, partWork(spray, even.owned(p), p));
+            evenMost = std::max(evenMost, partWork(spray, even.owned(p)));
         }
         EXPECT_GT(evenMost / (total / parts), 1.5) << parts;
     }
@@ -236,29 +214,22 @@ TEST(DepositBisection, GroupsSumParcelsOfTheSameTilesAndPartitionsAreDeterminist
     const std::array<int, 3> nodes{{10, 10, 10}};
     DepositWork work(nodes, 5);
     // Tiles of 2 nodes: boxes 0..2 and 1..3 both meet tiles 0..1; 4..5 meets tile 2 only
-    work.addParcel(IndexBox{{{0, 0, 0}}, {{2, 2, 2}}}, 1, 1.0);
-    work.addParcel(IndexBox{{{1, 1, 1}}, {{3, 3, 3}}}, 1, 2.0);
-    work.addParcel(IndexBox{{{4, 4, 4}}, {{5, 5, 5}}}, 1, 4.0);
-    work.addParcel(IndexBox{{{1, 1, 1}}, {{3, 3, 3}}}, 0, 16.0);      // another holder: its own group
-    work.addParcel(IndexBox{{{11, 11, 11}}, {{12, 12, 12}}}, 1, 8.0); // outside: nothing
-    ASSERT_EQ(work.groupCount(), 3u);
+    work.addParcel(IndexBox{{{0, 0, 0}}, {{2, 2, 2}}}, 1.0);
+    work.addParcel(IndexBox{{{1, 1, 1}}, {{3, 3, 3}}}, 2.0);
+    work.addParcel(IndexBox{{{4, 4, 4}}, {{5, 5, 5}}}, 4.0);
+    work.addParcel(IndexBox{{{11, 11, 11}}, {{12, 12, 12}}}, 8.0); // outside: nothing
+    ASSERT_EQ(work.groupCount(), 2u);
     const std::vector<DepositWork::ParcelGroup> groups = work.groups();
-    EXPECT_EQ(groups[0].holder, 0);
-    EXPECT_DOUBLE_EQ(groups[0].work, 16.0);
-    EXPECT_EQ(groups[1].tiles, (IndexBox{{{0, 0, 0}}, {{1, 1, 1}}}));
-    EXPECT_EQ(groups[1].holder, 1);
-    EXPECT_DOUBLE_EQ(groups[1].work, 3.0);
-    EXPECT_EQ(groups[2].tiles, (IndexBox{{{2, 2, 2}}, {{2, 2, 2}}}));
-    EXPECT_DOUBLE_EQ(groups[2].work, 4.0);
-    // A gathered group adds to the same holder's and tiles'
-    work.addGroup(IndexBox{{{2, 2, 2}}, {{2, 2, 2}}}, 1, 0.5);
-    EXPECT_DOUBLE_EQ(work.groups()[2].work, 4.5);
-    // Processor 1's work on a block of tiles 3-4 (nodes 6-9) is all it holds; processor 0's
-    // its own group only
-    const IndexBox far{{{6, 0, 0}}, {{9, 9, 9}}};
-    EXPECT_DOUBLE_EQ(work.workOf(far, 1), 7.5);
-    EXPECT_DOUBLE_EQ(work.workOf(far, 0), 16.0);
-    EXPECT_DOUBLE_EQ(work.workOf(far, 2), 0.0);
+    EXPECT_EQ(groups[0].tiles, (IndexBox{{{0, 0, 0}}, {{1, 1, 1}}}));
+    EXPECT_DOUBLE_EQ(groups[0].work, 3.0);
+    EXPECT_EQ(groups[1].tiles, (IndexBox{{{2, 2, 2}}, {{2, 2, 2}}}));
+    EXPECT_DOUBLE_EQ(groups[1].work, 4.0);
+    // A gathered group adds to the same tiles'
+    work.addGroup(IndexBox{{{2, 2, 2}}, {{2, 2, 2}}}, 0.5);
+    EXPECT_DOUBLE_EQ(work.groups()[1].work, 4.5);
+    // A block of tiles 2-4 (nodes 4-9) meets the second group only; tiles 3-4 none
+    EXPECT_DOUBLE_EQ(work.workOf(IndexBox{{{4, 0, 0}}, {{9, 9, 9}}}), 4.5);
+    EXPECT_DOUBLE_EQ(work.workOf(IndexBox{{{6, 0, 0}}, {{9, 9, 9}}}), 0.0);
     const DepositWork copy = work;
     for (int parts = 1; parts <= 9; ++parts)
     {
