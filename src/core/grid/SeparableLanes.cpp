@@ -50,10 +50,9 @@ inline void rowBlocks(const double* rowFactor, int points, const double* factor,
 }
 
 // The last `remaining` (1-3) nodes from position i on: the same operations in a register
-// whose other lanes are masked when loading (not read; they hold 0), stored lane by lane
-// (a masked store is slow on some CPUs: AMD Zen).
-inline void rowTail(const double* rowFactor, int points, const double* factor, std::size_t stride,
-                    std::size_t i, std::size_t remaining, double* omega)
+// whose other lanes are masked when loading (not read; they hold 0).
+inline __m256d omegaOfLast(const double* rowFactor, int points, const double* factor, std::size_t stride,
+                           std::size_t i, std::size_t remaining)
 {
     const __m256i mask = _mm256_cmpgt_epi64(_mm256_set1_epi64x(static_cast<long long>(remaining)),
                                             _mm256_setr_epi64x(0, 1, 2, 3));
@@ -63,8 +62,16 @@ inline void rowTail(const double* rowFactor, int points, const double* factor, s
         const double* f = factor + static_cast<std::size_t>(q) * stride + i;
         sum = _mm256_fmadd_pd(_mm256_broadcast_sd(rowFactor + q), _mm256_maskload_pd(f, mask), sum);
     }
+    return sum;
+}
+
+// rowTail: those nodes' omega stored lane by lane (a masked store is slow on some CPUs: AMD
+// Zen).
+inline void rowTail(const double* rowFactor, int points, const double* factor, std::size_t stride,
+                    std::size_t i, std::size_t remaining, double* omega)
+{
     double lanes[4];
-    _mm256_storeu_pd(lanes, sum);
+    _mm256_storeu_pd(lanes, omegaOfLast(rowFactor, points, factor, stride, i, remaining));
     for (std::size_t lane = 0; lane < remaining; ++lane)
     {
         omega[i + lane] = lanes[lane];
@@ -139,29 +146,100 @@ inline void addLanes(__m256d weights, const __m256d* totals, double* values)
     _mm256_storeu_pd(values + 4 * r, _mm256_fmadd_pd(w, totals[r], _mm256_loadu_pd(values + 4 * r)));
 }
 
-void addWeightedRowInLanes(const double* omega, std::size_t length, double inverseSum, const double* totals,
-                           double* values)
+constexpr std::size_t q7 = SeparableLanes::quantities;
+static_assert(q7 == 7, "the lane pattern below is for 7 quantities");
+
+// Lane l of register r: totals[(4 r + l) % 7] (four nodes' 28 values).
+inline void totalsPattern(const double* totals, __m256d* pattern)
 {
-    constexpr std::size_t q7 = SeparableLanes::quantities;
-    static_assert(q7 == 7, "the lane pattern below is for 7 quantities");
-    __m256d pattern[q7]; // lane l of register r: totals[(4 r + l) % 7]
     for (std::size_t r = 0; r < q7; ++r)
     {
         pattern[r] = _mm256_setr_pd(totals[(4 * r) % q7], totals[(4 * r + 1) % q7], totals[(4 * r + 2) % q7],
                                     totals[(4 * r + 3) % q7]);
     }
+}
+
+// The four nodes' 28 values from `values` on, += weights (per node) times the totals.
+inline void addFourNodes(__m256d weights, const __m256d* pattern, double* values)
+{
+    addLanes<0>(weights, pattern, values);
+    addLanes<1>(weights, pattern, values);
+    addLanes<2>(weights, pattern, values);
+    addLanes<3>(weights, pattern, values);
+    addLanes<4>(weights, pattern, values);
+    addLanes<5>(weights, pattern, values);
+    addLanes<6>(weights, pattern, values);
+}
+
+// The last 1-3 nodes (their weights in the first lanes): the whole registers of values that
+// lie within the row (7 nodes' values fill 7 / 4 registers), the last 1-3 values by scalar
+// FMAs of the same rounding.
+inline void addLastNodes(__m256d weights, std::size_t nodes, const __m256d* pattern, const double* totals,
+                         double* values)
+{
+    const std::size_t whole = nodes * q7 / 4; // 1, 3 or 5
+    addLanes<0>(weights, pattern, values);
+    if (whole >= 3)
+    {
+        addLanes<1>(weights, pattern, values);
+        addLanes<2>(weights, pattern, values);
+    }
+    if (whole >= 5)
+    {
+        addLanes<3>(weights, pattern, values);
+        addLanes<4>(weights, pattern, values);
+    }
+    double weight[4];
+    _mm256_storeu_pd(weight, weights);
+    for (std::size_t m = 4 * whole; m < nodes * q7; ++m)
+    {
+        values[m] = _mm_cvtsd_f64(
+            _mm_fmadd_sd(_mm_set_sd(weight[m / q7]), _mm_set_sd(totals[m % q7]), _mm_set_sd(values[m])));
+    }
+}
+
+// omega of the 4 nodes from position i on: rowBlocks<1>'s operations.
+inline __m256d omegaOfFour(const double* rowFactor, int points, const double* factor, std::size_t stride,
+                           std::size_t i)
+{
+    __m256d sum = _mm256_mul_pd(_mm256_broadcast_sd(rowFactor), _mm256_loadu_pd(factor + i));
+    for (int q = 1; q < points; ++q)
+    {
+        const double* f = factor + static_cast<std::size_t>(q) * stride + i;
+        sum = _mm256_fmadd_pd(_mm256_broadcast_sd(rowFactor + q), _mm256_loadu_pd(f), sum);
+    }
+    return sum;
+}
+
+void addRowInLanes(const double* rowFactor, int points, const double* factor, std::size_t stride,
+                   std::size_t count, double inverseSum, const double* totals, double* values)
+{
+    __m256d pattern[q7];
+    totalsPattern(totals, pattern);
+    const __m256d scale = _mm256_set1_pd(inverseSum);
+    std::size_t i = 0;
+    for (; i + 4 <= count; i += 4, values += 4 * q7)
+    {
+        const __m256d omega = omegaOfFour(rowFactor, points, factor, stride, i);
+        addFourNodes(_mm256_mul_pd(omega, scale), pattern, values);
+    }
+    if (i < count)
+    {
+        const __m256d omega = omegaOfLast(rowFactor, points, factor, stride, i, count - i);
+        addLastNodes(_mm256_mul_pd(omega, scale), count - i, pattern, totals, values);
+    }
+}
+
+void addWeightedRowInLanes(const double* omega, std::size_t length, double inverseSum, const double* totals,
+                           double* values)
+{
+    __m256d pattern[q7];
+    totalsPattern(totals, pattern);
     const __m256d scale = _mm256_set1_pd(inverseSum);
     std::size_t i = 0;
     for (; i + 4 <= length; i += 4, values += 4 * q7)
     {
-        const __m256d weights = _mm256_mul_pd(_mm256_loadu_pd(omega + i), scale);
-        addLanes<0>(weights, pattern, values);
-        addLanes<1>(weights, pattern, values);
-        addLanes<2>(weights, pattern, values);
-        addLanes<3>(weights, pattern, values);
-        addLanes<4>(weights, pattern, values);
-        addLanes<5>(weights, pattern, values);
-        addLanes<6>(weights, pattern, values);
+        addFourNodes(_mm256_mul_pd(_mm256_loadu_pd(omega + i), scale), pattern, values);
     }
     for (; i < length; ++i, values += q7)
     {
@@ -207,6 +285,17 @@ void SeparableLanes::gaussianTable(const double* coordinate, std::size_t count, 
     avx2::gaussianTableInLanes(coordinate, count, centre, gamma, table);
 #else
     (void)coordinate, (void)count, (void)centre, (void)gamma, (void)table;
+#endif
+}
+
+void SeparableLanes::addRow(const double* rowFactor, int points, const double* factor, std::size_t stride,
+                            std::size_t count, double inverseSum, const double* totals, double* values)
+{
+#if DROPLETFIBER_BATCHED_KERNEL
+    avx2::addRowInLanes(rowFactor, points, factor, stride, count, inverseSum, totals, values);
+#else
+    (void)rowFactor, (void)points, (void)factor, (void)stride, (void)count, (void)inverseSum, (void)totals,
+        (void)values;
 #endif
 }
 

@@ -9,7 +9,11 @@
 //                      branch-free exp (BranchFreeExp.hpp, within 1.01 ulp) instead of a
 //                      libm call per entry;
 //  - addWeightedRow(): node i's 7 accumulator values += omega[i] inverseSum totals[q],
-//                      four nodes' 28 values as 7 registers.
+//                      four nodes' 28 values as 7 registers;
+//  - addRow():         both for one row, omega in registers (no call and no store of omega
+//                      per row; the last 1-3 nodes' values in whole registers where they
+//                      fill one): the deposit's rows of wide kernels, whose boxes are rows
+//                      of ~10 nodes at 2 mm.
 //
 // Each value's arithmetic is the same whatever its position in the row, so a part of a row
 // gives the same values, to the bit, as those positions of the whole row (grid blocks hold
@@ -47,6 +51,12 @@ struct SeparableLanes
     // table[i] = exp(-gamma (coordinate[i] - centre)^2) for i < count.
     static void gaussianTable(const double* coordinate, std::size_t count, double centre, double gamma,
                               double* table);
+
+    // row() and addWeightedRow() in one pass, omega kept in registers: values[quantities i + q]
+    // += (omega[i] inverseSum) totals[q] for i < count, q < 7, omega[i] as row() gives it:
+    // the same values to the bit as row() then addWeightedRow().
+    static void addRow(const double* rowFactor, int points, const double* factor, std::size_t stride,
+                       std::size_t count, double inverseSum, const double* totals, double* values);
 
     // values[quantities i + q] += (omega[i] inverseSum) totals[q] for i < length, q < 7.
     static void addWeightedRow(const double* omega, std::size_t length, double inverseSum,

@@ -195,10 +195,9 @@ const double* SeparableWeight::row(int j, int k)
     return row(j, k, 0, length_[0]);
 }
 
-const double* SeparableWeight::row(int j, int k, std::size_t first, std::size_t count)
+void SeparableWeight::setRowFactors(int j, int k, std::size_t first, std::size_t count)
 {
-    const std::size_t n = length_[0];
-    if (first + count > n || static_cast<std::size_t>(j) >= length_[1]
+    if (first + count > length_[0] || static_cast<std::size_t>(j) >= length_[1]
         || static_cast<std::size_t>(k) >= length_[2])
     {
         throw std::out_of_range("SeparableWeight::row: a row or positions beyond the box");
@@ -207,13 +206,20 @@ const double* SeparableWeight::row(int j, int k, std::size_t first, std::size_t 
     {
         prepareRows();
     }
+    // (W_q Y_q(j)) Z_q(k): the first product kept per j (prepareRows)
     const auto points = static_cast<std::size_t>(points_);
-    const double* y = pointMajor_[0].data() + static_cast<std::size_t>(j) * points;
+    const double* weightedY = pointMajor_[0].data() + static_cast<std::size_t>(j) * points;
     const double* z = pointMajor_[1].data() + static_cast<std::size_t>(k) * points;
     for (std::size_t q = 0; q < points; ++q)
     {
-        rowFactor_[q] = weight_[q] * y[q] * z[q];
+        rowFactor_[q] = weightedY[q] * z[q];
     }
+}
+
+const double* SeparableWeight::row(int j, int k, std::size_t first, std::size_t count)
+{
+    setRowFactors(j, k, first, count);
+    const std::size_t n = length_[0];
     // sum_q W_q X_q(i) Y_q(j) Z_q(k): one multiply-add per node and point.
     double* omega = rowOmega_.data();
     if (lanes_)
@@ -237,6 +243,18 @@ const double* SeparableWeight::row(int j, int k, std::size_t first, std::size_t 
         }
     }
     return omega;
+}
+
+void SeparableWeight::addRowInLanes(int j, int k, std::size_t first, std::size_t count, double inverseSum,
+                                    const double* totals, double* values)
+{
+    if (!lanes_)
+    {
+        throw std::logic_error("SeparableWeight::addRowInLanes: the tables are not in lanes");
+    }
+    setRowFactors(j, k, first, count);
+    SeparableLanes::addRow(rowFactor_.data(), points_, factor_[0].data() + first, length_[0], count, inverseSum,
+                           totals, values);
 }
 
 double SeparableTables::omega(int i, int j, int k) const
@@ -315,13 +333,15 @@ void SeparableWeight::prepareRows()
     const auto points = static_cast<std::size_t>(points_);
     for (std::size_t d = 1; d < 3; ++d)
     {
+        // y weighted: W_q Y_q(j), the row factor's first product (row())
         std::vector<double>& to = pointMajor_[d - 1];
         to.resize(length_[d] * points);
         for (std::size_t q = 0; q < points; ++q)
         {
+            const double* from = factor_[d].data() + q * length_[d];
             for (std::size_t i = 0; i < length_[d]; ++i)
             {
-                to[i * points + q] = factor_[d][q * length_[d] + i];
+                to[i * points + q] = d == 1 ? weight_[q] * from[i] : from[i];
             }
         }
     }

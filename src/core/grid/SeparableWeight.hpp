@@ -125,6 +125,12 @@ public:
     // The same for the `count` nodes from position `first` of the row on (a block's stored
     // part of it): the same values, to the bit, as those positions of row(j, k).
     const double* row(int j, int k, std::size_t first, std::size_t count);
+    // Adds omega inverseSum totals[q] to the 7 values of each of those nodes (values: the
+    // first node's, 7 per node, contiguous), as row() then SeparableLanes::addWeightedRow
+    // give them, to the bit, without storing omega (SeparableLanes::addRow). Only where
+    // vectorised() (std::logic_error otherwise).
+    void addRowInLanes(int j, int k, std::size_t first, std::size_t count, double inverseSum,
+                       const double* totals, double* values);
     // omega of the one node (i, j, k) of the (folded) box, positions relative to its lower
     // corner: row()'s arithmetic in row()'s order, so the same value to the bit, at Q
     // multiply-adds (depletion's sums over a few nodes, DensityGrid::depositedShare).
@@ -150,6 +156,8 @@ private:
     // The row's working memory and pointMajor_ for the present tables, once per prepare() (or
     // fold()), at the first row(): not twice for a folded kernel.
     void prepareRows();
+    // rowFactor_ of row (j, k) (std::out_of_range beyond the box), the rows prepared.
+    void setRowFactors(int j, int k, std::size_t first, std::size_t count);
 
     bool lanes_; // vectorised()
     int points_ = 0;
@@ -159,7 +167,7 @@ private:
     std::array<double, maximumPoints> tau_{};    // Gauss-Legendre points in [0, 1]
     std::array<double, maximumPoints> weight_{}; // their weights, summing to 1
     // The y and z tables point-major (index i of axis d at [i Q + q]), so that a row's Q
-    // factors W_q Y_q(j) Z_q(k) are read contiguously (per row, not per node).
+    // factors W_q Y_q(j) Z_q(k) are read contiguously (per row, not per node); y times W_q.
     std::array<std::vector<double>, 2> pointMajor_;
     bool rowsPrepared_ = false;
     std::array<double, maximumPoints> rowFactor_{};

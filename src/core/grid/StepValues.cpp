@@ -165,8 +165,8 @@ std::size_t StepValues::addSeparable(SeparableWeight& rows, double inverseSum, c
     forEachRowIn(stored, live_,
                  [&](const IndexRow& row)
                  {
-                     const double* omega = rows.row(row.j + live_.lo[1] - box.lo[1],
-                                                    row.k + live_.lo[2] - box.lo[2], first, row.length);
+                     const int j = row.j + live_.lo[1] - box.lo[1];
+                     const int k = row.k + live_.lo[2] - box.lo[2];
                      // First write into the row this step: the evicted step's values go
                      // (the row is being brought into cache by this parcel anyway)
                      const std::size_t rowIndex = storageRow(row.j, row.k);
@@ -179,7 +179,14 @@ std::size_t StepValues::addSeparable(SeparableWeight& rows, double inverseSum, c
                      {
                          prefetchRow(values + rowAhead, row.length);
                      }
-                     addWeightedRow(omega, row.length, inverseSum, totals, values, inLanes);
+                     if (inLanes && rows.vectorised())
+                     {
+                         // omega in registers: the same values as row() then addWeightedRow()
+                         rows.addRowInLanes(j, k, first, row.length, inverseSum, totals.data(), values);
+                         return;
+                     }
+                     addWeightedRow(rows.row(j, k, first, row.length), row.length, inverseSum, totals, values,
+                                    inLanes);
                  });
     touch(box); // the stored part of it
     return stored.empty() ? 0 : stored.nodeCount();
