@@ -211,12 +211,11 @@ inline __m256d omegaOfFour(const double* rowFactor, int points, const double* fa
     return sum;
 }
 
-void addRowInLanes(const double* rowFactor, int points, const double* factor, std::size_t stride,
-                   std::size_t count, double inverseSum, const double* totals, double* values)
+// One row of addRows: omega of 4 nodes at a time, then their 28 values.
+inline void addRowWith(const double* rowFactor, int points, const double* factor, std::size_t stride,
+                       std::size_t count, __m256d scale, const __m256d* pattern, const double* totals,
+                       double* values)
 {
-    __m256d pattern[q7];
-    totalsPattern(totals, pattern);
-    const __m256d scale = _mm256_set1_pd(inverseSum);
     std::size_t i = 0;
     for (; i + 4 <= count; i += 4, values += 4 * q7)
     {
@@ -227,6 +226,38 @@ void addRowInLanes(const double* rowFactor, int points, const double* factor, st
     {
         const __m256d omega = omegaOfLast(rowFactor, points, factor, stride, i, count - i);
         addLastNodes(_mm256_mul_pd(omega, scale), count - i, pattern, totals, values);
+    }
+}
+
+void addRowsInLanes(const SeparableLanes::BoxRows& box, double inverseSum, const double* totals)
+{
+    __m256d pattern[q7];
+    totalsPattern(totals, pattern);
+    const __m256d scale = _mm256_set1_pd(inverseSum);
+    const auto points = static_cast<std::size_t>(box.points);
+    const std::size_t rowValues = box.count * q7;
+    double rowFactor[SeparableLanes::maximumPoints];
+    for (std::size_t k = 0; k < box.layers; ++k)
+    {
+        const double* z = box.z + k * points;
+        for (std::size_t j = 0; j < box.rows; ++j)
+        {
+            const double* weightedY = box.weightedY + j * points;
+            for (std::size_t q = 0; q < points; ++q)
+            {
+                rowFactor[q] = weightedY[q] * z[q];
+            }
+            const std::size_t offset = k * box.layerStride + j * box.rowStride;
+            if (offset + box.prefetchAhead + rowValues <= box.available)
+            {
+                for (std::size_t m = 0; m < rowValues; m += 8) // 64-byte lines
+                {
+                    __builtin_prefetch(box.values + offset + box.prefetchAhead + m, 1);
+                }
+            }
+            addRowWith(rowFactor, box.points, box.factor, box.stride, box.count, scale, pattern, totals,
+                       box.values + offset);
+        }
     }
 }
 
@@ -288,14 +319,12 @@ void SeparableLanes::gaussianTable(const double* coordinate, std::size_t count, 
 #endif
 }
 
-void SeparableLanes::addRow(const double* rowFactor, int points, const double* factor, std::size_t stride,
-                            std::size_t count, double inverseSum, const double* totals, double* values)
+void SeparableLanes::addRows(const BoxRows& box, double inverseSum, const double* totals)
 {
 #if DROPLETFIBER_BATCHED_KERNEL
-    avx2::addRowInLanes(rowFactor, points, factor, stride, count, inverseSum, totals, values);
+    avx2::addRowsInLanes(box, inverseSum, totals);
 #else
-    (void)rowFactor, (void)points, (void)factor, (void)stride, (void)count, (void)inverseSum, (void)totals,
-        (void)values;
+    (void)box, (void)inverseSum, (void)totals;
 #endif
 }
 

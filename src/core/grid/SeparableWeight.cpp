@@ -74,6 +74,9 @@ const BoundTerms& boundTerms()
 
 } // namespace
 
+static_assert(SeparableWeight::maximumPoints == SeparableLanes::maximumPoints,
+              "SeparableLanes::addRows holds a row's factors for every Q SeparableWeight takes");
+
 SeparableWeight::SeparableWeight(bool vectorised) : lanes_(vectorised && SeparableLanes::available()) {}
 
 double SeparableWeight::quadratureBound(int points, double k)
@@ -245,16 +248,30 @@ const double* SeparableWeight::row(int j, int k, std::size_t first, std::size_t 
     return omega;
 }
 
-void SeparableWeight::addRowInLanes(int j, int k, std::size_t first, std::size_t count, double inverseSum,
-                                    const double* totals, double* values)
+void SeparableWeight::addRowsInLanes(const std::array<int, 3>& lo, const std::array<int, 3>& hi,
+                                     double inverseSum, const double* totals, SeparableLanes::BoxRows to)
 {
+    if (lo[0] > hi[0] || lo[1] > hi[1] || lo[2] > hi[2])
+    {
+        return;
+    }
+    // The box's corners' rows checked (and the rows prepared) as row() does
+    setRowFactors(lo[1], lo[2], static_cast<std::size_t>(lo[0]), static_cast<std::size_t>(hi[0] - lo[0] + 1));
+    setRowFactors(hi[1], hi[2], static_cast<std::size_t>(lo[0]), static_cast<std::size_t>(hi[0] - lo[0] + 1));
     if (!lanes_)
     {
-        throw std::logic_error("SeparableWeight::addRowInLanes: the tables are not in lanes");
+        throw std::logic_error("SeparableWeight::addRowsInLanes: the tables are not in lanes");
     }
-    setRowFactors(j, k, first, count);
-    SeparableLanes::addRow(rowFactor_.data(), points_, factor_[0].data() + first, length_[0], count, inverseSum,
-                           totals, values);
+    const auto points = static_cast<std::size_t>(points_);
+    to.weightedY = pointMajor_[0].data() + static_cast<std::size_t>(lo[1]) * points;
+    to.z = pointMajor_[1].data() + static_cast<std::size_t>(lo[2]) * points;
+    to.rows = static_cast<std::size_t>(hi[1] - lo[1] + 1);
+    to.layers = static_cast<std::size_t>(hi[2] - lo[2] + 1);
+    to.points = points_;
+    to.factor = factor_[0].data() + lo[0];
+    to.stride = length_[0];
+    to.count = static_cast<std::size_t>(hi[0] - lo[0] + 1);
+    SeparableLanes::addRows(to, inverseSum, totals);
 }
 
 double SeparableTables::omega(int i, int j, int k) const

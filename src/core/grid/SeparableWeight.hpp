@@ -42,6 +42,7 @@
 #pragma once
 
 #include "grid/PathWeight.hpp"
+#include "grid/SeparableLanes.hpp"
 
 #include <Eigen/Core>
 
@@ -125,12 +126,14 @@ public:
     // The same for the `count` nodes from position `first` of the row on (a block's stored
     // part of it): the same values, to the bit, as those positions of row(j, k).
     const double* row(int j, int k, std::size_t first, std::size_t count);
-    // Adds omega inverseSum totals[q] to the 7 values of each of those nodes (values: the
-    // first node's, 7 per node, contiguous), as row() then SeparableLanes::addWeightedRow
-    // give them, to the bit, without storing omega (SeparableLanes::addRow). Only where
-    // vectorised() (std::logic_error otherwise).
-    void addRowInLanes(int j, int k, std::size_t first, std::size_t count, double inverseSum,
-                       const double* totals, double* values);
+    // For every row of the part [lo, hi] of the (folded) box (positions relative to its
+    // lower corner), in one call (SeparableLanes::addRows): omega inverseSum totals[q] added
+    // to the 7 values of each node, the same to the bit as row() then
+    // SeparableLanes::addWeightedRow give, omega never stored. `to`: where the rows' values
+    // lie (values, strides, prefetch; the tables' fields are set here). Only where
+    // vectorised() (std::logic_error otherwise); std::out_of_range beyond the box.
+    void addRowsInLanes(const std::array<int, 3>& lo, const std::array<int, 3>& hi, double inverseSum,
+                        const double* totals, SeparableLanes::BoxRows to);
     // omega of the one node (i, j, k) of the (folded) box, positions relative to its lower
     // corner: row()'s arithmetic in row()'s order, so the same value to the bit, at Q
     // multiply-adds (depletion's sums over a few nodes, DensityGrid::depositedShare).

@@ -162,6 +162,12 @@ std::size_t StepValues::addSeparable(SeparableWeight& rows, double inverseSum, c
     // short for the hardware's prefetcher, on grids beyond the caches.
     const std::size_t rowAhead
         = rowsAhead * static_cast<std::size_t>(live_.hi[0] - live_.lo[0] + 1) * nQuantities;
+    if (inLanes && rows.vectorised() && !stored.empty())
+    {
+        addSeparableInLanes(rows, inverseSum, totals, box, stored, rowAhead);
+        touch(box);
+        return stored.empty() ? 0 : stored.nodeCount();
+    }
     forEachRowIn(stored, live_,
                  [&](const IndexRow& row)
                  {
@@ -179,17 +185,41 @@ std::size_t StepValues::addSeparable(SeparableWeight& rows, double inverseSum, c
                      {
                          prefetchRow(values + rowAhead, row.length);
                      }
-                     if (inLanes && rows.vectorised())
-                     {
-                         // omega in registers: the same values as row() then addWeightedRow()
-                         rows.addRowInLanes(j, k, first, row.length, inverseSum, totals.data(), values);
-                         return;
-                     }
                      addWeightedRow(rows.row(j, k, first, row.length), row.length, inverseSum, totals, values,
                                     inLanes);
                  });
     touch(box); // the stored part of it
     return stored.empty() ? 0 : stored.nodeCount();
+}
+
+void StepValues::addSeparableInLanes(SeparableWeight& rows, double inverseSum, const ParcelTotals& totals,
+                                     const IndexBox& box, const IndexBox& stored, std::size_t rowAhead)
+{
+    // addSeparable's rows one layer per call, omega in registers: the same values to the bit.
+    // The layer's pending rows zeroed just before (a box's layers would not all stay in
+    // cache on a grid beyond it).
+    const std::array<int, 3> extents = live_.extents();
+    SeparableLanes::BoxRows to;
+    to.rowStride = static_cast<std::size_t>(extents[0]) * nQuantities;
+    to.layerStride = to.rowStride * static_cast<std::size_t>(extents[1]);
+    to.prefetchAhead = rowAhead;
+    std::array<int, 3> lo{}, hi{};
+    for (std::size_t d = 0; d < 3; ++d)
+    {
+        lo[d] = stored.lo[d] - box.lo[d];
+        hi[d] = stored.hi[d] - box.lo[d];
+    }
+    IndexBox layer = stored;
+    for (int k = stored.lo[2]; k <= stored.hi[2]; ++k)
+    {
+        layer.lo[2] = layer.hi[2] = k;
+        clearPendingRowsOf(layer);
+        const std::size_t first = flatIndexInBox(live_, stored.lo[0], stored.lo[1], k) * nQuantities;
+        to.values = step_.data() + first;
+        to.available = step_.size() - first;
+        lo[2] = hi[2] = k - box.lo[2];
+        rows.addRowsInLanes(lo, hi, inverseSum, totals.data(), to);
+    }
 }
 
 void StepValues::pack(const IndexBox& box, double* values) const
