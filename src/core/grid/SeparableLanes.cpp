@@ -198,43 +198,54 @@ inline void addLastNodes(__m256d weights, std::size_t nodes, const __m256d* patt
     }
 }
 
-// omega of the 4 nodes from position i on: rowBlocks<1>'s operations.
-inline __m256d omegaOfFour(const double* rowFactor, int points, const double* factor, std::size_t stride,
+// omega of the 4 nodes from position i on: rowBlocks<1>'s operations, the row factors
+// broadcast (r). Points: Q when it is a compile-time constant (the loops unrolled), 0 for
+// `points`.
+template <int Points>
+inline __m256d omegaOfFour(const __m256d* r, int points, const double* factor, std::size_t stride,
                            std::size_t i)
 {
-    __m256d sum = _mm256_mul_pd(_mm256_broadcast_sd(rowFactor), _mm256_loadu_pd(factor + i));
-    for (int q = 1; q < points; ++q)
+    const int n = Points > 0 ? Points : points;
+    __m256d sum = _mm256_mul_pd(r[0], _mm256_loadu_pd(factor + i));
+    for (int q = 1; q < n; ++q)
     {
-        const double* f = factor + static_cast<std::size_t>(q) * stride + i;
-        sum = _mm256_fmadd_pd(_mm256_broadcast_sd(rowFactor + q), _mm256_loadu_pd(f), sum);
+        sum = _mm256_fmadd_pd(r[q], _mm256_loadu_pd(factor + static_cast<std::size_t>(q) * stride + i), sum);
     }
     return sum;
 }
 
 // One row of addRows: omega of 4 nodes at a time, then their 28 values.
+template <int Points>
 inline void addRowWith(const double* rowFactor, int points, const double* factor, std::size_t stride,
                        std::size_t count, __m256d scale, const __m256d* pattern, const double* totals,
                        double* values)
 {
+    const int n = Points > 0 ? Points : points;
+    __m256d r[Points > 0 ? Points : SeparableLanes::maximumPoints];
+    for (int q = 0; q < n; ++q)
+    {
+        r[q] = _mm256_broadcast_sd(rowFactor + q);
+    }
     std::size_t i = 0;
     for (; i + 4 <= count; i += 4, values += 4 * q7)
     {
-        const __m256d omega = omegaOfFour(rowFactor, points, factor, stride, i);
+        const __m256d omega = omegaOfFour<Points>(r, points, factor, stride, i);
         addFourNodes(_mm256_mul_pd(omega, scale), pattern, values);
     }
     if (i < count)
     {
-        const __m256d omega = omegaOfLast(rowFactor, points, factor, stride, i, count - i);
+        const __m256d omega = omegaOfLast(rowFactor, n, factor, stride, i, count - i);
         addLastNodes(_mm256_mul_pd(omega, scale), count - i, pattern, totals, values);
     }
 }
 
-void addRowsInLanes(const SeparableLanes::BoxRows& box, double inverseSum, const double* totals)
+template <int Points>
+void addRowsWith(const SeparableLanes::BoxRows& box, double inverseSum, const double* totals)
 {
     __m256d pattern[q7];
     totalsPattern(totals, pattern);
     const __m256d scale = _mm256_set1_pd(inverseSum);
-    const auto points = static_cast<std::size_t>(box.points);
+    const auto points = static_cast<std::size_t>(Points > 0 ? Points : box.points);
     const std::size_t rowValues = box.count * q7;
     double rowFactor[SeparableLanes::maximumPoints];
     for (std::size_t k = 0; k < box.layers; ++k)
@@ -255,9 +266,27 @@ void addRowsInLanes(const SeparableLanes::BoxRows& box, double inverseSum, const
                     __builtin_prefetch(box.values + offset + box.prefetchAhead + m, 1);
                 }
             }
-            addRowWith(rowFactor, box.points, box.factor, box.stride, box.count, scale, pattern, totals,
-                       box.values + offset);
+            addRowWith<Points>(rowFactor, box.points, box.factor, box.stride, box.count, scale, pattern, totals,
+                               box.values + offset);
         }
+    }
+}
+
+void addRowsInLanes(const SeparableLanes::BoxRows& box, double inverseSum, const double* totals)
+{
+    // The Q of the wide kernels wideKernelBench weighs (1 stationary, 4-8 moving) unrolled
+    switch (box.points)
+    {
+        case 1:
+            return addRowsWith<1>(box, inverseSum, totals);
+        case 4:
+            return addRowsWith<4>(box, inverseSum, totals);
+        case 5:
+            return addRowsWith<5>(box, inverseSum, totals);
+        case 6:
+            return addRowsWith<6>(box, inverseSum, totals);
+        default:
+            return addRowsWith<0>(box, inverseSum, totals);
     }
 }
 
