@@ -177,6 +177,10 @@ void SeparableWeight::fold(const std::array<std::vector<int>, 3>& image, const s
         // Each lattice index's factor added to its node's (per point q), in lattice order.
         const std::size_t n = length_[d];
         const auto m = static_cast<std::size_t>(foldedHi[d] - foldedLo[d] + 1);
+        if (m == n && image[d].front() == foldedLo[d] && image[d].back() == foldedHi[d])
+        {
+            continue; // no ghost node in this direction: the images are the nodes themselves
+        }
         folded_[d].assign(m * static_cast<std::size_t>(points_), 0.0);
         for (int q = 0; q < points_; ++q)
         {
@@ -255,12 +259,18 @@ void SeparableWeight::addRowsInLanes(const std::array<int, 3>& lo, const std::ar
     {
         return;
     }
-    // The box's corners' rows checked (and the rows prepared) as row() does
-    setRowFactors(lo[1], lo[2], static_cast<std::size_t>(lo[0]), static_cast<std::size_t>(hi[0] - lo[0] + 1));
-    setRowFactors(hi[1], hi[2], static_cast<std::size_t>(lo[0]), static_cast<std::size_t>(hi[0] - lo[0] + 1));
+    if (lo[0] < 0 || lo[1] < 0 || lo[2] < 0 || static_cast<std::size_t>(hi[0]) >= length_[0]
+        || static_cast<std::size_t>(hi[1]) >= length_[1] || static_cast<std::size_t>(hi[2]) >= length_[2])
+    {
+        throw std::out_of_range("SeparableWeight::addRowsInLanes: rows or positions beyond the box");
+    }
     if (!lanes_)
     {
         throw std::logic_error("SeparableWeight::addRowsInLanes: the tables are not in lanes");
+    }
+    if (!rowsPrepared_)
+    {
+        prepareRows();
     }
     const auto points = static_cast<std::size_t>(points_);
     to.weightedY = pointMajor_[0].data() + static_cast<std::size_t>(lo[1]) * points;
