@@ -312,6 +312,46 @@ void addWeightedRowInLanes(const double* omega, std::size_t length, double inver
     }
 }
 
+// Table t's term i, 0 beyond its length.
+inline double termOf(const double* const* tables, const std::size_t* lengths, std::size_t t, std::size_t i)
+{
+    return i < lengths[t] ? tables[t][i] : 0.0;
+}
+
+void compensatedSumsInLanes(const double* const* tables, const std::size_t* lengths, std::size_t count,
+                            double* sums)
+{
+    // Lanes beyond `count`, and a table's lane beyond its length, add 0: its sum and
+    // compensation then stay as they are (the sums are positive)
+    const double* table[4] = {nullptr, nullptr, nullptr, nullptr};
+    std::size_t length[4] = {0, 0, 0, 0};
+    std::size_t longest = 0;
+    for (std::size_t t = 0; t < count; ++t)
+    {
+        table[t] = tables[t];
+        length[t] = lengths[t];
+        longest = lengths[t] > longest ? lengths[t] : longest;
+    }
+    __m256d sum = _mm256_setzero_pd(), compensation = _mm256_setzero_pd();
+    for (std::size_t i = 0; i < longest; ++i)
+    {
+        const __m256d f = _mm256_setr_pd(termOf(table, length, 0, i), termOf(table, length, 1, i),
+                                         termOf(table, length, 2, i), termOf(table, length, 3, i));
+        const __m256d next = _mm256_add_pd(sum, f);
+        const __m256d sumLarger = _mm256_add_pd(_mm256_sub_pd(sum, next), f);
+        const __m256d termLarger = _mm256_add_pd(_mm256_sub_pd(f, next), sum);
+        const __m256d larger = _mm256_cmp_pd(sum, f, _CMP_GE_OQ);
+        compensation = _mm256_add_pd(compensation, _mm256_blendv_pd(termLarger, sumLarger, larger));
+        sum = next;
+    }
+    double result[4];
+    _mm256_storeu_pd(result, _mm256_add_pd(sum, compensation));
+    for (std::size_t t = 0; t < count; ++t)
+    {
+        sums[t] = result[t];
+    }
+}
+
 } // namespace
 
 } // namespace dropletFiber::avx2
@@ -354,6 +394,16 @@ void SeparableLanes::addRows(const BoxRows& box, double inverseSum, const double
     avx2::addRowsInLanes(box, inverseSum, totals);
 #else
     (void)box, (void)inverseSum, (void)totals;
+#endif
+}
+
+void SeparableLanes::compensatedSums(const double* const* tables, const std::size_t* lengths, std::size_t count,
+                                     double* sums)
+{
+#if DROPLETFIBER_BATCHED_KERNEL
+    avx2::compensatedSumsInLanes(tables, lengths, count, sums);
+#else
+    (void)tables, (void)lengths, (void)count, (void)sums;
 #endif
 }
 

@@ -8,6 +8,8 @@
 //  - gaussianTable():  one axis table X_q(i) = exp(-gamma (x_i - c)^2) with the inline
 //                      branch-free exp (BranchFreeExp.hpp, within 1.01 ulp) instead of a
 //                      libm call per entry;
+//  - compensatedSums(): the normalising sum's per-axis sums, four tables at a time (their
+//                      additions are a chain of dependent operations per table);
 //  - addWeightedRow(): node i's 7 accumulator values += omega[i] inverseSum totals[q],
 //                      four nodes' 28 values as 7 registers;
 //  - addRows():        both for every row of a box in one call, omega in registers (no
@@ -81,6 +83,12 @@ struct SeparableLanes
     // + q] of each row += (omega[i] inverseSum) totals[q], the same values to the bit as
     // row() then addWeightedRow() (points <= maximumPoints).
     static void addRows(const BoxRows& box, double inverseSum, const double* totals);
+
+    // sums[t] = Neumaier's compensated sum of tables[t][0], ..., tables[t][lengths[t] - 1]
+    // (positive terms) for t < count <= 4, in lanes, one table per lane: the same operations
+    // per table as SeparableWeight::sum's portable loop, so the same sums to the bit.
+    static void compensatedSums(const double* const* tables, const std::size_t* lengths, std::size_t count,
+                                double* sums);
 
     // values[quantities i + q] += (omega[i] inverseSum) totals[q] for i < length, q < 7.
     static void addWeightedRow(const double* omega, std::size_t length, double inverseSum,

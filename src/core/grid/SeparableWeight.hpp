@@ -159,6 +159,8 @@ private:
     // The row's working memory and pointMajor_ for the present tables, once per prepare() (or
     // fold()), at the first row(): not twice for a folded kernel.
     void prepareRows();
+    // sum() from the per-axis sums in lanes (SeparableLanes::compensatedSums): the same value.
+    double sumInLanes() const;
     // rowFactor_ of row (j, k) (std::out_of_range beyond the box), the rows prepared.
     void setRowFactors(int j, int k, std::size_t first, std::size_t count);
 
