@@ -266,8 +266,8 @@ void addRowsWith(const SeparableLanes::BoxRows& box, double inverseSum, const do
                     __builtin_prefetch(box.values + offset + box.prefetchAhead + m, 1);
                 }
             }
-            addRowWith<Points>(rowFactor, box.points, box.factor, box.stride, box.count, scale, pattern, totals,
-                               box.values + offset);
+            addRowWith<Points>(rowFactor, box.points, box.factor, box.stride, box.count, scale, pattern,
+                               totals, box.values + offset);
         }
     }
 }
@@ -397,8 +397,8 @@ void SeparableLanes::addRows(const BoxRows& box, double inverseSum, const double
 #endif
 }
 
-void SeparableLanes::compensatedSums(const double* const* tables, const std::size_t* lengths, std::size_t count,
-                                     double* sums)
+void SeparableLanes::compensatedSums(const double* const* tables, const std::size_t* lengths,
+                                     std::size_t count, double* sums)
 {
 #if DROPLETFIBER_BATCHED_KERNEL
     avx2::compensatedSumsInLanes(tables, lengths, count, sums);

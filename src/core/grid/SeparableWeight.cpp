@@ -421,8 +421,8 @@ double SeparableWeight::sumInLanes() const
     }
     for (std::size_t t = 0; t < 3 * points; t += 4)
     {
-        SeparableLanes::compensatedSums(tables.data() + t, lengths.data() + t, std::min<std::size_t>(4, 3 * points - t),
-                                        axisSums.data() + t);
+        SeparableLanes::compensatedSums(tables.data() + t, lengths.data() + t,
+                                        std::min<std::size_t>(4, 3 * points - t), axisSums.data() + t);
     }
     double total = 0.0;
     for (std::size_t q = 0; q < points; ++q)

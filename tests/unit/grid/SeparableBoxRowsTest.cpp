@@ -78,7 +78,8 @@ TEST(SeparableBoxRows, EveryValueIsItsRowFactorOmegaAndOneFmaToTheBit)
                         double omega = r0 * factor[1 + i];
                         for (std::size_t q = 1; q < p; ++q)
                         {
-                            omega = std::fma(weightedY[j * p + q] * z[k * p + q], factor[q * stride + 1 + i], omega);
+                            omega = std::fma(weightedY[j * p + q] * z[k * p + q], factor[q * stride + 1 + i],
+                                             omega);
                         }
                         const double weight = omega * inverseSum;
                         double* v = expected.data() + k * layerStride + j * rowStride + i * nq;

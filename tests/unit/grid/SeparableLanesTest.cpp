@@ -342,7 +342,8 @@ TEST(SeparableLanes, CompensatedSumsAreNeumaiersSumsToTheBit)
         SeparableLanes::compensatedSums(pointers.data(), lengths.data(), count, sums.data());
         for (std::size_t t = 0; t < count; ++t)
         {
-            ASSERT_EQ(sums[t], neumaierSum(tables[t].data(), lengths[t])) << "trial " << trial << " table " << t;
+            ASSERT_EQ(sums[t], neumaierSum(tables[t].data(), lengths[t]))
+                << "trial " << trial << " table " << t;
         }
     }
 }
