@@ -261,9 +261,11 @@ void addRowsWith(const SeparableLanes::BoxRows& box, double inverseSum, const do
             const std::size_t offset = k * box.layerStride + j * box.rowStride;
             if (offset + box.prefetchAhead + rowValues <= box.available)
             {
+                const double* ahead = box.values + offset + box.prefetchAhead;
+#pragma GCC unroll 4
                 for (std::size_t m = 0; m < rowValues; m += 8) // 64-byte lines
                 {
-                    __builtin_prefetch(box.values + offset + box.prefetchAhead + m, 1);
+                    __builtin_prefetch(ahead + m, 1);
                 }
             }
             addRowWith<Points>(rowFactor, box.points, box.factor, box.stride, box.count, scale, pattern,
