@@ -227,6 +227,18 @@ inline void addRowWith(const double* rowFactor, int points, const double* factor
         r[q] = _mm256_broadcast_sd(rowFactor + q);
     }
     std::size_t i = 0;
+    for (; i + 16 <= count; i += 16, values += 16 * q7)
+    {
+        // Four independent sums at a time (the FMA's latency hidden on long rows)
+        const __m256d omega0 = omegaOfFour<Points>(r, points, factor, stride, i);
+        const __m256d omega1 = omegaOfFour<Points>(r, points, factor, stride, i + 4);
+        const __m256d omega2 = omegaOfFour<Points>(r, points, factor, stride, i + 8);
+        const __m256d omega3 = omegaOfFour<Points>(r, points, factor, stride, i + 12);
+        addFourNodes(_mm256_mul_pd(omega0, scale), pattern, values);
+        addFourNodes(_mm256_mul_pd(omega1, scale), pattern, values + 4 * q7);
+        addFourNodes(_mm256_mul_pd(omega2, scale), pattern, values + 8 * q7);
+        addFourNodes(_mm256_mul_pd(omega3, scale), pattern, values + 12 * q7);
+    }
     for (; i + 4 <= count; i += 4, values += 4 * q7)
     {
         const __m256d omega = omegaOfFour<Points>(r, points, factor, stride, i);
