@@ -195,40 +195,45 @@ std::size_t StepValues::addSeparable(SeparableWeight& rows, double inverseSum, c
 void StepValues::addSeparableInLanes(SeparableWeight& rows, double inverseSum, const ParcelTotals& totals,
                                      const IndexBox& box, const IndexBox& stored, std::size_t rowAhead)
 {
-    // addSeparable's rows a few at a time (a layer of a small box, fewer rows of a wide
-    // one), omega in registers: the same values to the bit. The pending rows among them
-    // zeroed just before, while they fit in the first-level cache.
+    // addSeparable's rows a run at a time, omega in registers: the same values to the bit. A
+    // run is a layer's rows up to the next pending row, which is zeroed and starts the next
+    // run: its values are added while still in cache (one call per layer once the step's
+    // rows are cleared, one per row where all are pending, as addSeparable).
     const std::array<int, 3> extents = live_.extents();
     SeparableLanes::BoxRows to;
     to.rowStride = static_cast<std::size_t>(extents[0]) * nQuantities;
     to.layerStride = to.rowStride * static_cast<std::size_t>(extents[1]);
     to.prefetchAhead = rowAhead;
-    const std::size_t rowBytes
-        = static_cast<std::size_t>(stored.hi[0] - stored.lo[0] + 1) * nQuantities * sizeof(double);
-    const int rowsPerCall = static_cast<int>(std::max<std::size_t>(1, rowsAddedTogetherBytes / rowBytes));
     std::array<int, 3> lo{}, hi{};
-    for (std::size_t d = 0; d < 3; ++d)
+    lo[0] = stored.lo[0] - box.lo[0];
+    hi[0] = stored.hi[0] - box.lo[0];
+    auto addRun = [&](int k, int jFirst, int jLast)
     {
-        lo[d] = stored.lo[d] - box.lo[d];
-        hi[d] = stored.hi[d] - box.lo[d];
-    }
-    IndexBox part = stored;
+        const std::size_t first = flatIndexInBox(live_, stored.lo[0], jFirst, k) * nQuantities;
+        to.values = step_.data() + first;
+        to.available = step_.size() - first;
+        lo[1] = jFirst - box.lo[1];
+        hi[1] = jLast - box.lo[1];
+        lo[2] = hi[2] = k - box.lo[2];
+        rows.addRowsInLanes(lo, hi, inverseSum, totals.data(), to);
+    };
     for (int k = stored.lo[2]; k <= stored.hi[2]; ++k)
     {
-        part.lo[2] = part.hi[2] = k;
-        for (int j = stored.lo[1]; j <= stored.hi[1]; j += rowsPerCall)
+        int runFirst = stored.lo[1];
+        for (int j = stored.lo[1]; j <= stored.hi[1]; ++j)
         {
-            part.lo[1] = j;
-            part.hi[1] = std::min(stored.hi[1], j + rowsPerCall - 1);
-            clearPendingRowsOf(part);
-            const std::size_t first = flatIndexInBox(live_, stored.lo[0], j, k) * nQuantities;
-            to.values = step_.data() + first;
-            to.available = step_.size() - first;
-            lo[1] = part.lo[1] - box.lo[1];
-            hi[1] = part.hi[1] - box.lo[1];
-            lo[2] = hi[2] = k - box.lo[2];
-            rows.addRowsInLanes(lo, hi, inverseSum, totals.data(), to);
+            const std::size_t rowIndex = storageRow(j - live_.lo[1], k - live_.lo[2]);
+            if (rowPending_[rowIndex] != 0)
+            {
+                if (j > runFirst)
+                {
+                    addRun(k, runFirst, j - 1);
+                }
+                zeroPendingRow(rowIndex);
+                runFirst = j;
+            }
         }
+        addRun(k, runFirst, stored.hi[1]);
     }
 }
 

@@ -121,7 +121,7 @@ private:
         return storesWholeGrid_ ? step_.data() + node * nQuantities : valuesOfBlockNode(node);
     }
     double* valuesOfBlockNode(std::size_t node);
-    // addSeparable's rows in AVX2 + FMA, a few rows of the stored part of the box per call.
+    // addSeparable's rows in AVX2 + FMA, runs of a layer's rows of the stored part of the box.
     void addSeparableInLanes(SeparableWeight& rows, double inverseSum, const ParcelTotals& totals,
                              const IndexBox& box, const IndexBox& stored, std::size_t rowAhead);
     // Before a write into box (grid indices): the live box grown to hold its stored part.
@@ -158,10 +158,6 @@ private:
     // Rows ahead in addSeparable whose values are prefetched (wideKernelBench, 0.5 mm
     // grid: 1 row 1.1-1.6x, 2 rows 1.2-2.1x faster than none; 4 rows within 5 % of 2).
     static constexpr std::size_t rowsAhead = 2;
-    // The values addSeparableInLanes zeroes (pending rows) and adds to per call, at most
-    // (whole rows; at least one): the 2 mm rows of wideKernelBench's wide kernels are a layer
-    // (~5 kB), a row of the 0.5 mm grid 5.6 kB.
-    static constexpr std::size_t rowsAddedTogetherBytes = 16384;
     // Nodes ahead in addListed's list whose values are prefetched.
     static constexpr std::size_t prefetchDistance = 32;
 
