@@ -28,10 +28,12 @@
 // over it, and of separable over as filed. The five columns run interleaved (A B C D E A B C D
 // E ...). Figures, not a test.
 //
-// Usage: wideKernelBench [--repeats N] [--seconds S] [--spacing MM]
+// Usage: wideKernelBench [--repeats N] [--seconds S] [--parcels N] [--spacing MM]
 //   --repeats  interleaved rounds (default 3)
 //   --seconds  target time of one timed run of the per-node column (default 0.15 s): the
 //              parcel count of a row is chosen from it (at least 1, at most 4000)
+//   --parcels  the parcel count of every row instead (builds compared A/B: a step's first
+//              writes into each row, zeroing it, weigh per parcel by the count)
 //   --spacing  the rows of one node spacing only (0.5 or 2)
 #include "BenchCommon.hpp"
 
@@ -171,7 +173,7 @@ std::pair<double, double> kernelInSpacings(const Row& row)
     return {reach / row.spacing, kernel.width() / row.spacing};
 }
 
-void benchRow(const Row& row, int repeats, double targetSeconds)
+void benchRow(const Row& row, int repeats, double targetSeconds, int fixedCount)
 {
     const GridSpec spec = gridSpec(row.spacing);
     std::vector<DensityGrid> grids;
@@ -181,8 +183,9 @@ void benchRow(const Row& row, int repeats, double targetSeconds)
     }
     // Parcel count from one parcel of the per-node column.
     const Run probe = depositAll(grids[0], makeParcels(row, 1));
-    const int count
-        = static_cast<int>(std::clamp(targetSeconds / std::max(probe.seconds, 1e-9), 1.0, 4000.0));
+    const int count = fixedCount > 0
+        ? fixedCount
+        : static_cast<int>(std::clamp(targetSeconds / std::max(probe.seconds, 1e-9), 1.0, 4000.0));
     const std::vector<Parcel> parcels = makeParcels(row, count);
     // seconds: per node, batched, separable, floor, as filed
     std::vector<std::vector<double>> seconds(5);
@@ -228,6 +231,7 @@ int main(int argc, char** argv)
     int repeats = 3;
     double targetSeconds = 0.15;
     double onlySpacing = 0.0;
+    int fixedCount = 0;
     for (int a = 1; a < argc; ++a)
     {
         if (std::strcmp(argv[a], "--repeats") == 0 && a + 1 < argc)
@@ -238,13 +242,18 @@ int main(int argc, char** argv)
         {
             targetSeconds = std::atof(argv[++a]);
         }
+        else if (std::strcmp(argv[a], "--parcels") == 0 && a + 1 < argc)
+        {
+            fixedCount = std::max(1, std::atoi(argv[++a]));
+        }
         else if (std::strcmp(argv[a], "--spacing") == 0 && a + 1 < argc)
         {
             onlySpacing = std::atof(argv[++a]) * 1e-3;
         }
         else
         {
-            std::fprintf(stderr, "usage: wideKernelBench [--repeats N] [--seconds S] [--spacing MM]\n");
+            std::fprintf(stderr,
+                         "usage: wideKernelBench [--repeats N] [--seconds S] [--parcels N] [--spacing MM]\n");
             return 1;
         }
     }
@@ -268,7 +277,7 @@ int main(int argc, char** argv)
             {
                 for (bool moving : {false, true})
                 {
-                    benchRow(Row{spacing, radius, n, moving}, repeats, targetSeconds);
+                    benchRow(Row{spacing, radius, n, moving}, repeats, targetSeconds, fixedCount);
                 }
             }
         }

@@ -74,6 +74,9 @@ const BoundTerms& boundTerms()
 
 } // namespace
 
+static_assert(SeparableWeight::maximumPoints == SeparableLanes::maximumPoints,
+              "SeparableLanes::addRows holds a row's factors for every Q SeparableWeight takes");
+
 SeparableWeight::SeparableWeight(bool vectorised) : lanes_(vectorised && SeparableLanes::available()) {}
 
 double SeparableWeight::quadratureBound(int points, double k)
@@ -174,6 +177,10 @@ void SeparableWeight::fold(const std::array<std::vector<int>, 3>& image, const s
         // Each lattice index's factor added to its node's (per point q), in lattice order.
         const std::size_t n = length_[d];
         const auto m = static_cast<std::size_t>(foldedHi[d] - foldedLo[d] + 1);
+        if (m == n && image[d].front() == foldedLo[d] && image[d].back() == foldedHi[d])
+        {
+            continue; // no ghost node in this direction: the images are the nodes themselves
+        }
         folded_[d].assign(m * static_cast<std::size_t>(points_), 0.0);
         for (int q = 0; q < points_; ++q)
         {
@@ -195,10 +202,9 @@ const double* SeparableWeight::row(int j, int k)
     return row(j, k, 0, length_[0]);
 }
 
-const double* SeparableWeight::row(int j, int k, std::size_t first, std::size_t count)
+void SeparableWeight::setRowFactors(int j, int k, std::size_t first, std::size_t count)
 {
-    const std::size_t n = length_[0];
-    if (first + count > n || static_cast<std::size_t>(j) >= length_[1]
+    if (first + count > length_[0] || static_cast<std::size_t>(j) >= length_[1]
         || static_cast<std::size_t>(k) >= length_[2])
     {
         throw std::out_of_range("SeparableWeight::row: a row or positions beyond the box");
@@ -207,13 +213,20 @@ const double* SeparableWeight::row(int j, int k, std::size_t first, std::size_t 
     {
         prepareRows();
     }
+    // (W_q Y_q(j)) Z_q(k): the first product kept per j (prepareRows)
     const auto points = static_cast<std::size_t>(points_);
-    const double* y = pointMajor_[0].data() + static_cast<std::size_t>(j) * points;
+    const double* weightedY = pointMajor_[0].data() + static_cast<std::size_t>(j) * points;
     const double* z = pointMajor_[1].data() + static_cast<std::size_t>(k) * points;
     for (std::size_t q = 0; q < points; ++q)
     {
-        rowFactor_[q] = weight_[q] * y[q] * z[q];
+        rowFactor_[q] = weightedY[q] * z[q];
     }
+}
+
+const double* SeparableWeight::row(int j, int k, std::size_t first, std::size_t count)
+{
+    setRowFactors(j, k, first, count);
+    const std::size_t n = length_[0];
     // sum_q W_q X_q(i) Y_q(j) Z_q(k): one multiply-add per node and point.
     double* omega = rowOmega_.data();
     if (lanes_)
@@ -237,6 +250,38 @@ const double* SeparableWeight::row(int j, int k, std::size_t first, std::size_t 
         }
     }
     return omega;
+}
+
+void SeparableWeight::addRowsInLanes(const std::array<int, 3>& lo, const std::array<int, 3>& hi,
+                                     double inverseSum, const double* totals, SeparableLanes::BoxRows to)
+{
+    if (lo[0] > hi[0] || lo[1] > hi[1] || lo[2] > hi[2])
+    {
+        return;
+    }
+    if (lo[0] < 0 || lo[1] < 0 || lo[2] < 0 || static_cast<std::size_t>(hi[0]) >= length_[0]
+        || static_cast<std::size_t>(hi[1]) >= length_[1] || static_cast<std::size_t>(hi[2]) >= length_[2])
+    {
+        throw std::out_of_range("SeparableWeight::addRowsInLanes: rows or positions beyond the box");
+    }
+    if (!lanes_)
+    {
+        throw std::logic_error("SeparableWeight::addRowsInLanes: the tables are not in lanes");
+    }
+    if (!rowsPrepared_)
+    {
+        prepareRows();
+    }
+    const auto points = static_cast<std::size_t>(points_);
+    to.weightedY = pointMajor_[0].data() + static_cast<std::size_t>(lo[1]) * points;
+    to.z = pointMajor_[1].data() + static_cast<std::size_t>(lo[2]) * points;
+    to.rows = static_cast<std::size_t>(hi[1] - lo[1] + 1);
+    to.layers = static_cast<std::size_t>(hi[2] - lo[2] + 1);
+    to.points = points_;
+    to.factor = factor_[0].data() + lo[0];
+    to.stride = length_[0];
+    to.count = static_cast<std::size_t>(hi[0] - lo[0] + 1);
+    SeparableLanes::addRows(to, inverseSum, totals);
 }
 
 double SeparableTables::omega(int i, int j, int k) const
@@ -315,13 +360,15 @@ void SeparableWeight::prepareRows()
     const auto points = static_cast<std::size_t>(points_);
     for (std::size_t d = 1; d < 3; ++d)
     {
+        // y weighted: W_q Y_q(j), the row factor's first product (row())
         std::vector<double>& to = pointMajor_[d - 1];
         to.resize(length_[d] * points);
         for (std::size_t q = 0; q < points; ++q)
         {
+            const double* from = factor_[d].data() + q * length_[d];
             for (std::size_t i = 0; i < length_[d]; ++i)
             {
-                to[i * points + q] = factor_[d][q * length_[d] + i];
+                to[i * points + q] = d == 1 ? weight_[q] * from[i] : from[i];
             }
         }
     }
@@ -329,6 +376,10 @@ void SeparableWeight::prepareRows()
 
 double SeparableWeight::sum() const
 {
+    if (lanes_)
+    {
+        return sumInLanes();
+    }
     double total = 0.0;
     for (int q = 0; q < points_; ++q)
     {
@@ -346,6 +397,40 @@ double SeparableWeight::sum() const
                 axisSum = next;
             }
             product *= axisSum + compensation;
+        }
+        total += product;
+    }
+    return total;
+}
+
+double SeparableWeight::sumInLanes() const
+{
+    // The 3 Q per-axis sums four at a time (SeparableLanes::compensatedSums: sum()'s
+    // operations per table), then sum()'s products in sum()'s order
+    const auto points = static_cast<std::size_t>(points_);
+    std::array<const double*, 3 * maximumPoints> tables{};
+    std::array<std::size_t, 3 * maximumPoints> lengths{};
+    std::array<double, 3 * maximumPoints> axisSums{};
+    for (std::size_t q = 0; q < points; ++q)
+    {
+        for (std::size_t d = 0; d < 3; ++d)
+        {
+            tables[3 * q + d] = factor_[d].data() + q * length_[d];
+            lengths[3 * q + d] = length_[d];
+        }
+    }
+    for (std::size_t t = 0; t < 3 * points; t += 4)
+    {
+        SeparableLanes::compensatedSums(tables.data() + t, lengths.data() + t,
+                                        std::min<std::size_t>(4, 3 * points - t), axisSums.data() + t);
+    }
+    double total = 0.0;
+    for (std::size_t q = 0; q < points; ++q)
+    {
+        double product = weight_[q];
+        for (std::size_t d = 0; d < 3; ++d)
+        {
+            product *= axisSums[3 * q + d];
         }
         total += product;
     }

@@ -42,6 +42,7 @@
 #pragma once
 
 #include "grid/PathWeight.hpp"
+#include "grid/SeparableLanes.hpp"
 
 #include <Eigen/Core>
 
@@ -125,6 +126,14 @@ public:
     // The same for the `count` nodes from position `first` of the row on (a block's stored
     // part of it): the same values, to the bit, as those positions of row(j, k).
     const double* row(int j, int k, std::size_t first, std::size_t count);
+    // For every row of the part [lo, hi] of the (folded) box (positions relative to its
+    // lower corner), in one call (SeparableLanes::addRows): omega inverseSum totals[q] added
+    // to the 7 values of each node, the same to the bit as row() then
+    // SeparableLanes::addWeightedRow give, omega never stored. `to`: where the rows' values
+    // lie (values, strides, prefetch; the tables' fields are set here). Only where
+    // vectorised() (std::logic_error otherwise); std::out_of_range beyond the box.
+    void addRowsInLanes(const std::array<int, 3>& lo, const std::array<int, 3>& hi, double inverseSum,
+                        const double* totals, SeparableLanes::BoxRows to);
     // omega of the one node (i, j, k) of the (folded) box, positions relative to its lower
     // corner: row()'s arithmetic in row()'s order, so the same value to the bit, at Q
     // multiply-adds (depletion's sums over a few nodes, DensityGrid::depositedShare).
@@ -150,6 +159,10 @@ private:
     // The row's working memory and pointMajor_ for the present tables, once per prepare() (or
     // fold()), at the first row(): not twice for a folded kernel.
     void prepareRows();
+    // sum() from the per-axis sums in lanes (SeparableLanes::compensatedSums): the same value.
+    double sumInLanes() const;
+    // rowFactor_ of row (j, k) (std::out_of_range beyond the box), the rows prepared.
+    void setRowFactors(int j, int k, std::size_t first, std::size_t count);
 
     bool lanes_; // vectorised()
     int points_ = 0;
@@ -159,7 +172,7 @@ private:
     std::array<double, maximumPoints> tau_{};    // Gauss-Legendre points in [0, 1]
     std::array<double, maximumPoints> weight_{}; // their weights, summing to 1
     // The y and z tables point-major (index i of axis d at [i Q + q]), so that a row's Q
-    // factors W_q Y_q(j) Z_q(k) are read contiguously (per row, not per node).
+    // factors W_q Y_q(j) Z_q(k) are read contiguously (per row, not per node); y times W_q.
     std::array<std::vector<double>, 2> pointMajor_;
     bool rowsPrepared_ = false;
     std::array<double, maximumPoints> rowFactor_{};

@@ -162,11 +162,17 @@ std::size_t StepValues::addSeparable(SeparableWeight& rows, double inverseSum, c
     // short for the hardware's prefetcher, on grids beyond the caches.
     const std::size_t rowAhead
         = rowsAhead * static_cast<std::size_t>(live_.hi[0] - live_.lo[0] + 1) * nQuantities;
+    if (inLanes && rows.vectorised() && !stored.empty())
+    {
+        addSeparableInLanes(rows, inverseSum, totals, box, stored, rowAhead);
+        touch(box);
+        return stored.empty() ? 0 : stored.nodeCount();
+    }
     forEachRowIn(stored, live_,
                  [&](const IndexRow& row)
                  {
-                     const double* omega = rows.row(row.j + live_.lo[1] - box.lo[1],
-                                                    row.k + live_.lo[2] - box.lo[2], first, row.length);
+                     const int j = row.j + live_.lo[1] - box.lo[1];
+                     const int k = row.k + live_.lo[2] - box.lo[2];
                      // First write into the row this step: the evicted step's values go
                      // (the row is being brought into cache by this parcel anyway)
                      const std::size_t rowIndex = storageRow(row.j, row.k);
@@ -179,10 +185,56 @@ std::size_t StepValues::addSeparable(SeparableWeight& rows, double inverseSum, c
                      {
                          prefetchRow(values + rowAhead, row.length);
                      }
-                     addWeightedRow(omega, row.length, inverseSum, totals, values, inLanes);
+                     addWeightedRow(rows.row(j, k, first, row.length), row.length, inverseSum, totals, values,
+                                    inLanes);
                  });
     touch(box); // the stored part of it
     return stored.empty() ? 0 : stored.nodeCount();
+}
+
+void StepValues::addSeparableInLanes(SeparableWeight& rows, double inverseSum, const ParcelTotals& totals,
+                                     const IndexBox& box, const IndexBox& stored, std::size_t rowAhead)
+{
+    // addSeparable's rows a run at a time, omega in registers: the same values to the bit. A
+    // run is a layer's rows up to the next pending row, which is zeroed and starts the next
+    // run: its values are added while still in cache (one call per layer once the step's
+    // rows are cleared, one per row where all are pending, as addSeparable).
+    const std::array<int, 3> extents = live_.extents();
+    SeparableLanes::BoxRows to;
+    to.rowStride = static_cast<std::size_t>(extents[0]) * nQuantities;
+    to.layerStride = to.rowStride * static_cast<std::size_t>(extents[1]);
+    to.prefetchAhead = rowAhead;
+    std::array<int, 3> lo{}, hi{};
+    lo[0] = stored.lo[0] - box.lo[0];
+    hi[0] = stored.hi[0] - box.lo[0];
+    auto addRun = [&](int k, int jFirst, int jLast)
+    {
+        const std::size_t first = flatIndexInBox(live_, stored.lo[0], jFirst, k) * nQuantities;
+        to.values = step_.data() + first;
+        to.available = step_.size() - first;
+        lo[1] = jFirst - box.lo[1];
+        hi[1] = jLast - box.lo[1];
+        lo[2] = hi[2] = k - box.lo[2];
+        rows.addRowsInLanes(lo, hi, inverseSum, totals.data(), to);
+    };
+    for (int k = stored.lo[2]; k <= stored.hi[2]; ++k)
+    {
+        int runFirst = stored.lo[1];
+        for (int j = stored.lo[1]; j <= stored.hi[1]; ++j)
+        {
+            const std::size_t rowIndex = storageRow(j - live_.lo[1], k - live_.lo[2]);
+            if (rowPending_[rowIndex] != 0)
+            {
+                if (j > runFirst)
+                {
+                    addRun(k, runFirst, j - 1);
+                }
+                zeroPendingRow(rowIndex);
+                runFirst = j;
+            }
+        }
+        addRun(k, runFirst, stored.hi[1]);
+    }
 }
 
 void StepValues::pack(const IndexBox& box, double* values) const

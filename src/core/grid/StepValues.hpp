@@ -121,6 +121,9 @@ private:
         return storesWholeGrid_ ? step_.data() + node * nQuantities : valuesOfBlockNode(node);
     }
     double* valuesOfBlockNode(std::size_t node);
+    // addSeparable's rows in AVX2 + FMA, runs of a layer's rows of the stored part of the box.
+    void addSeparableInLanes(SeparableWeight& rows, double inverseSum, const ParcelTotals& totals,
+                             const IndexBox& box, const IndexBox& stored, std::size_t rowAhead);
     // Before a write into box (grid indices): the live box grown to hold its stored part.
     void cover(const IndexBox& box)
     {

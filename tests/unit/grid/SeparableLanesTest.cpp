@@ -9,6 +9,8 @@
 //    inline exp: 1.01 ulp);
 //  - accumulation: each value is fma(omega inverseSum, total, value), to the bit (std::fma
 //    here), for every row length and split;
+//  - normalising sum: the per-axis compensated sums four tables at a time, and
+//    SeparableWeight::sum from them, are Neumaier's sums written out here, to the bit;
 //  - SeparableWeight with and without lanes: omega against eq. P16 evaluated in long double
 //    from its definition within relativeRounding (1e-14) of omega + E, the bound's
 //    allowance (docs/model.md P16), and the two within 1e-15 relative of each other; row
@@ -294,4 +296,82 @@ TEST(SeparableLanes, SeparableWeightsWithinTheRoundingAllowanceOfTheirDefinition
     EXPECT_LE(worstLanes, 1.0);
     EXPECT_LE(worstPortable, 1.0);
     EXPECT_LE(largestLanes, 3.0 * u / std::exp(1.0) + SeparableWeight::relativeRounding);
+}
+
+namespace
+{
+
+// Neumaier's compensated sum of positive terms, as SeparableWeight::sum's portable loop.
+double neumaierSum(const double* f, std::size_t length)
+{
+    double sum = 0.0, compensation = 0.0;
+    for (std::size_t i = 0; i < length; ++i)
+    {
+        const double next = sum + f[i];
+        compensation += sum >= f[i] ? (sum - next) + f[i] : (f[i] - next) + sum;
+        sum = next;
+    }
+    return sum + compensation;
+}
+
+} // namespace
+
+TEST(SeparableLanes, CompensatedSumsAreNeumaiersSumsToTheBit)
+{
+    REQUIRE_LANES();
+    std::mt19937_64 random(15);
+    std::uniform_real_distribution<double> exponent(-17.0, 0.0);
+    std::uniform_int_distribution<std::size_t> lengthOf(0, 40);
+    for (int trial = 0; trial < 200; ++trial)
+    {
+        const std::size_t count = 1 + static_cast<std::size_t>(trial) % 4;
+        std::vector<std::vector<double>> tables(count);
+        std::vector<const double*> pointers(count);
+        std::vector<std::size_t> lengths(count);
+        for (std::size_t t = 0; t < count; ++t)
+        {
+            tables[t].resize(lengthOf(random));
+            for (double& f : tables[t])
+            {
+                f = std::pow(10.0, exponent(random)); // terms over 17 decades: compensation matters
+            }
+            pointers[t] = tables[t].data();
+            lengths[t] = tables[t].size();
+        }
+        std::vector<double> sums(count, -1.0);
+        SeparableLanes::compensatedSums(pointers.data(), lengths.data(), count, sums.data());
+        for (std::size_t t = 0; t < count; ++t)
+        {
+            ASSERT_EQ(sums[t], neumaierSum(tables[t].data(), lengths[t]))
+                << "trial " << trial << " table " << t;
+        }
+    }
+}
+
+TEST(SeparableLanes, NormalisingSumInLanesIsTheProductOfNeumaiersSumsToTheBit)
+{
+    REQUIRE_LANES();
+    const test::TestLattice grid = test::testLattice(-30, 60, 1e-3);
+    const KernelSettings settings;
+    const ParcelKernel kernel(2e-5, 2000.0, settings, 3);
+    const Eigen::Vector3d start(3.3e-3, 1.2e-3, 0.4e-3), displacement(2e-3, -1e-3, 0.5e-3);
+    const PathWeight path(kernel, start, displacement);
+    SeparableWeight lanes(true);
+    for (int points = 1; points <= SeparableWeight::maximumPoints; ++points)
+    {
+        lanes.prepare(path, start, displacement, points, grid.atIndexZero, {{-12, -9, -15}}, {{18, 10, 15}});
+        const SeparableTables tables = lanes.tables();
+        double expected = 0.0;
+        for (int q = 0; q < points; ++q)
+        {
+            const auto u = static_cast<std::size_t>(q);
+            double product = tables.weight[u];
+            for (std::size_t d = 0; d < 3; ++d)
+            {
+                product *= neumaierSum(tables.factor[d] + u * tables.length[d], tables.length[d]);
+            }
+            expected += product;
+        }
+        ASSERT_EQ(lanes.sum(), expected) << "Q " << points;
+    }
 }
