@@ -88,11 +88,20 @@ word firstDifference(const dictionary& a, const dictionary& b, const word& at)
 }
 
 
-//- The value of a dotted key's entry as text ("missing" when absent)
+//- The value of a dotted key's entry as text, without its keyword and the
+//  closing ';' ("missing" when absent)
 string scopedText(const dictionary& dict, const word& key)
 {
     const entry* e = dict.findScoped(key, keyType::LITERAL);
-    return e ? entryText(*e) : string("missing");
+    if (!e)
+    {
+        return "missing";
+    }
+    const std::string text = entryText(*e);
+    const std::size_t begin = text.find_first_not_of(" \t\n", e->keyword().size());
+    const std::size_t end = text.find_last_not_of(" \t\n;");
+    return begin == std::string::npos || end < begin
+        ? string::null : string(text.substr(begin, end - begin + 1));
 }
 
 
