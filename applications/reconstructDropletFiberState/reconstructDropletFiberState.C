@@ -116,6 +116,50 @@ bool anyProcessorState
 }
 
 
+//- Merge the states of function object `name` at runTime's time, if any
+//  processor wrote one
+void mergeStates
+(
+    const fileName& caseDir,
+    const label processors,
+    const Time& runTime,
+    const fvMesh& mesh,
+    const word& name,
+    const dictionary& functionDict
+)
+{
+    const word& timeName = runTime.timeName();
+    if (!anyProcessorState(caseDir, processors, timeName, name))
+    {
+        Info<< "    " << name << ": no processor holds a restart state at"
+            << " this time, skipped" << nl;
+        return;
+    }
+    const clockTime clock;
+    const Foam::dropletFiber::gridSettings grid =
+        Foam::dropletFiber::readGridSettings
+        (
+            functionDict.subOrEmptyDict("grid"), mesh
+        );
+    const label fibers = Foam::dropletFiber::writeMergedRestartState
+    (
+        caseDir, timeName, name,
+        Foam::dropletFiber::readProcessorStates
+        (
+            caseDir, processors, timeName, name
+        ),
+        grid
+    );
+    Info<< "    " << name << ": merged the restart states of " << processors
+        << " processors into "
+        << (runTime.timePath()/"uniform"/"dropletFiber"/name) << " ("
+        << fibers << " fibers, the averaging window of "
+        << grid.spec.nodes[0] << " x " << grid.spec.nodes[1] << " x "
+        << grid.spec.nodes[2] << " nodes) in " << clock.elapsedTime()
+        << " s" << nl;
+}
+
+
 // * * * * * * * * * * * * * * * * * Main  * * * * * * * * * * * * * * * * //
 
 int main(int argc, char *argv[])
@@ -163,38 +207,10 @@ int main(int argc, char *argv[])
     forAll(times, timei)
     {
         runTime.setTime(times[timei], timei);
-        const word& timeName = times[timei].name();
-        Info<< "Time = " << timeName << nl;
+        Info<< "Time = " << times[timei].name() << nl;
         for (const word& name : functions.sortedToc())
         {
-            if (!anyProcessorState(args.path(), processors, timeName, name))
-            {
-                Info<< "    " << name << ": no processor holds a restart"
-                    << " state at this time, skipped" << nl;
-                continue;
-            }
-            const clockTime clock;
-            const Foam::dropletFiber::gridSettings grid =
-                Foam::dropletFiber::readGridSettings
-                (
-                    functions[name].subOrEmptyDict("grid"), mesh
-                );
-            const label fibers = Foam::dropletFiber::writeMergedRestartState
-            (
-                args.path(), timeName, name,
-                Foam::dropletFiber::readProcessorStates
-                (
-                    args.path(), processors, timeName, name
-                ),
-                grid
-            );
-            Info<< "    " << name << ": merged the restart states of "
-                << processors << " processors into "
-                << (runTime.timePath()/"uniform"/"dropletFiber"/name)
-                << " (" << fibers << " fibers, the averaging window of "
-                << grid.spec.nodes[0] << " x " << grid.spec.nodes[1] << " x "
-                << grid.spec.nodes[2] << " nodes) in "
-                << clock.elapsedTime() << " s" << nl;
+            mergeStates(args.path(), processors, runTime, mesh, name, functions[name]);
         }
     }
     Info<< nl << "End" << nl << endl;

@@ -32,11 +32,13 @@ using namespace Foam::dropletFiber;
 //- Entries of one processor's state that a serial run's state has not, or
 //  that the merge makes anew (the window's)
 const wordList perProcessorEntries
-({
-    "processors", "processor", "gridBlockProcessors", "gridBlock",
-    "gridPartition", "gridWindowCounters", "gridWindowValueCount",
-    "gridWindowValuesCounters"
-});
+(
+    {
+        "processors", "processor", "gridBlockProcessors", "gridBlock",
+        "gridPartition", "gridWindowCounters", "gridWindowValueCount",
+        "gridWindowValuesCounters"
+    }
+);
 
 //- Entries merged from every processor's
 const wordList mergedEntries({"fiberCount", "fibers", "depletionRemoval"});
