@@ -3,7 +3,8 @@
 # validation is exactly as Debian's clang-format 14 lays it out; the OpenFOAM layer
 # (src/openfoam and applications, OpenFOAM's own hand layout, which clang-format
 # cannot express) has Allman braces, no tabs and no trailing blanks. Prints each file
-# that differs and how to fix it. Exit 77 (skipped) without clang-format 14: other versions lay out differently.
+# that differs and how to fix it. Exit 77 (skipped) without clang-format 14: other
+# versions lay out differently.
 cd "$(dirname "$0")/.." || exit 1
 command -v clang-format >/dev/null || { echo "SKIPPED: no clang-format (Debian package clang-format)"; exit 77; }
 major=$(clang-format --version | sed -n 's/.*version \([0-9]*\)\..*/\1/p')
