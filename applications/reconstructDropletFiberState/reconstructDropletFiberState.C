@@ -27,7 +27,8 @@ Usage
 
     Options:
       - \par -time \<ranges\>, -latestTime, ...
-        The times to merge (timeSelector; default: every time but 0)
+        The times of the case to merge (timeSelector, after reconstructPar;
+        default: every time; a time no processor wrote a state at is skipped)
 
       - \par -name \<name\>
         Only the function object \<name\> (default: every function object of
