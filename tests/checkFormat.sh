@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # One layout (.clang-format): every C++ file of the core, the tests, tools, benchmarks and
 # validation is exactly as Debian's clang-format 14 lays it out; the OpenFOAM layer
-# (src/openfoam, OpenFOAM's own hand layout, which clang-format cannot express) has
-# Allman braces, no tabs and no trailing blanks. Prints each file that differs and how
-# to fix it. Exit 77 (skipped) without clang-format 14: other versions lay out differently.
+# (src/openfoam and applications, OpenFOAM's own hand layout, which clang-format
+# cannot express) has Allman braces, no tabs and no trailing blanks. Prints each file
+# that differs and how to fix it. Exit 77 (skipped) without clang-format 14: other
+# versions lay out differently.
 cd "$(dirname "$0")/.." || exit 1
 command -v clang-format >/dev/null || { echo "SKIPPED: no clang-format (Debian package clang-format)"; exit 77; }
 major=$(clang-format --version | sed -n 's/.*version \([0-9]*\)\..*/\1/p')
@@ -25,6 +26,6 @@ while IFS= read -r file; do
     else
         failed=$((failed+1)); echo "FAILED: $file: tab, trailing blank or brace not on a line of its own:"; echo "$bad"
     fi
-done < <(find src/openfoam \( -name '*.C' -o -name '*.H' \) | sort)
+done < <(find src/openfoam applications \( -name '*.C' -o -name '*.H' \) | sort)
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

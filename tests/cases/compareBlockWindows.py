@@ -1,13 +1,14 @@
 """Compare the averaging window of a serial run with the windows of a parallel
 run's blocks (each processor keeps the window of the grid nodes it owns).
 
-Usage: compareBlockWindows.py SERIAL_STATE PARALLEL_CASE STATE_PATH REL_TOL
+Usage: compareBlockWindows.py SERIAL_STATE PARALLEL_CASE STATE_PATH REL_TOL [--merged]
 
 SERIAL_STATE is a restart state dictionary (<time>/uniform/dropletFiber/<name>)
 with its <name>.gridWindow beside it (node values), or, when that holds the
 deposit log, the node values written with writeWindowValues
 (<name>.gridWindowValues, entry gridWindowValuesCounters); the parallel case's states are
-PARALLEL_CASE/processor*/STATE_PATH. Checks: the blocks (entry gridBlock) are
+PARALLEL_CASE/processor*/STATE_PATH, or with --merged the one state
+PARALLEL_CASE/STATE_PATH that reconstructDropletFiberState merged from them. Checks: the blocks (entry gridBlock) are
 disjoint and cover every node of the grid; the steps committed agree; per node,
 the window total (sum of the slots) of the owning block equals the serial one to
 REL_TOL times the largest magnitude of its quantity (of the momentum vector's
@@ -64,7 +65,10 @@ def window_totals(state_path):
 def main():
     serial, case, path, tol = sys.argv[1], sys.argv[2], sys.argv[3], float(sys.argv[4])
     expected, _, committed, nodes = window_totals(serial)
-    states = sorted(glob.glob(os.path.join(case, "processor*", path)))
+    if sys.argv[5:] == ["--merged"]:
+        states = [os.path.join(case, path)]
+    else:
+        states = sorted(glob.glob(os.path.join(case, "processor*", path)))
     owned, actual, failed = {}, {}, 0
     for state in states:
         totals, block, steps, _ = window_totals(state)

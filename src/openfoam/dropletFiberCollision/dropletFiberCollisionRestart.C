@@ -27,6 +27,10 @@ Description
       \<name\>.marker      written by OpenFOAM with the fields, when the state
                            follows (restartStateMarker)
 
+    A parallel run's states continue on the same processor count; on
+    another, reconstructDropletFiberState merges them into a serial run's
+    state (restartStateMerge.H), which decomposePar copies to any count.
+
 \*---------------------------------------------------------------------------*/
 
 #include "dropletFiberCollision.H"
@@ -35,6 +39,7 @@ Description
 #include "dictionaryChecks.H"
 #include "restartStateMarker.H"
 #include "restartSources.H"
+#include "restartStateFiles.H"
 #include "Time.H"
 #include "OFstream.H"
 #include "IFstream.H"
@@ -42,138 +47,6 @@ Description
 #include "OSspecific.H"
 #include "stringOps.H"
 #include "PstreamReduceOps.H"
-
-// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
-
-namespace
-{
-
-using namespace Foam;
-
-//- Write a file through a temporary beside it, renamed when complete: a run
-//  killed meanwhile leaves no file or the complete one (rename is atomic),
-//  never a truncated one
-template<class Write>
-void writeAtomically
-(
-    const fileName& path,
-    const IOstream::streamFormat format,
-    Write&& write
-)
-{
-    const fileName tmp = path + ".tmp";
-    {
-        OFstream os(tmp, format);
-        write(os);
-        os.flush();
-        if (!os.good())
-        {
-            FatalErrorInFunction
-                << "Cannot write restart state " << tmp << exit(FatalError);
-        }
-    }
-    if (!Foam::mv(tmp, path))
-    {
-        FatalErrorInFunction
-            << "Cannot rename " << tmp << " to " << path << exit(FatalError);
-    }
-}
-
-
-//- A required count: an integer >= 0
-label requiredCount(const dictionary& dict, const word& key)
-{
-    const label value = dict.get<label>(key);
-    if (value < 0)
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry '" << key << "' is " << value
-            << ": allowed are counts >= 0." << exit(FatalIOError);
-    }
-    return value;
-}
-
-
-//- The window's counters (integers written as scalars), each checked
-std::vector<std::int64_t> windowCounters(const dictionary& state)
-{
-    const scalarList counters = state.get<scalarList>("gridWindowCounters");
-    std::vector<std::int64_t> result;
-    result.reserve(counters.size());
-    forAll(counters, i)
-    {
-        const scalar c = counters[i];
-        if (!std::isfinite(c) || c != std::floor(c) || mag(c) > 1e15)
-        {
-            FatalIOErrorInFunction(state)
-                << "Entry 'gridWindowCounters': value " << i << " is " << c
-                << ": allowed are integers (the window's layout)."
-                << exit(FatalIOError);
-        }
-        result.push_back(std::int64_t(c));
-    }
-    return result;
-}
-
-
-//- The window's values, read from file and each checked: finite, and for
-//  node values the sums of masses, counts and radii not negative (momenta
-//  may be); a deposit log's parcels are checked by the core
-std::vector<double> windowValues
-(
-    const fileName& file,
-    const label expected,
-    const bool nodeValues
-)
-{
-    if (!isFile(file))
-    {
-        FatalIOErrorInFunction(file)
-            << "Restart state " << file << " is missing: it holds the "
-            << expected << " values of the averaging window." << nl
-            << "    Restart from an earlier time, or set 'restart fresh;'."
-            << exit(FatalIOError);
-    }
-    IFstream is(file, IOstream::BINARY);
-    const scalarList values(is);
-    if (!is.good() || values.size() != expected)
-    {
-        FatalIOErrorInFunction(file)
-            << "Restart state " << file << " holds " << values.size()
-            << " values, the state's entry 'gridWindowValueCount' says "
-            << expected << "." << exit(FatalIOError);
-    }
-    const label nQ = ::dropletFiber::nQuantities;
-    forAll(values, i)
-    {
-        if (!nodeValues)
-        {
-            if (!std::isfinite(values[i]))
-            {
-                FatalIOErrorInFunction(file)
-                    << "Restart state " << file << ": value " << i << " is "
-                    << values[i] << ": allowed are finite values (the"
-                    << " parcels deposited in the averaging window's steps)."
-                    << exit(FatalIOError);
-            }
-            continue;
-        }
-        const bool mayBeNegative = i % nQ >= ::dropletFiber::quantityMomentumX;
-        if (!std::isfinite(values[i]) || (!mayBeNegative && values[i] < 0))
-        {
-            FatalIOErrorInFunction(file)
-                << "Restart state " << file << ": value " << i
-                << " (quantity " << i % nQ << " of " << nQ << ") is "
-                << values[i] << ": allowed are finite values, >= 0 for the"
-                << " droplet mass, count and radius sums (quantities 0 to 3)."
-                << exit(FatalIOError);
-        }
-    }
-    return Foam::dropletFiber::toStdVector(values);
-}
-
-} // End anonymous namespace
-
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -345,8 +218,8 @@ void Foam::functionObjects::dropletFiberCollision::writeState() const
 {
     // Each processor writes its own state (processorN/<time>/uniform/...):
     // the fibers it holds and the averaging window of its block of the grid,
-    // read back on restart with the same number of processors (readState
-    // and checkWindowBlock say what happens with another).
+    // read back on restart with the same number of processors (on another,
+    // after reconstructDropletFiberState merged them: restartStateMerge.H).
     // The window first, the dictionary last: a dictionary that exists
     // belongs to a complete state.
     // The window's state is the log of the parcels deposited in its steps
@@ -373,17 +246,11 @@ void Foam::functionObjects::dropletFiberCollision::writeState() const
         );
         IOstream::defaultPrecision(oldPrecision);
     }
-    writeAtomically
+    dropletFiber::writeStateDictionary
     (
-        path,
-        IOstream::ASCII,
-        [&](OFstream& os)
-        {
-            os.precision(17);
-            os  << "// dropletFiber restart state of function object " << name()
-                << " at time " << time_.timeName() << nl;
-            state.write(os, false);
-        }
+        path, state,
+        "dropletFiber restart state of function object " + name()
+      + " at time " + time_.timeName()
     );
 }
 
@@ -394,20 +261,7 @@ void Foam::functionObjects::dropletFiberCollision::writeWindowList
     const std::vector<double>& values
 ) const
 {
-    writeAtomically
-    (
-        file,
-        IOstream::BINARY,
-        [&values](OFstream& os)
-        {
-            // Written straight from the window's buffer (a view, no copy)
-            os  << UList<scalar>
-            (
-                const_cast<scalar*>(values.data()),
-                label(values.size())
-            );
-        }
-    );
+    dropletFiber::writeWindowList(file, values);
 }
 
 
@@ -621,11 +475,13 @@ void Foam::functionObjects::dropletFiberCollision::checkStateProcessors
         << " only the fibers that processor held; this run is "
         << (Pstream::parRun() ? "processor " + Foam::name(Pstream::myProcNo())
             + " of " + Foam::name(Pstream::nProcs()) : word("serial"))
-        << " (reconstructPar and decomposePar copy processor 0's state only)."
-        << nl << "    Restart on " << stateProcessors_ << " processors from"
-        << " the processor directories as that run wrote them, or set"
-        << " 'restart fresh;' (the dictionary's fibers, an empty window)."
-        << exit(FatalIOError);
+        << " (reconstructPar copies processor 0's state only)." << nl
+        << "    Restart on " << stateProcessors_ << " processors from the"
+        << " processor directories as that run wrote them; for another count"
+        << " run reconstructPar and reconstructDropletFiberState, then"
+        << " decomposePar for the new count (a serial run continues from the"
+        << " reconstructed case); or set 'restart fresh;' (the dictionary's"
+        << " fibers, an empty window)." << exit(FatalIOError);
 }
 
 
@@ -834,7 +690,7 @@ void Foam::functionObjects::dropletFiberCollision::restoreTotals
     totals_.captured = nonNegative("captured");
     totals_.fiberMassAdded = nonNegative("fiberMassAdded");
     totals_.fiberMassRemoved = nonNegative("fiberMassRemoved");
-    totals_.fibersRemoved = requiredCount(totals, "fibersRemoved");
+    totals_.fibersRemoved = dropletFiber::requiredCount(totals, "fibersRemoved");
     totals_.parcelsCapped =
         dropletFiber::getLabelInRange(totals, "parcelsCapped", 0, 0, labelMax);
     // Per liquid species (a state without them: none captured)
@@ -891,8 +747,10 @@ void Foam::functionObjects::dropletFiberCollision::checkWindowBlock
         << " processor(s) this processor owns the block " << block << "."
         << nl << "    Each processor keeps the window of its own block of the"
         << " grid: restart on " << savedProcessors << " processor(s) with"
-        << " the same decomposition, or set 'restart fresh;' to start again"
-        << " from the dictionary's fibers and an empty window."
+        << " the same decomposition; for another count run reconstructPar"
+        << " and reconstructDropletFiberState, then decomposePar; or set"
+        << " 'restart fresh;' to start again from the dictionary's fibers and"
+        << " an empty window."
         << exit(FatalIOError);
 }
 
@@ -916,12 +774,12 @@ void Foam::functionObjects::dropletFiberCollision::restoreWindow
     }
     checkWindowBlock(state, path);
     ::dropletFiber::WindowState window;
-    window.counters = windowCounters(state);
+    window.counters = dropletFiber::windowCounters(state);
     const fileName file = path + ".gridWindow";
-    window.values = windowValues
+    window.values = dropletFiber::windowValues
     (
         file,
-        requiredCount(state, "gridWindowValueCount"),
+        dropletFiber::requiredCount(state, "gridWindowValueCount"),
         !::dropletFiber::DepositLog::holdsLog(window)
     );
     // The core checks the layout against this grid (sizes, slot boxes, the
