@@ -13,7 +13,37 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "dropletFiberCollision.H"
-#include "grid/WindowTransfer.hpp"
+#include "threadCpuTime.H"
+
+#include <fstream>
+#include <string>
+
+// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- This process's resident memory (VmRSS of /proc/self/status) [MiB]; 0
+//  where there is no such file
+Foam::scalar residentMiB()
+{
+    std::ifstream status("/proc/self/status");
+    std::string key;
+    while (status >> key)
+    {
+        if (key == "VmRSS:")
+        {
+            double kB = 0;
+            status >> kB;
+            return kB/1024;
+        }
+        status.ignore(256, '\n');
+    }
+    return 0;
+}
+
+} // End anonymous namespace
+
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -31,15 +61,41 @@ void Foam::functionObjects::dropletFiberCollision::rebalanceBlocks
     {
         return;
     }
+    // Each phase's thread CPU time on this processor [ms] (the weighing,
+    // the old window's parts saved, their exchange, the new window, the
+    // spray's pages faulted in) and the resident memory [MiB] after the
+    // save and at the end: the log's line on the move
+    using stage = dropletFiber::parallelStatistics::stage;
+    scalarList phases(7, Zero);
+    scalar start = ::Foam::dropletFiber::threadCpuTime();
+    auto endPhase = [&](const label phase)
+    {
+        const scalar now = ::Foam::dropletFiber::threadCpuTime();
+        phases[phase] = 1e3*(now - start);
+        start = now;
+    };
     std::vector<::dropletFiber::WindowState> parts;
-    const bool moved = coreCall
+    bool moved = false;
+    parallelStatistics_.timed
     (
-        "re-partitioning the grid blocks",
+        stage::deposit,
         [&]()
         {
-            return blocks_->rebalance
+            moved = coreCall
             (
-                *grid_, stepParcels_, dt, parallelStatistics_, parts
+                "re-partitioning the grid blocks",
+                [&]()
+                {
+                    return blocks_->rebalance
+                    (
+                        *grid_,
+                        stepParcels_,
+                        dt,
+                        gridSettings_.balanceSteps,
+                        parallelStatistics_,
+                        parts
+                    );
+                }
             );
         }
     );
@@ -47,9 +103,13 @@ void Foam::functionObjects::dropletFiberCollision::rebalanceBlocks
     {
         return;
     }
-    // The old grid freed before the new window is joined: at most two
-    // windows' memory at a time
-    using stage = dropletFiber::parallelStatistics::stage;
+    endPhase(0);
+    phases[1] = 1e3*blocks_->savingCpuTime();
+    phases[0] -= phases[1];
+    phases[5] = residentMiB();
+    // The old grid freed before the parts arrive, each part freed once
+    // copied into the new window: the old window and the parts sent, then
+    // the parts received and the new window
     parallelStatistics_.timed
     (
         stage::deposit,
@@ -61,18 +121,26 @@ void Foam::functionObjects::dropletFiberCollision::rebalanceBlocks
                 [&]()
                 {
                     grid_.reset();
-                    ::dropletFiber::WindowState window =
-                        ::dropletFiber::joinedWindowState
-                        (
-                            parts, blocks_->block().owned
-                        );
+                    blocks_->receiveWindowParts(parallelStatistics_, parts);
+                    endPhase(2);
+                    rebuildGrid(nullptr);
+                    grid_->restoreWindowParts(parts);
                     parts.clear();
-                    parts.shrink_to_fit();
-                    rebuildGrid(&window);
+                    endPhase(3);
+                    grid_->makeResident(blocks_->sprayNodes());
+                    endPhase(4);
                 }
             );
         }
     );
+    phases[6] = residentMiB();
+    Pstream::listCombineGather(phases, maxEqOp<scalar>());
+    Pstream::listCombineScatter(phases);
+    Info<< "    window moved (busiest processor's thread CPU ms): weighing "
+        << phases[0] << ", parts saved " << phases[1] << ", exchanged "
+        << phases[2] << ", new window " << phases[3] << ", spray's pages "
+        << phases[4] << "; resident " << phases[5] << " / " << phases[6]
+        << " MiB after the save / the move" << nl;
 }
 
 
