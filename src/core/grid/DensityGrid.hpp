@@ -240,6 +240,8 @@ public:
     // do. Called before the step's deposits (throws std::invalid_argument otherwise, and
     // when the state does not fit this grid). The last step's statistics are kept.
     void restoreWindow(const WindowState& state);
+    // The window's node values in its slots' boxes (what saveWindowValues() holds).
+    std::size_t windowValueCount() const { return window_.savedValueCount(); }
     // restoreWindow(joinedWindowState(parts, ownedBox())) without the joined copy: the
     // parts' values copied into the window and each part freed once copied
     // (AveragingWindow::restoreParts): a re-partition's moved window.

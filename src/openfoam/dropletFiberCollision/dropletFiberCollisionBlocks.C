@@ -92,6 +92,7 @@ void Foam::functionObjects::dropletFiberCollision::rebalanceBlocks
                         stepParcels_,
                         dt,
                         gridSettings_.balanceSteps,
+                        gridSettings_.moveCost,
                         parallelStatistics_,
                         parts
                     );

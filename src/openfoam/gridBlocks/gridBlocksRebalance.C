@@ -58,13 +58,6 @@ constexpr scalar maxNodesShare = 1.5;
 //- A new partition is taken when the busiest block's work falls by more
 constexpr scalar worthMoving = 0.05;
 
-//- Thread CPU time of a move per node of the spray's box (sprayNodes)
-//  changing owner and window slot, on the busiest processor counting the
-//  nodes it sends and receives [s]: its values saved, sent, received,
-//  copied into the new window and its pages faulted in (docs/scaleOut.md:
-//  fitted to the moves of the localised bench at 2 and 4 ranks)
-constexpr scalar costPerMovedNodeSlot = 60e-9;
-
 //- Tiles added to each side of the parcels' tiles (sprayNodes): where the
 //  spray may spread before the next weighing
 constexpr int sprayMargin = 1;
@@ -88,28 +81,6 @@ std::pair<scalar, scalar> busiestAndMean
         sum += w;
     }
     return {most, sum/max(partition.processors(), 1)};
-}
-
-
-//- The most nodes of the spray's box any processor sends or receives
-//  when the blocks go from partition `from` to `to` (its old block's
-//  nodes leaving it plus its new block's nodes arriving)
-std::size_t busiestMovedNodes
-(
-    const ::dropletFiber::IndexBox& spray,
-    const ::dropletFiber::GridPartition& from,
-    const ::dropletFiber::GridPartition& to
-)
-{
-    std::size_t most = 0;
-    for (label p = 0; p < from.processors(); ++p)
-    {
-        const ::dropletFiber::IndexBox was = spray.intersected(from.owned(p));
-        const ::dropletFiber::IndexBox will = spray.intersected(to.owned(p));
-        const std::size_t kept = was.intersected(will).nodeCount();
-        most = std::max(most, was.nodeCount() + will.nodeCount() - 2*kept);
-    }
-    return most;
 }
 
 
@@ -297,6 +268,7 @@ bool Foam::dropletFiber::gridBlocks::rebalance
     const std::vector<::dropletFiber::Parcel>& parcels,
     const double dt,
     const label balanceSteps,
+    const scalar moveCost,
     parallelStatistics& statistics,
     std::vector<::dropletFiber::WindowState>& windowParts
 )
@@ -322,18 +294,17 @@ bool Foam::dropletFiber::gridBlocks::rebalance
     const std::pair<scalar, scalar> now = busiestAndMean(work, partition_);
     const std::pair<scalar, scalar> then = busiestAndMean(work, next);
     const scalar gain = (now.first - then.first)*scalar(balanceSteps);
-    const scalar cost =
-        costPerMovedNodeSlot
-       *scalar
-        (
-            busiestMovedNodes(sprayNodes_, partition_, next)
-           *std::size_t(max(grid.stepsInWindow(), 1))
-        );
+    // A move's cost: every value of the old window is saved and copied into
+    // a new one (the part a processor keeps too), and the spray's pages
+    // faulted in: moveCost per value of the busiest window
+    const scalar values =
+        returnReduce(scalar(grid.windowValueCount()), maxOp<scalar>());
+    const scalar cost = moveCost*values;
     Info<< "    grid blocks weighed: busiest block's predicted work / mean "
         << now.first/max(now.second, VSMALL) << ", re-partitioned "
         << then.first/max(then.second, VSMALL) << "; predicted gain over "
         << balanceSteps << " steps " << 1e3*gain << " ms, move "
-        << 1e3*cost << " ms: ";
+        << 1e3*cost << " ms (" << values << " window values): ";
     if
     (
         next.boxes() == partition_.boxes()
