@@ -786,6 +786,19 @@ void AveragingWindow::makeResident(const IndexBox& box)
     makeBoxResident(total_, live_, box, q);
 }
 
+void AveragingWindow::releasePages(const IndexBox& box)
+{
+    const std::size_t q = static_cast<std::size_t>(nQuantities_);
+    for (std::size_t s = 0; s < slots_.size(); ++s)
+    {
+        if (!slots_[s].empty())
+        {
+            releaseBoxPages(slots_[s], slotLayouts_[s], box, q);
+        }
+    }
+    releaseBoxPages(total_, live_, box, q);
+}
+
 std::size_t AveragingWindow::heldBytes() const
 {
     std::size_t values = total_.size();

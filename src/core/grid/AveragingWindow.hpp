@@ -122,6 +122,10 @@ public:
     // The pages of the nodes of `box` (grid indices; the part in the live box) resident
     // in every allocated slot and the total, values kept (makeBoxResident).
     void makeResident(const IndexBox& box);
+    // The pages wholly inside the rows of `box` given back in every slot and the total:
+    // their values become zero (the slots' boxes are kept): for a window whose part in
+    // box was saved (savePart) and that is to be discarded.
+    void releasePages(const IndexBox& box);
 
     // The window total of every node of liveBox(), laid out over it (brings the stale box
     // up to date first).

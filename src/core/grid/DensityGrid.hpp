@@ -250,6 +250,10 @@ public:
         window_.restoreParts(parts);
         log_.clear(); // node values: no log of these steps
     }
+    // The window's pages wholly inside the rows of `box` given back (their values zero):
+    // a grid that has saved that part of its window (saveWindowPart) and is to be freed,
+    // at a re-partition, holds no second copy of it.
+    void releaseWindowPages(const IndexBox& box) { window_.releasePages(box); }
     // The pages of the nodes of `box` (grid indices) resident in the step values, every
     // window slot and the total, no value changed: a block that takes nodes at a
     // re-partition faults in the spray's part of them at once (NodeValueArray.hpp).

@@ -174,4 +174,45 @@ inline void makeBoxResident(NodeValueArray& values, const IndexBox& layout, cons
     makeValuesResident(values, first, end - first);
 }
 
+// The whole pages inside values[first, first + count) given back to the operating system
+// (madvise MADV_DONTNEED): they read as zero after. For arrays about to be freed whose
+// values are copied out part by part (a balanced block's window at a move).
+inline void releaseValuePages(NodeValueArray& values, std::size_t first, std::size_t count)
+{
+    if (count == 0 || first >= values.size())
+    {
+        return;
+    }
+    count = std::min(count, values.size() - first);
+    static const std::uintptr_t page = static_cast<std::uintptr_t>(::sysconf(_SC_PAGESIZE));
+    const auto begin = (reinterpret_cast<std::uintptr_t>(values.data() + first) + page - 1) / page * page;
+    const auto end = reinterpret_cast<std::uintptr_t>(values.data() + first + count) / page * page;
+    if (end > begin && values.size() * sizeof(double) >= ZeroedAllocator<double>::pagesFrom)
+    {
+        ::madvise(reinterpret_cast<void*>(begin), end - begin, MADV_DONTNEED);
+    }
+}
+
+// releaseValuePages over the rows of `box` (as makeBoxResident): the pages wholly inside
+// runs of the box's rows.
+inline void releaseBoxPages(NodeValueArray& values, const IndexBox& layout, const IndexBox& box,
+                            std::size_t nQuantities)
+{
+    std::size_t first = 0;
+    std::size_t end = 0;
+    forEachRowIn(box.intersected(layout), layout,
+                 [&](const IndexRow& row)
+                 {
+                     const std::size_t from = row.first * nQuantities;
+                     if (from != end)
+                     {
+                         releaseValuePages(values, first, end - first);
+                         first = from;
+                     }
+                     end = from + row.length * nQuantities;
+                 });
+    releaseValuePages(values, first, end - first);
+}
+
 } // namespace dropletFiber
+

@@ -224,7 +224,7 @@ void writeState(UOPstream& os, const ::dropletFiber::WindowState& state)
 
 void Foam::dropletFiber::gridBlocks::sendWindowParts
 (
-    const ::dropletFiber::DensityGrid& grid,
+    ::dropletFiber::DensityGrid& grid,
     const ::dropletFiber::GridPartition& next,
     parallelStatistics& statistics,
     std::vector<::dropletFiber::WindowState>& kept
@@ -243,13 +243,17 @@ void Foam::dropletFiber::gridBlocks::sendWindowParts
         {
             continue;
         }
+        // Each part's pages given back once saved: the window and its
+        // parts are not held twice
         if (proci == Pstream::myProcNo())
         {
             kept.push_back(grid.saveWindowPart(part));
+            grid.releaseWindowPages(part);
             continue;
         }
         // Straight into the send buffer: one copy of the part at a time
         const ::dropletFiber::WindowState state = grid.saveWindowPart(part);
+        grid.releaseWindowPages(part);
         UOPstream os(proci, *windowBuffers_);
         writeState(os, state);
         statistics.countSent
@@ -264,7 +268,7 @@ void Foam::dropletFiber::gridBlocks::sendWindowParts
 
 bool Foam::dropletFiber::gridBlocks::rebalance
 (
-    const ::dropletFiber::DensityGrid& grid,
+    ::dropletFiber::DensityGrid& grid,
     const std::vector<::dropletFiber::Parcel>& parcels,
     const double dt,
     const label balanceSteps,

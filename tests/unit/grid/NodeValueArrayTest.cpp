@@ -102,3 +102,37 @@ TEST(NodeValueArray, BoxResidentPagesAreThoseOfTheBoxRows)
     }
     EXPECT_EQ(nonZero, 1U);
 }
+
+TEST(NodeValueArray, ReleasedBoxGivesBackItsWholePagesOnly)
+{
+    // A written array over 64 x 32 x 16 nodes, 7 values a node: the rows j 0..31 of
+    // planes k 4..7 (one run of 4 x 32 rows, 458 752 bytes) given back; every page wholly
+    // inside that run reads zero and is not resident, every value outside it is kept
+    const IndexBox layout{{{0, 0, 0}}, {{63, 31, 15}}};
+    const IndexBox box{{{0, 0, 4}}, {{63, 31, 7}}};
+    const std::size_t q = 7;
+    NodeValueArray values = zeroedNodeValues(layout.nodeCount() * q);
+    for (std::size_t v = 0; v < values.size(); ++v)
+    {
+        values[v] = static_cast<double>(v + 1);
+    }
+    releaseBoxPages(values, layout, box, q);
+    const std::size_t page = static_cast<std::size_t>(::sysconf(_SC_PAGESIZE));
+    const std::size_t first = flatIndexInBox(layout, 0, 0, 4) * q * sizeof(double);
+    const std::size_t end = (flatIndexInBox(layout, 63, 31, 7) + 1) * q * sizeof(double);
+    const std::size_t firstPage = (first + page - 1) / page;
+    const std::size_t endPage = end / page;
+    ASSERT_GT(endPage, firstPage + 100);
+    std::vector<unsigned char> resident((values.size() * sizeof(double) + page - 1) / page);
+    ASSERT_EQ(::mincore(values.data(), resident.size() * page, resident.data()), 0);
+    for (std::size_t p = 0; p < resident.size(); ++p)
+    {
+        EXPECT_EQ(resident[p] & 1U, p >= firstPage && p < endPage ? 0U : 1U) << "page " << p;
+    }
+    for (std::size_t v = 0; v < values.size(); ++v)
+    {
+        const std::size_t byte = v * sizeof(double);
+        const bool released = byte >= firstPage * page && byte < endPage * page;
+        ASSERT_EQ(values[v], released ? 0.0 : static_cast<double>(v + 1)) << v;
+    }
+}
