@@ -43,9 +43,7 @@ struct ZeroedAllocator
         void* memory = nullptr;
         if (bytes >= pagesFrom)
         {
-            memory
-                = ::mmap(nullptr, bytes, PROT_READ | PROT_WRITE,
-                         MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+            memory = ::mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
             memory = memory == MAP_FAILED ? nullptr : memory;
         }
         else
@@ -215,4 +213,3 @@ inline void releaseBoxPages(NodeValueArray& values, const IndexBox& layout, cons
 }
 
 } // namespace dropletFiber
-

@@ -42,6 +42,35 @@ Foam::scalar residentMiB()
     return 0;
 }
 
+//- A move's phases on this processor: thread CPU time [ms] of the weighing,
+//  the old window's parts saved, their exchange, the new window and the
+//  spray's pages faulted in; resident memory [MiB] after the save and at
+//  the end; the log's line gives each one's maximum over processors
+struct movePhases
+{
+    Foam::scalarList ms = Foam::scalarList(7, Foam::Zero);
+    Foam::scalar start = Foam::dropletFiber::threadCpuTime();
+
+    void end(const Foam::label phase)
+    {
+        const Foam::scalar now = Foam::dropletFiber::threadCpuTime();
+        ms[phase] = 1e3*(now - start);
+        start = now;
+    }
+
+    void report()
+    {
+        using namespace Foam;
+        Pstream::listCombineGather(ms, maxEqOp<scalar>());
+        Pstream::listCombineScatter(ms);
+        Info<< "    window moved (busiest processor's thread CPU ms): weighing "
+            << ms[0] << ", parts saved " << ms[1] << ", exchanged " << ms[2]
+            << ", new window " << ms[3] << ", spray's pages " << ms[4]
+            << "; resident " << ms[5] << " / " << ms[6]
+            << " MiB after the save / the move" << nl;
+    }
+};
+
 } // End anonymous namespace
 
 
@@ -61,19 +90,8 @@ void Foam::functionObjects::dropletFiberCollision::rebalanceBlocks
     {
         return;
     }
-    // Each phase's thread CPU time on this processor [ms] (the weighing,
-    // the old window's parts saved, their exchange, the new window, the
-    // spray's pages faulted in) and the resident memory [MiB] after the
-    // save and at the end: the log's line on the move
     using stage = dropletFiber::parallelStatistics::stage;
-    scalarList phases(7, Zero);
-    scalar start = ::Foam::dropletFiber::threadCpuTime();
-    auto endPhase = [&](const label phase)
-    {
-        const scalar now = ::Foam::dropletFiber::threadCpuTime();
-        phases[phase] = 1e3*(now - start);
-        start = now;
-    };
+    movePhases phases;
     std::vector<::dropletFiber::WindowState> parts;
     bool moved = false;
     parallelStatistics_.timed
@@ -104,13 +122,13 @@ void Foam::functionObjects::dropletFiberCollision::rebalanceBlocks
     {
         return;
     }
-    endPhase(0);
-    phases[1] = 1e3*blocks_->savingCpuTime();
-    phases[0] -= phases[1];
-    phases[5] = residentMiB();
-    // The old grid freed before the parts arrive, each part freed once
-    // copied into the new window: the old window and the parts sent, then
-    // the parts received and the new window
+    phases.end(0);
+    phases.ms[1] = 1e3*blocks_->savingCpuTime();
+    phases.ms[0] -= phases.ms[1];
+    phases.ms[5] = residentMiB();
+    // The old window's pages were given back part by part as saved; the old
+    // grid is freed before the parts arrive, and each part once copied into
+    // the new window
     parallelStatistics_.timed
     (
         stage::deposit,
@@ -123,25 +141,19 @@ void Foam::functionObjects::dropletFiberCollision::rebalanceBlocks
                 {
                     grid_.reset();
                     blocks_->receiveWindowParts(parallelStatistics_, parts);
-                    endPhase(2);
+                    phases.end(2);
                     rebuildGrid(nullptr);
                     grid_->restoreWindowParts(parts);
                     parts.clear();
-                    endPhase(3);
+                    phases.end(3);
                     grid_->makeResident(blocks_->sprayNodes());
-                    endPhase(4);
+                    phases.end(4);
                 }
             );
         }
     );
-    phases[6] = residentMiB();
-    Pstream::listCombineGather(phases, maxEqOp<scalar>());
-    Pstream::listCombineScatter(phases);
-    Info<< "    window moved (busiest processor's thread CPU ms): weighing "
-        << phases[0] << ", parts saved " << phases[1] << ", exchanged "
-        << phases[2] << ", new window " << phases[3] << ", spray's pages "
-        << phases[4] << "; resident " << phases[5] << " / " << phases[6]
-        << " MiB after the save / the move" << nl;
+    phases.ms[6] = residentMiB();
+    phases.report();
 }
 
 

@@ -84,6 +84,26 @@ std::pair<scalar, scalar> busiestAndMean
 }
 
 
+//- The nodes of the tiles of box, grown by sprayMargin tiles a side
+::dropletFiber::IndexBox grownNodes
+(
+    const ::dropletFiber::DepositWork& work,
+    ::dropletFiber::IndexBox tiles
+)
+{
+    if (tiles.empty())
+    {
+        return ::dropletFiber::IndexBox();
+    }
+    for (int d = 0; d < 3; ++d)
+    {
+        tiles.lo[d] = max(tiles.lo[d] - sprayMargin, 0);
+        tiles.hi[d] = min(tiles.hi[d] + sprayMargin, work.tiles()[d] - 1);
+    }
+    return work.touched().nodesOf(tiles);
+}
+
+
 //- A window part as its counters (labels) and its values as one binary
 //  block (no per-value token)
 void writeState(UOPstream& os, const ::dropletFiber::WindowState& state)
@@ -206,16 +226,7 @@ void writeState(UOPstream& os, const ::dropletFiber::WindowState& state)
                 }
             }
             work.addTouched(work.touched().nodesOf(touched), costPerTouchedNode);
-            for (int d = 0; d < 3; ++d)
-            {
-                touched.lo[d] = max(touched.lo[d] - sprayMargin, 0);
-                touched.hi[d] =
-                    min(touched.hi[d] + sprayMargin, work.tiles()[d] - 1);
-            }
-            sprayNodes =
-                touched.empty()
-              ? ::dropletFiber::IndexBox()
-              : work.touched().nodesOf(touched);
+            sprayNodes = grownNodes(work, touched);
         }
     );
     return work;
