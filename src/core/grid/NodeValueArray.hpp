@@ -5,10 +5,11 @@
 // calloc. (calloc alone would not do: glibc serves blocks below its mmap threshold, which
 // grows to 32 MB as such blocks are freed, from the heap, and zeroes all of them.) A
 // block's resident memory then follows the pages its deposits touch, not its size.
-// makeRowsResident() faults in chosen rows' pages at once (values kept): balanced grid
-// blocks, whose windows move at each re-partition, pre-fault the spray's box there,
-// else the blocks at the spray's edge pay the first touch of their pages in the steps
-// that follow (docs/scaleOut.md: 4 ranks, steady deposit max / mean 1.59 lazy).
+// makeBoxResident() faults in a box's pages at once (values kept): balanced grid blocks,
+// whose windows move at each re-partition, pre-fault the spray's box there, else the
+// blocks at the spray's edge pay the first touch of their pages in the steps that
+// follow (docs/scaleOut.md: 4 ranks, steady deposit max / mean 1.59 lazy);
+// releaseBoxPages() gives a box's pages back as a moved window's parts are saved.
 #pragma once
 
 #include "grid/GridSpec.hpp"
