@@ -1,4 +1,5 @@
 #include "grid/AveragingWindow.hpp"
+#include "grid/WindowTransfer.hpp"
 
 #include "grid/LiveBox.hpp"
 
@@ -509,6 +510,14 @@ WindowState AveragingWindow::savePart(const IndexBox& part) const
                       nQuantities_,       length_,       filled_,       committed_,
                       part.lo[0],         part.lo[1],    part.lo[2],    part.hi[0],
                       part.hi[1],         part.hi[2]};
+    // Reserved: a part is up to a window's size, and growing by doubling would copy and
+    // fault it in about twice over
+    std::size_t count = 0;
+    for (int age = 0; age < filled_; ++age)
+    {
+        count += toGrid(slotBoxes_[slotIndex(age)]).intersected(part).nodeCount();
+    }
+    state.values.reserve(count * static_cast<std::size_t>(nQuantities_));
     for (int age = 0; age < filled_; ++age)
     {
         const IndexBox kept = toGrid(slotBoxes_[slotIndex(age)]).intersected(part);
@@ -637,6 +646,57 @@ void AveragingWindow::restore(const WindowState& state)
     recomputeTotal(box());
 }
 
+void AveragingWindow::restoreParts(std::vector<WindowState>& parts)
+{
+    checkWindowParts(parts, region_);
+    const std::vector<std::int64_t>& first = parts.front().counters;
+    if (first[1] != gridNodes_[0] || first[2] != gridNodes_[1] || first[3] != gridNodes_[2]
+        || first[4] != nQuantities_ || first[6] > length_)
+    {
+        failRestart("window parts of another grid, quantities or a longer window");
+    }
+    const std::size_t filled = static_cast<std::size_t>(first[6]);
+    // Every slot's box: the union of the parts' (zero between them)
+    std::vector<IndexBox> boxes(filled);
+    for (const WindowState& part : parts)
+    {
+        for (std::size_t s = 0; s < filled; ++s)
+        {
+            boxes[s] = boxes[s].united(windowPartSlotBox(part, s));
+        }
+    }
+    clear(first[7]);
+    if (tracksLive_)
+    {
+        IndexBox held;
+        for (const IndexBox& b : boxes)
+        {
+            held = held.united(b);
+        }
+        relayout(held);
+    }
+    for (std::size_t s = 0; s < filled; ++s)
+    {
+        slots_[s] = zeroedNodeValues(total_.size());
+        slotLayouts_[s] = live_;
+        slotBoxes_[s] = boxes[s].empty() ? IndexBox{} : toRegion(boxes[s]);
+    }
+    filled_ = static_cast<int>(filled);
+    for (WindowState& part : parts)
+    {
+        std::size_t position = 0;
+        for (std::size_t s = 0; s < filled; ++s)
+        {
+            const IndexBox from = windowPartSlotBox(part, s);
+            copySavedSlot(part.values.data() + position, from, from, slots_[s]);
+            position += from.nodeCount() * static_cast<std::size_t>(nQuantities_);
+        }
+        part.values.clear();
+        part.values.shrink_to_fit();
+    }
+    recomputeTotal(box());
+}
+
 void AveragingWindow::clear(std::int64_t committed)
 {
     for (auto& slot : slots_)
@@ -711,6 +771,32 @@ void AveragingWindow::relayout(const IndexBox& grown)
     {
         slotBoxes_[s] = toRegion(slotBoxes[s]);
     }
+}
+
+void AveragingWindow::makeResident(const IndexBox& box)
+{
+    const std::size_t q = static_cast<std::size_t>(nQuantities_);
+    for (std::size_t s = 0; s < slots_.size(); ++s)
+    {
+        if (!slots_[s].empty())
+        {
+            makeBoxResident(slots_[s], slotLayouts_[s], box, q);
+        }
+    }
+    makeBoxResident(total_, live_, box, q);
+}
+
+void AveragingWindow::releasePages(const IndexBox& box)
+{
+    const std::size_t q = static_cast<std::size_t>(nQuantities_);
+    for (std::size_t s = 0; s < slots_.size(); ++s)
+    {
+        if (!slots_[s].empty())
+        {
+            releaseBoxPages(slots_[s], slotLayouts_[s], box, q);
+        }
+    }
+    releaseBoxPages(total_, live_, box, q);
 }
 
 std::size_t AveragingWindow::heldBytes() const

@@ -119,6 +119,13 @@ public:
     void growLive(const IndexBox& box);
     // Bytes of the slots, total and stamps allocated.
     std::size_t heldBytes() const;
+    // The pages of the nodes of `box` (grid indices; the part in the live box) resident
+    // in every allocated slot and the total, values kept (makeBoxResident).
+    void makeResident(const IndexBox& box);
+    // The pages wholly inside the rows of `box` given back in every slot and the total:
+    // their values become zero (the slots' boxes are kept): for a window whose part in
+    // box was saved (savePart) and that is to be discarded.
+    void releasePages(const IndexBox& box);
 
     // The window total of every node of liveBox(), laid out over it (brings the stale box
     // up to date first).
@@ -156,6 +163,12 @@ public:
     // with a different window length is accepted: the newest min(filled, length) steps
     // are kept. A live-box window's live box becomes the union of the kept slots' boxes.
     void restore(const WindowState& state);
+    // restore(joinedWindowState(parts, region())) without the joined state: each part's
+    // slot values copied straight into the slots, and the part freed (its values emptied)
+    // once copied; the same slots, boxes and total, bit for bit. The parts as for
+    // joinedWindowState (WindowTransfer.hpp; throws std::invalid_argument before this
+    // window changes), a window length of at least theirs.
+    void restoreParts(std::vector<WindowState>& parts);
     // Empties the window (no step in it), with `committed` steps counted as committed
     // before (a replay of the steps that follow rebuilds the rest: DepositLog).
     void clear(std::int64_t committed);

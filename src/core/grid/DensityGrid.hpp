@@ -240,6 +240,28 @@ public:
     // do. Called before the step's deposits (throws std::invalid_argument otherwise, and
     // when the state does not fit this grid). The last step's statistics are kept.
     void restoreWindow(const WindowState& state);
+    // The window's node values in its slots' boxes (what saveWindowValues() holds).
+    std::size_t windowValueCount() const { return window_.savedValueCount(); }
+    // restoreWindow(joinedWindowState(parts, ownedBox())) without the joined copy: the
+    // parts' values copied into the window and each part freed once copied
+    // (AveragingWindow::restoreParts): a re-partition's moved window.
+    void restoreWindowParts(std::vector<WindowState>& parts)
+    {
+        window_.restoreParts(parts);
+        log_.clear(); // node values: no log of these steps
+    }
+    // The window's pages wholly inside the rows of `box` given back (their values zero):
+    // a grid that has saved that part of its window (saveWindowPart) and is to be freed,
+    // at a re-partition, holds no second copy of it.
+    void releaseWindowPages(const IndexBox& box) { window_.releasePages(box); }
+    // The pages of the nodes of `box` (grid indices) resident in the step values, every
+    // window slot and the total, no value changed: a block that takes nodes at a
+    // re-partition faults in the spray's part of them at once (NodeValueArray.hpp).
+    void makeResident(const IndexBox& box)
+    {
+        step_.makeResident(box);
+        window_.makeResident(box);
+    }
     // Parcels in the deposit log's committed steps.
     std::size_t loggedParcels() const { return log_.loggedParcels(); }
 

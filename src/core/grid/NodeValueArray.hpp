@@ -4,38 +4,29 @@
 // zero already and given a physical page only when first touched; smaller ones come from
 // calloc. (calloc alone would not do: glibc serves blocks below its mmap threshold, which
 // grows to 32 MB as such blocks are freed, from the heap, and zeroes all of them.) A
-// window slot or step array laid out over a block's live box (LiveBox.hpp) then costs
-// the pages its deposits touch, not the whole box: the window's fill follows the spray.
-// populateNodeValuePages(true) maps the pages populated instead (resident and zero at
-// once, as a zero-filled vector): balanced grid blocks, whose windows move at each
-// re-partition, otherwise pay the first touch of their pages in the steps that follow,
-// on the blocks at the spray's edge (docs/scaleOut.md: 4 ranks, steady deposit max /
-// mean 1.59 lazy against 1.22 populated). Process-wide: every array allocated after.
+// block's resident memory then follows the pages its deposits touch, not its size.
+// makeBoxResident() faults in a box's pages at once (values kept): balanced grid blocks,
+// whose windows move at each re-partition, pre-fault the spray's box there, else the
+// blocks at the spray's edge pay the first touch of their pages in the steps that
+// follow (docs/scaleOut.md: 4 ranks, steady deposit max / mean 1.59 lazy);
+// releaseBoxPages() gives a box's pages back as a moved window's parts are saved.
 #pragma once
 
+#include "grid/GridSpec.hpp"
+
 #include <algorithm>
-#include <atomic>
 #include <cstddef>
+#include <cstdint>
 #include <cstdlib>
 #include <new>
 #include <utility>
 
 #include <sys/mman.h>
+#include <unistd.h>
 #include <vector>
 
 namespace dropletFiber
 {
-
-// Whether arrays of pagesFrom bytes or more are mapped populated (see above); false.
-inline std::atomic<bool>& nodeValuePagesPopulated()
-{
-    static std::atomic<bool> populated{false};
-    return populated;
-}
-inline void populateNodeValuePages(bool populated)
-{
-    nodeValuePagesPopulated() = populated;
-}
 
 // Zeroed storage; elements constructed without arguments are left as they are (zero).
 template <class T>
@@ -53,9 +44,7 @@ struct ZeroedAllocator
         void* memory = nullptr;
         if (bytes >= pagesFrom)
         {
-            memory
-                = ::mmap(nullptr, bytes, PROT_READ | PROT_WRITE,
-                         MAP_PRIVATE | MAP_ANONYMOUS | (nodeValuePagesPopulated() ? MAP_POPULATE : 0), -1, 0);
+            memory = ::mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
             memory = memory == MAP_FAILED ? nullptr : memory;
         }
         else
@@ -132,6 +121,96 @@ inline bool operator!=(const std::vector<double>& a, const NodeValueArray& b)
 inline NodeValueArray zeroedNodeValues(std::size_t size)
 {
     return NodeValueArray(size);
+}
+
+// The pages holding values[first, first + count) resident and writable, their values
+// kept: one madvise(MADV_POPULATE_WRITE) (Linux 5.14 on; MADV_WILLNEED does not fault
+// anonymous memory), else each page's first byte written back as read. Each page's
+// zeroing then costs here, not in the first deposit that writes it.
+inline void makeValuesResident(NodeValueArray& values, std::size_t first, std::size_t count)
+{
+    if (count == 0 || first >= values.size())
+    {
+        return;
+    }
+    count = std::min(count, values.size() - first);
+    static const std::uintptr_t page = static_cast<std::uintptr_t>(::sysconf(_SC_PAGESIZE));
+    const auto begin = reinterpret_cast<std::uintptr_t>(values.data() + first) / page * page;
+    const auto end = reinterpret_cast<std::uintptr_t>(values.data() + first + count);
+#ifdef MADV_POPULATE_WRITE
+    if (::madvise(reinterpret_cast<void*>(begin), end - begin, MADV_POPULATE_WRITE) == 0)
+    {
+        return;
+    }
+#endif
+    for (std::uintptr_t at = std::max(begin, reinterpret_cast<std::uintptr_t>(values.data())); at < end;
+         at = (at / page + 1) * page)
+    {
+        volatile unsigned char* byte = reinterpret_cast<unsigned char*>(at);
+        *byte = *byte;
+    }
+}
+
+// makeValuesResident over the values of `box`'s nodes (nQuantities each; grid indices,
+// the part outside `layout` ignored) in an array laid out over `layout`
+// (flatIndexInBox): rows that follow each other in memory are one range.
+inline void makeBoxResident(NodeValueArray& values, const IndexBox& layout, const IndexBox& box,
+                            std::size_t nQuantities)
+{
+    std::size_t first = 0;
+    std::size_t end = 0;
+    forEachRowIn(box.intersected(layout), layout,
+                 [&](const IndexRow& row)
+                 {
+                     const std::size_t from = row.first * nQuantities;
+                     if (from != end)
+                     {
+                         makeValuesResident(values, first, end - first);
+                         first = from;
+                     }
+                     end = from + row.length * nQuantities;
+                 });
+    makeValuesResident(values, first, end - first);
+}
+
+// The whole pages inside values[first, first + count) given back to the operating system
+// (madvise MADV_DONTNEED): they read as zero after. For arrays about to be freed whose
+// values are copied out part by part (a balanced block's window at a move).
+inline void releaseValuePages(NodeValueArray& values, std::size_t first, std::size_t count)
+{
+    if (count == 0 || first >= values.size())
+    {
+        return;
+    }
+    count = std::min(count, values.size() - first);
+    static const std::uintptr_t page = static_cast<std::uintptr_t>(::sysconf(_SC_PAGESIZE));
+    const auto begin = (reinterpret_cast<std::uintptr_t>(values.data() + first) + page - 1) / page * page;
+    const auto end = reinterpret_cast<std::uintptr_t>(values.data() + first + count) / page * page;
+    if (end > begin && values.size() * sizeof(double) >= ZeroedAllocator<double>::pagesFrom)
+    {
+        ::madvise(reinterpret_cast<void*>(begin), end - begin, MADV_DONTNEED);
+    }
+}
+
+// releaseValuePages over the rows of `box` (as makeBoxResident): the pages wholly inside
+// runs of the box's rows.
+inline void releaseBoxPages(NodeValueArray& values, const IndexBox& layout, const IndexBox& box,
+                            std::size_t nQuantities)
+{
+    std::size_t first = 0;
+    std::size_t end = 0;
+    forEachRowIn(box.intersected(layout), layout,
+                 [&](const IndexRow& row)
+                 {
+                     const std::size_t from = row.first * nQuantities;
+                     if (from != end)
+                     {
+                         releaseValuePages(values, first, end - first);
+                         first = from;
+                     }
+                     end = from + row.length * nQuantities;
+                 });
+    releaseValuePages(values, first, end - first);
 }
 
 } // namespace dropletFiber

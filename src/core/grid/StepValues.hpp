@@ -58,6 +58,8 @@ public:
     const IndexBox& liveBox() const { return live_; }
     // The stored nodes the step touched (grid indices).
     const IndexBox& touchedBox() const { return stepBox_; }
+    // The array's pages of the nodes of `box` (grid indices) resident, values kept.
+    void makeResident(const IndexBox& box) { makeBoxResident(step_, live_, box, nQuantities); }
     // liveBox().nodeCount() * nQuantities doubles over the live box (flatIndexInBox),
     // zero outside touchedBox(); the pending rows cleared first.
     NodeValueArray& values()

@@ -32,9 +32,9 @@ void appendBox(std::vector<std::int64_t>& c, const IndexBox& b)
     c.insert(c.end(), {b.lo[0], b.lo[1], b.lo[2], b.hi[0], b.hi[1], b.hi[2]});
 }
 
-// Each part's header checked against the first's and its slot count; the parts' blocks
-// disjoint, inside `block` and holding all of it.
-void checkParts(const std::vector<WindowState>& parts, const IndexBox& block)
+} // namespace
+
+void checkWindowParts(const std::vector<WindowState>& parts, const IndexBox& block)
 {
     if (parts.empty())
     {
@@ -67,6 +67,21 @@ void checkParts(const std::vector<WindowState>& parts, const IndexBox& block)
             }
         }
         nodes += b.nodeCount();
+        std::size_t values = 0;
+        for (std::size_t slot = 0; slot < static_cast<std::size_t>(c[6]); ++slot)
+        {
+            const IndexBox s = boxAt(c, blockHeader + 6 * slot);
+            if (!s.empty() && s.intersected(b) != s)
+            {
+                fail("part " + std::to_string(p) + "'s slot box " + boxText(s) + " outside its block");
+            }
+            values += s.nodeCount() * static_cast<std::size_t>(c[4]);
+        }
+        if (values != parts[p].values.size())
+        {
+            fail("part " + std::to_string(p) + " holds " + std::to_string(parts[p].values.size())
+                 + " values, its slot boxes " + std::to_string(values));
+        }
     }
     if (nodes != block.nodeCount())
     {
@@ -74,6 +89,19 @@ void checkParts(const std::vector<WindowState>& parts, const IndexBox& block)
              + std::to_string(block.nodeCount()) + " nodes");
     }
 }
+
+IndexBox windowPartBlock(const WindowState& part)
+{
+    return boxAt(part.counters, windowStateHeaderSize);
+}
+
+IndexBox windowPartSlotBox(const WindowState& part, std::size_t slot)
+{
+    return boxAt(part.counters, blockHeader + 6 * slot);
+}
+
+namespace
+{
 
 // Part values of slot box `from` into the joined slot's values over `to`.
 void copyInto(const double* from, const IndexBox& fromBox, const IndexBox& toBox, std::size_t q,
@@ -91,7 +119,7 @@ void copyInto(const double* from, const IndexBox& fromBox, const IndexBox& toBox
 
 WindowState joinedWindowState(const std::vector<WindowState>& parts, const IndexBox& block)
 {
-    checkParts(parts, block);
+    checkWindowParts(parts, block);
     const std::vector<std::int64_t>& first = parts.front().counters;
     const std::size_t q = static_cast<std::size_t>(first[4]);
     const std::size_t filled = static_cast<std::size_t>(first[6]);

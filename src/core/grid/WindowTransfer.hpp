@@ -21,4 +21,12 @@ namespace dropletFiber
 // std::invalid_argument naming what does not fit.
 WindowState joinedWindowState(const std::vector<WindowState>& parts, const IndexBox& block);
 
+// Throws std::invalid_argument (as joinedWindowState) unless the parts can be joined over
+// `block`: the same grid and window, blocks disjoint and holding all of `block`, each
+// part's values those of its slot boxes, each slot box inside its part's block.
+void checkWindowParts(const std::vector<WindowState>& parts, const IndexBox& block);
+// A part's block and its slot boxes (grid indices; empty where the slot is zero).
+IndexBox windowPartBlock(const WindowState& part);
+IndexBox windowPartSlotBox(const WindowState& part, std::size_t slot);
+
 } // namespace dropletFiber

@@ -171,12 +171,6 @@ void Foam::functionObjects::dropletFiberCollision::buildStatefulParts
     );
     // The blocks first: the memory check counts the largest block's nodes
     checkMemory(dict);
-    if (Pstream::parRun() && gridSettings_.balancedBlocks)
-    {
-        // Moved windows' pages resident at once, not touched in the steps
-        // after a move on the spray's blocks (NodeValueArray.hpp)
-        ::dropletFiber::populateNodeValuePages(true);
-    }
     grid_.reset
     (
         dropletFiber::checkedCoreCall

@@ -13,7 +13,66 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "dropletFiberCollision.H"
-#include "grid/WindowTransfer.hpp"
+#include "threadCpuTime.H"
+
+#include <fstream>
+#include <string>
+
+// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- This process's resident memory (VmRSS of /proc/self/status) [MiB]; 0
+//  where there is no such file
+Foam::scalar residentMiB()
+{
+    std::ifstream status("/proc/self/status");
+    std::string key;
+    while (status >> key)
+    {
+        if (key == "VmRSS:")
+        {
+            double kB = 0;
+            status >> kB;
+            return kB/1024;
+        }
+        status.ignore(256, '\n');
+    }
+    return 0;
+}
+
+//- A move's phases on this processor: thread CPU time [ms] of the weighing,
+//  the old window's parts saved, their exchange, the new window and the
+//  spray's pages faulted in; resident memory [MiB] after the save and at
+//  the end; the log's line gives each one's maximum over processors
+struct movePhases
+{
+    Foam::scalarList ms = Foam::scalarList(7, Foam::Zero);
+    Foam::scalar start = Foam::dropletFiber::threadCpuTime();
+
+    void end(const Foam::label phase)
+    {
+        const Foam::scalar now = Foam::dropletFiber::threadCpuTime();
+        ms[phase] = 1e3*(now - start);
+        start = now;
+    }
+
+    void report()
+    {
+        using namespace Foam;
+        Pstream::listCombineGather(ms, maxEqOp<scalar>());
+        Pstream::listCombineScatter(ms);
+        Info<< "    window moved (busiest processor's thread CPU ms): weighing "
+            << ms[0] << ", parts saved " << ms[1] << ", exchanged " << ms[2]
+            << ", new window " << ms[3] << ", spray's pages " << ms[4]
+            << "; resident " << ms[5] << " / " << ms[6]
+            << " MiB after the save / the move" << nl;
+    }
+};
+
+} // End anonymous namespace
+
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -31,15 +90,31 @@ void Foam::functionObjects::dropletFiberCollision::rebalanceBlocks
     {
         return;
     }
+    using stage = dropletFiber::parallelStatistics::stage;
+    movePhases phases;
     std::vector<::dropletFiber::WindowState> parts;
-    const bool moved = coreCall
+    bool moved = false;
+    parallelStatistics_.timed
     (
-        "re-partitioning the grid blocks",
+        stage::deposit,
         [&]()
         {
-            return blocks_->rebalance
+            moved = coreCall
             (
-                *grid_, stepParcels_, dt, parallelStatistics_, parts
+                "re-partitioning the grid blocks",
+                [&]()
+                {
+                    return blocks_->rebalance
+                    (
+                        *grid_,
+                        stepParcels_,
+                        dt,
+                        gridSettings_.balanceSteps,
+                        gridSettings_.moveCost,
+                        parallelStatistics_,
+                        parts
+                    );
+                }
             );
         }
     );
@@ -47,9 +122,13 @@ void Foam::functionObjects::dropletFiberCollision::rebalanceBlocks
     {
         return;
     }
-    // The old grid freed before the new window is joined: at most two
-    // windows' memory at a time
-    using stage = dropletFiber::parallelStatistics::stage;
+    phases.end(0);
+    phases.ms[1] = 1e3*blocks_->savingCpuTime();
+    phases.ms[0] -= phases.ms[1];
+    phases.ms[5] = residentMiB();
+    // The old window's pages were given back part by part as saved; the old
+    // grid is freed before the parts arrive, and each part once copied into
+    // the new window
     parallelStatistics_.timed
     (
         stage::deposit,
@@ -61,18 +140,20 @@ void Foam::functionObjects::dropletFiberCollision::rebalanceBlocks
                 [&]()
                 {
                     grid_.reset();
-                    ::dropletFiber::WindowState window =
-                        ::dropletFiber::joinedWindowState
-                        (
-                            parts, blocks_->block().owned
-                        );
+                    blocks_->receiveWindowParts(parallelStatistics_, parts);
+                    phases.end(2);
+                    rebuildGrid(nullptr);
+                    grid_->restoreWindowParts(parts);
                     parts.clear();
-                    parts.shrink_to_fit();
-                    rebuildGrid(&window);
+                    phases.end(3);
+                    grid_->makeResident(blocks_->sprayNodes());
+                    phases.end(4);
                 }
             );
         }
     );
+    phases.ms[6] = residentMiB();
+    phases.report();
 }
 
 

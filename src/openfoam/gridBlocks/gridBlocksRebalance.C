@@ -28,6 +28,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "gridBlocks.H"
+#include "threadCpuTime.H"
 
 #include <algorithm>
 #include <utility>
@@ -57,6 +58,10 @@ constexpr scalar maxNodesShare = 1.5;
 //- A new partition is taken when the busiest block's work falls by more
 constexpr scalar worthMoving = 0.05;
 
+//- Tiles added to each side of the parcels' tiles (sprayNodes): where the
+//  spray may spread before the next weighing
+constexpr int sprayMargin = 1;
+
 
 //- The busiest block's work and the mean over the blocks (each block's
 //  work: the parcels whose deposit boxes meet it, in full)
@@ -78,36 +83,64 @@ std::pair<scalar, scalar> busiestAndMean
 }
 
 
-void appendState
+//- The nodes of the tiles of box, grown by sprayMargin tiles a side
+::dropletFiber::IndexBox grownNodes
 (
-    DynamicList<scalar>& out,
-    const ::dropletFiber::WindowState& state
+    const ::dropletFiber::DepositWork& work,
+    ::dropletFiber::IndexBox tiles
 )
 {
-    out.append(scalar(state.counters.size()));
-    for (const std::int64_t c : state.counters)
+    if (tiles.empty())
     {
-        out.append(scalar(c));
+        return ::dropletFiber::IndexBox();
     }
-    out.append(scalar(state.values.size()));
-    for (const double v : state.values)
+    for (int d = 0; d < 3; ++d)
     {
-        out.append(v);
+        tiles.lo[d] = max(tiles.lo[d] - sprayMargin, 0);
+        tiles.hi[d] = min(tiles.hi[d] + sprayMargin, work.tiles()[d] - 1);
     }
+    return work.touched().nodesOf(tiles);
 }
 
 
-::dropletFiber::WindowState readState(const List<scalar>& in)
+//- A window part as its counters (labels) and its values as one binary
+//  block (no per-value token)
+void writeState(UOPstream& os, const ::dropletFiber::WindowState& state)
+{
+    os  << label(state.counters.size());
+    for (const std::int64_t c : state.counters)
+    {
+        os  << label(c);
+    }
+    os  << label(state.values.size());
+    os.write
+    (
+        reinterpret_cast<const char*>(state.values.data()),
+        std::streamsize(state.values.size()*sizeof(double))
+    );
+}
+
+
+::dropletFiber::WindowState readState(UIPstream& is)
 {
     ::dropletFiber::WindowState state;
-    label at = 0;
-    const label counters = label(in[at++]);
-    for (label i = 0; i < counters; ++i)
+    label counters = 0;
+    is  >> counters;
+    state.counters.resize(counters);
+    for (std::int64_t& c : state.counters)
     {
-        state.counters.push_back(std::int64_t(in[at++]));
+        label value = 0;
+        is  >> value;
+        c = value;
     }
-    const label values = label(in[at++]);
-    state.values.assign(in.cdata() + at, in.cdata() + at + values);
+    label values = 0;
+    is  >> values;
+    state.values.resize(values);
+    is.read
+    (
+        reinterpret_cast<char*>(state.values.data()),
+        std::streamsize(state.values.size()*sizeof(double))
+    );
     return state;
 }
 
@@ -121,7 +154,8 @@ void appendState
     const ::dropletFiber::DensityGrid& grid,
     const std::vector<::dropletFiber::Parcel>& parcels,
     const double dt,
-    parallelStatistics& statistics
+    parallelStatistics& statistics,
+    ::dropletFiber::IndexBox& sprayNodes
 ) const
 {
     using stage = parallelStatistics::stage;
@@ -186,51 +220,52 @@ void appendState
                 }
             }
             work.addTouched(work.touched().nodesOf(touched), costPerTouchedNode);
+            sprayNodes = grownNodes(work, touched);
         }
     );
     return work;
 }
 
 
-std::vector<::dropletFiber::WindowState>
-Foam::dropletFiber::gridBlocks::movedWindowParts
+void Foam::dropletFiber::gridBlocks::sendWindowParts
 (
-    const ::dropletFiber::DensityGrid& grid,
+    ::dropletFiber::DensityGrid& grid,
     const ::dropletFiber::GridPartition& next,
-    parallelStatistics& statistics
+    parallelStatistics& statistics,
+    std::vector<::dropletFiber::WindowState>& kept
 )
 {
-    std::vector<::dropletFiber::WindowState> parts;
-    forAll(outgoing_, proci)
+    windowBuffers_.reset
+    (
+        new PstreamBuffers(Pstream::commsTypes::nonBlocking)
+    );
+    kept.clear();
+    for (label proci = 0; proci < Pstream::nProcs(); ++proci)
     {
-        outgoing_[proci].clear();
-        const ::dropletFiber::IndexBox part = owned_.intersected(next.owned(proci));
+        const ::dropletFiber::IndexBox part =
+            owned_.intersected(next.owned(proci));
         if (part.empty())
         {
             continue;
         }
+        // Each part's pages given back once saved: the window and its
+        // parts are not held twice
         if (proci == Pstream::myProcNo())
         {
-            parts.push_back(grid.saveWindowPart(part));
+            kept.push_back(grid.saveWindowPart(part));
+            grid.releaseWindowPages(part);
             continue;
         }
-        appendState(outgoing_[proci], grid.saveWindowPart(part));
+        // Straight into the send buffer: one copy of the part at a time
+        const ::dropletFiber::WindowState state = grid.saveWindowPart(part);
+        grid.releaseWindowPages(part);
+        UOPstream os(proci, *windowBuffers_);
+        writeState(os, state);
+        statistics.countSent
+        (
+            state.values.size()*sizeof(double), parallelStatistics::traffic::parcels
+        );
     }
-    const List<List<scalar>> received =
-        exchangeLists(statistics, parallelStatistics::traffic::parcels);
-    forAll(outgoing_, proci)
-    {
-        // The window's size, not to be kept between steps
-        outgoing_[proci].clearStorage();
-    }
-    forAll(received, proci)
-    {
-        if (!received[proci].empty())
-        {
-            parts.push_back(readState(received[proci]));
-        }
-    }
-    return parts;
 }
 
 
@@ -238,9 +273,11 @@ Foam::dropletFiber::gridBlocks::movedWindowParts
 
 bool Foam::dropletFiber::gridBlocks::rebalance
 (
-    const ::dropletFiber::DensityGrid& grid,
+    ::dropletFiber::DensityGrid& grid,
     const std::vector<::dropletFiber::Parcel>& parcels,
     const double dt,
+    const label balanceSteps,
+    const scalar moveCost,
     parallelStatistics& statistics,
     std::vector<::dropletFiber::WindowState>& windowParts
 )
@@ -250,7 +287,7 @@ bool Foam::dropletFiber::gridBlocks::rebalance
         return false;
     }
     const ::dropletFiber::DepositWork work =
-        depositWork(grid, parcels, dt, statistics);
+        depositWork(grid, parcels, dt, statistics, sprayNodes_);
     if (work.touched().tileCount() < std::size_t(Pstream::nProcs()))
     {
         return false;
@@ -265,29 +302,63 @@ bool Foam::dropletFiber::gridBlocks::rebalance
         );
     const std::pair<scalar, scalar> now = busiestAndMean(work, partition_);
     const std::pair<scalar, scalar> then = busiestAndMean(work, next);
+    const scalar gain = (now.first - then.first)*scalar(balanceSteps);
+    // A move's cost: every value of the old window is saved and copied into
+    // a new one (the part a processor keeps too), and the spray's pages
+    // faulted in: moveCost per value of the busiest window
+    const scalar values =
+        returnReduce(scalar(grid.windowValueCount()), maxOp<scalar>());
+    const scalar cost = moveCost*values;
+    Info<< "    grid blocks weighed: busiest block's predicted work / mean "
+        << now.first/max(now.second, VSMALL) << ", re-partitioned "
+        << then.first/max(then.second, VSMALL) << "; predicted gain over "
+        << balanceSteps << " steps " << 1e3*gain << " ms, move "
+        << 1e3*cost << " ms (" << values << " window values): ";
     if
     (
         next.boxes() == partition_.boxes()
      || now.first <= 0
      || then.first > (1 - worthMoving)*now.first
+     || gain <= cost
     )
     {
-        Info<< "    grid blocks kept: busiest block's predicted work / mean "
-            << now.first/max(now.second, VSMALL) << " (re-partitioned: "
-            << then.first/max(then.second, VSMALL) << ")" << nl;
+        Info<< "kept" << nl;
         return false;
     }
-    windowParts = movedWindowParts(grid, next, statistics);
-    Info<< "    grid blocks re-partitioned by deposit work: busiest block's"
-        << " predicted work / mean " << now.first/max(now.second, VSMALL)
-        << " -> " << then.first/max(then.second, VSMALL)
-        << " (busiest " << now.first/max(then.first, VSMALL)
-        << " times the new busiest)" << nl;
+    Info<< "re-partitioned by deposit work" << nl;
+    const scalar saving = threadCpuTime();
+    sendWindowParts(grid, next, statistics, windowParts);
+    savingCpuTime_ = threadCpuTime() - saving;
     partition_ = next;
     owned_ = partition_.owned(Pstream::myProcNo());
     balanced_ = true;
     bisected_ = false;
     return true;
+}
+
+
+void Foam::dropletFiber::gridBlocks::receiveWindowParts
+(
+    parallelStatistics& statistics,
+    std::vector<::dropletFiber::WindowState>& windowParts
+)
+{
+    if (!windowBuffers_.valid())
+    {
+        return;
+    }
+    labelList recvSizes;
+    windowBuffers_->finishedSends(recvSizes);
+    forAll(recvSizes, proci)
+    {
+        if (recvSizes[proci] > 0)
+        {
+            UIPstream is(proci, *windowBuffers_);
+            windowParts.push_back(readState(is));
+        }
+    }
+    // The window's size, not to be kept between steps
+    windowBuffers_.clear();
 }
 
 

@@ -28,7 +28,7 @@ const wordList gridKeys
     "lower", "upper", "nodes", "spacing", "averagingSteps",
     "beta", "rMaxCap", "cloudInCellBelow", "negligibleWeight", "vectorised",
     "depositMethod", "dimension", "radiusAverage", "maxMemory", "blocks",
-    "balanceSteps"
+    "balanceSteps", "moveCost"
 };
 
 
@@ -175,6 +175,7 @@ Foam::dropletFiber::gridSettings Foam::dropletFiber::readGridSettings
             gridDict, "blocks", "subdomains", {"subdomains", "balanced"}
         ) == "balanced";
     s.balanceSteps = getLabelInRange(gridDict, "balanceSteps", 100, 1, labelMax);
+    s.moveCost = getNonNegative(gridDict, "moveCost", 0);
     return s;
 }
 

@@ -1,6 +1,7 @@
 // Balanced grid blocks: the tile field the deposit work is summed on (TileWork) spreads a
 // box's work evenly over the tiles' nodes, and the averaging window moved to new blocks
-// (AveragingWindow::savePart, joinedWindowState) keeps its slots and total bit for bit.
+// (AveragingWindow::savePart, joinedWindowState or restoreParts) keeps its slots and total
+// bit for bit.
 // The partition itself: DepositBisectionTest.
 #include "grid/AveragingWindow.hpp"
 #include "grid/TileWork.hpp"
@@ -83,9 +84,18 @@ TEST(WindowTransfer, WindowMovedToNewBlocksKeepsSlotsAndTotalBitForBit)
         }
         AveragingWindow moved(nodes, block, q, length);
         moved.restore(joinedWindowState(parts, block));
+        // The same without the joined state (restoreParts: each part freed once copied)
+        AveragingWindow movedFromParts(nodes, block, q, length);
+        movedFromParts.restoreParts(parts);
+        for (const WindowState& part : parts)
+        {
+            EXPECT_TRUE(part.values.empty());
+        }
         AveragingWindow reference(nodes, block, q, length);
         reference.restore(wholeWindow.save());
         EXPECT_EQ(moved.total(), reference.total());
+        EXPECT_EQ(movedFromParts.total(), reference.total());
+        EXPECT_EQ(movedFromParts.save().counters, reference.save().counters);
         EXPECT_EQ(moved.committedSteps(), 4);
         EXPECT_EQ(moved.filled(), length);
         // Each slot: the totals again after each further (empty) step evicts the oldest
@@ -93,8 +103,10 @@ TEST(WindowTransfer, WindowMovedToNewBlocksKeepsSlotsAndTotalBitForBit)
         for (int age = 0; age < length; ++age)
         {
             moved.push(none.data(), block, IndexBox{});
+            movedFromParts.push(none.data(), block, IndexBox{});
             reference.push(none.data(), block, IndexBox{});
             EXPECT_EQ(moved.total(), reference.total()) << age;
+            EXPECT_EQ(movedFromParts.total(), reference.total()) << age;
         }
     }
 }
@@ -109,6 +121,9 @@ TEST(WindowTransfer, PartsThatDoNotTileTheBlockAreRefused)
     const WindowState left = window.savePart(IndexBox{{{0, 0, 0}}, {{2, 3, 0}}});
     EXPECT_THROW(joinedWindowState({left}, block), std::invalid_argument);
     EXPECT_THROW(joinedWindowState({left, left}, block), std::invalid_argument);
+    std::vector<WindowState> half{left};
+    AveragingWindow fromParts(nodes, 1, 2);
+    EXPECT_THROW(fromParts.restoreParts(half), std::invalid_argument);
     const WindowState right = window.savePart(IndexBox{{{3, 0, 0}}, {{5, 3, 0}}});
     const WindowState joined = joinedWindowState({right, left}, block);
     AveragingWindow restored(nodes, 1, 2);
