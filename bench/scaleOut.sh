@@ -22,7 +22,9 @@
 # thread CPU time per step in ms (scaleOutCase.py report). With -blocks, a second
 # line gives the deposit's max / mean and busiest ms per step by phase: the window's
 # fill (steps 6-10), the steady steps (after 10, but every balanceSteps-th) with the
-# coupling's ms, those after the first weighing, and the re-partition steps. Runs with more processors
+# coupling's ms, those after the first weighing, those of the run's second half
+# (developed: the localised spray's parcels per step level off after ~140 steps),
+# and the re-partition steps. Runs with more processors
 # than cores are oversubscribed: on a small machine T then includes the waiting of
 # processes sharing a core (the thread CPU times do not). A benchmark: nothing is
 # judged; compare figures only from the same session.

@@ -255,13 +255,16 @@ def phase_figures(rows, balance_steps):
     """The deposit's max / mean and the busiest processor's thread CPU ms per step in the
     window's fill (steps 6-10), the steady steps (11 on, but the re-partition steps: every
     balance_steps-th, which weigh the work and may move the window), those after the first
-    weighing, and the re-partition steps; and the coupling's (three stages' maxima) ms per
-    steady step."""
+    weighing, those of the run's second half (the spray developed: on the localised case
+    its parcels per step level off after ~140 steps), and the re-partition steps; and the
+    coupling's (three stages' maxima) ms per steady and developed step."""
     stages = ("cpuDeposit", "cpuCollision", "cpuFibers")
     phases = {"fill": [r for i, r in enumerate(rows) if 6 <= i + 1 <= 10],
               "steady": [r for i, r in enumerate(rows) if i + 1 > 10 and (i + 1) % balance_steps],
               "steadyAfterFirstWeighing": [r for i, r in enumerate(rows)
                                            if i + 1 > max(10, balance_steps) and (i + 1) % balance_steps],
+              "developed": [r for i, r in enumerate(rows)
+                            if i + 1 > len(rows) // 2 and (i + 1) % balance_steps],
               "repartition": [r for i, r in enumerate(rows) if i + 1 > 5 and (i + 1) % balance_steps == 0]}
     out = ""
     for name, chosen in phases.items():
@@ -269,7 +272,7 @@ def phase_figures(rows, balance_steps):
             continue
         ms = 1e3 * sum(r["cpuDepositMax"] for r in chosen) / len(chosen)
         out += f" {name} max/mean={imbalance(chosen, 'cpuDeposit'):.2f} maxMs={ms:.2f}"
-        if name.startswith("steady"):
+        if name.startswith("steady") or name == "developed":
             coupling = 1e3 * sum(sum(r[s + "Max"] for s in stages) for r in chosen) / len(chosen)
             weights = sum(r["nodeWeightsMax"] for r in chosen) / len(chosen)
             out += (f" couplingMs={coupling:.2f} nodeWeightsMax={weights:.0f}"
