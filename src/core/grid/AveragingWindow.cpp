@@ -547,14 +547,14 @@ void AveragingWindow::copySavedSlot(const double* saved, const IndexBox& savedBo
     // The saved slot's values cover savedBox (i fastest); this window keeps the part in its
     // region, row by row.
     const std::size_t q = static_cast<std::size_t>(nQuantities_);
-    forEachRowIn(kept, region_,
-                 [&](const IndexRow& row)
-                 {
-                     const double* from = saved
-                         + flatIndexInBox(savedBox, kept.lo[0], row.j + region_.lo[1], row.k + region_.lo[2]) * q;
-                     std::copy(from, from + row.length * q,
-                               slot.begin() + static_cast<std::ptrdiff_t>(row.first * q));
-                 });
+    forEachRowIn(
+        kept, region_,
+        [&](const IndexRow& row)
+        {
+            const double* from = saved
+                + flatIndexInBox(savedBox, kept.lo[0], row.j + region_.lo[1], row.k + region_.lo[2]) * q;
+            std::copy(from, from + row.length * q, slot.begin() + static_cast<std::ptrdiff_t>(row.first * q));
+        });
 }
 
 void AveragingWindow::makeResident(const IndexBox& box)

@@ -230,7 +230,8 @@ void StepValues::pack(const IndexBox& box, double* values) const
                  [&](const IndexRow& row)
                  {
                      const double* first = step_.data() + row.first * nQuantities;
-                     std::copy(first, first + row.length * nQuantities, values + row.offsetInBox * nQuantities);
+                     std::copy(first, first + row.length * nQuantities,
+                               values + row.offsetInBox * nQuantities);
                  });
 }
 
