@@ -1,8 +1,6 @@
 #include "grid/AveragingWindow.hpp"
 #include "grid/WindowTransfer.hpp"
 
-#include "grid/LiveBox.hpp"
-
 #include <algorithm>
 #include <stdexcept>
 #include <string>
@@ -44,9 +42,8 @@ AveragingWindow::AveragingWindow(const std::array<int, 3>& nodes, int nQuantitie
 }
 
 AveragingWindow::AveragingWindow(const std::array<int, 3>& gridNodes, const IndexBox& region, int nQuantities,
-                                 int length, bool liveBox)
-    : gridNodes_(gridNodes), region_(region), regionNodes_(region.extents()), tracksLive_(liveBox),
-      live_(liveBox ? IndexBox{} : region), nodes_(live_.extents()), nQuantities_(nQuantities),
+                                 int length)
+    : gridNodes_(gridNodes), region_(region), nodes_(region.extents()), nQuantities_(nQuantities),
       length_(length)
 {
     if (length < 1)
@@ -59,10 +56,9 @@ AveragingWindow::AveragingWindow(const std::array<int, 3>& gridNodes, const Inde
         throw std::invalid_argument("averaging window: region " + boxText(region)
                                     + " is not a block of the grid");
     }
-    const std::size_t size = live_.nodeCount() * static_cast<std::size_t>(nQuantities);
+    const std::size_t size = region.nodeCount() * static_cast<std::size_t>(nQuantities);
     slots_.resize(static_cast<std::size_t>(length));
     slotBoxes_.resize(static_cast<std::size_t>(length));
-    slotLayouts_.resize(static_cast<std::size_t>(length));
     total_ = zeroedNodeValues(size);
     summedAt_.assign(size / static_cast<std::size_t>(nQuantities), -1);
 }
@@ -81,8 +77,8 @@ IndexBox AveragingWindow::toRegion(const IndexBox& box) const
     IndexBox local;
     for (int d = 0; d < 3; ++d)
     {
-        local.lo[d] = box.lo[d] - live_.lo[d];
-        local.hi[d] = box.hi[d] - live_.lo[d];
+        local.lo[d] = box.lo[d] - region_.lo[d];
+        local.hi[d] = box.hi[d] - region_.lo[d];
     }
     return local;
 }
@@ -96,8 +92,8 @@ IndexBox AveragingWindow::toGrid(const IndexBox& box) const
     IndexBox global;
     for (int d = 0; d < 3; ++d)
     {
-        global.lo[d] = box.lo[d] + live_.lo[d];
-        global.hi[d] = box.hi[d] + live_.lo[d];
+        global.lo[d] = box.lo[d] + region_.lo[d];
+        global.hi[d] = box.hi[d] + region_.lo[d];
     }
     return global;
 }
@@ -154,18 +150,13 @@ void AveragingWindow::filledSlot(std::size_t slot, const IndexBox& local, const 
 void AveragingWindow::push(const double* step, const IndexBox& stepRegion, const IndexBox& box)
 {
     checkStepBox(box, stepRegion);
-    if (tracksLive_)
-    {
-        growLive(grownLiveBox(live_, box, region_));
-    }
     IndexBox evicted;
     const std::size_t slot = takeSlot(evicted);
     NodeValueArray& target = slots_[slot];
-    if (target.empty() || slotLayouts_[slot] != live_)
+    if (target.empty())
     {
-        // Not used yet, or laid out over an earlier live box
+        // Not used yet
         target = zeroedNodeValues(total_.size());
-        slotLayouts_[slot] = live_;
     }
     else
     {
@@ -180,7 +171,7 @@ void AveragingWindow::push(const double* step, const IndexBox& stepRegion, const
     forEachRowIn(box, stepRegion,
                  [&](const IndexRow& row)
                  {
-                     const std::size_t to = flatIndexInBox(live_, box.lo[0], row.j + stepRegion.lo[1],
+                     const std::size_t to = flatIndexInBox(region_, box.lo[0], row.j + stepRegion.lo[1],
                                                            row.k + stepRegion.lo[2]);
                      std::copy(step + row.first * q, step + (row.first + row.length) * q,
                                target.begin() + static_cast<std::ptrdiff_t>(to * q));
@@ -194,19 +185,16 @@ void AveragingWindow::pushSwappingUncleared(NodeValueArray& step, const IndexBox
     {
         throw std::invalid_argument("averaging window: step array has the wrong size");
     }
-    checkStepBox(box, live_);
+    checkStepBox(box, region_);
     IndexBox evicted;
     const std::size_t slot = takeSlot(evicted);
     // The slot is zero outside the evicted step's box, or not allocated yet: it becomes
     // the caller's next step array, to be cleared over that box by the caller.
     slots_[slot].swap(step);
-    const bool sameLayout = slotLayouts_[slot] == live_;
-    slotLayouts_[slot] = live_;
     dirty = toGrid(evicted);
-    if (step.empty() || !sameLayout)
+    if (step.empty())
     {
-        // Not used yet, or laid out over an earlier live box (the live box grew since):
-        // a new array, zero everywhere
+        // Not used yet: a new array, zero everywhere
         step = zeroedNodeValues(total_.size());
         dirty = IndexBox{};
     }
@@ -215,12 +203,14 @@ void AveragingWindow::pushSwappingUncleared(NodeValueArray& step, const IndexBox
 
 double AveragingWindow::newestStepValue(std::size_t node, int q) const
 {
-    std::size_t index = 0;
-    if (filled_ == 0 || !liveIndex(node, index))
+    if (filled_ == 0)
     {
         return 0.0;
     }
-    return newestStepValueAt(gridIndicesOfLive(index), q);
+    // A slot is zero outside its box (push clears the evicted box, pushSwappingUncleared's
+    // caller does), so any node reads it.
+    const NodeValueArray& newest = slots_[slotIndex(filled_ - 1)];
+    return newest[node * static_cast<std::size_t>(nQuantities_) + static_cast<std::size_t>(q)];
 }
 
 const NodeValueArray& AveragingWindow::total() const
@@ -233,70 +223,7 @@ const NodeValueArray& AveragingWindow::total() const
     return total_;
 }
 
-double AveragingWindow::newestStepValueAt(const std::array<int, 3>& node, int q) const
-{
-    // A slot is zero outside its box (push clears the evicted box, pushSwappingUncleared's
-    // caller does), so any node of its layout reads it; zero outside the layout.
-    if (filled_ == 0)
-    {
-        return 0.0;
-    }
-    const std::size_t newest = slotIndex(filled_ - 1);
-    const IndexBox& layout = slotLayouts_[newest];
-    if (!layout.holds(node[0], node[1], node[2]))
-    {
-        return 0.0;
-    }
-    return slots_[newest]
-                 [flatIndexInBox(layout, node[0], node[1], node[2]) * static_cast<std::size_t>(nQuantities_)
-                  + static_cast<std::size_t>(q)];
-}
-
-bool AveragingWindow::liveIndex(std::size_t node, std::size_t& index) const
-{
-    if (!tracksLive_)
-    {
-        index = node;
-        return true;
-    }
-    const std::array<int, 3> local = nodeIndicesOfFlat(regionNodes_, node);
-    return liveIndexAt({{local[0] + region_.lo[0], local[1] + region_.lo[1], local[2] + region_.lo[2]}},
-                       index);
-}
-
-bool AveragingWindow::liveIndexAt(const std::array<int, 3>& node, std::size_t& index) const
-{
-    if (!live_.holds(node[0], node[1], node[2]))
-    {
-        return false;
-    }
-    index = flatIndexInBox(live_, node[0], node[1], node[2]);
-    return true;
-}
-
 void AveragingWindow::nodeTotal(std::size_t node, double* sums) const
-{
-    std::size_t index = 0;
-    if (!liveIndex(node, index))
-    {
-        std::fill(sums, sums + nQuantities_, 0.0);
-        return;
-    }
-    nodeTotalOfLive(index, sums);
-}
-
-void AveragingWindow::nodeTotalAt(const std::array<int, 3>& node, double* sums) const
-{
-    std::size_t index = 0;
-    if (!liveIndexAt(node, index))
-    {
-        std::fill(sums, sums + nQuantities_, 0.0);
-        return;
-    }
-    nodeTotalOfLive(index, sums);
-}
-
-void AveragingWindow::nodeTotalOfLive(std::size_t node, double* sums) const
 {
     const std::size_t q = static_cast<std::size_t>(nQuantities_);
     const std::size_t offset = node * q;
@@ -307,13 +234,7 @@ void AveragingWindow::nodeTotalOfLive(std::size_t node, double* sums) const
         std::fill(total, total + q, 0.0);
         for (int age = 0; age < filled_; ++age)
         {
-            // A slot laid out over an earlier live box is zero outside it: adding that
-            // zero would change no sum (a total is never -0)
-            const double* slot = slotValuesAt(slotIndex(age), node);
-            if (slot == nullptr)
-            {
-                continue;
-            }
+            const double* slot = slots_[slotIndex(age)].data() + offset;
             for (std::size_t n = 0; n < q; ++n)
             {
                 total[n] += slot[n];
@@ -325,24 +246,6 @@ void AveragingWindow::nodeTotalOfLive(std::size_t node, double* sums) const
 }
 
 void AveragingWindow::prefetchNodeTotal(std::size_t node) const
-{
-    std::size_t index = 0;
-    if (liveIndex(node, index))
-    {
-        prefetchNodeTotalOfLive(index);
-    }
-}
-
-void AveragingWindow::prefetchNodeTotalAt(const std::array<int, 3>& node) const
-{
-    std::size_t index = 0;
-    if (liveIndexAt(node, index))
-    {
-        prefetchNodeTotalOfLive(index);
-    }
-}
-
-void AveragingWindow::prefetchNodeTotalOfLive(std::size_t node) const
 {
     const std::size_t q = static_cast<std::size_t>(nQuantities_);
     const std::size_t offset = node * q;
@@ -359,81 +262,27 @@ void AveragingWindow::prefetchNodeTotalOfLive(std::size_t node) const
     }
     for (int age = 0; age < filled_; ++age)
     {
-        const double* slot = slotValuesAt(slotIndex(age), node);
-        if (slot != nullptr)
-        {
-            request(slot);
-        }
+        request(slots_[slotIndex(age)].data() + offset);
     }
-}
-
-const double* AveragingWindow::slotValuesAt(std::size_t slot, std::size_t node) const
-{
-    const IndexBox& layout = slotLayouts_[slot];
-    if (layout == live_)
-    {
-        return slots_[slot].data() + node * static_cast<std::size_t>(nQuantities_);
-    }
-    const std::array<int, 3> n = gridIndicesOfLive(node);
-    return layout.holds(n[0], n[1], n[2]) ? slots_[slot].data()
-            + flatIndexInBox(layout, n[0], n[1], n[2]) * static_cast<std::size_t>(nQuantities_)
-                                          : nullptr;
-}
-
-std::array<int, 3> AveragingWindow::gridIndicesOfLive(std::size_t node) const
-{
-    const std::array<int, 3> n = nodeIndicesOfFlat(nodes_, node);
-    return {{n[0] + live_.lo[0], n[1] + live_.lo[1], n[2] + live_.lo[2]}};
 }
 
 void AveragingWindow::recomputeTotal(const IndexBox& box) const
 {
-    const std::size_t q = static_cast<std::size_t>(nQuantities_);
-    forEachRow(box, nodes_,
-               [&](const IndexRow& row)
-               {
-                   double* total = total_.data() + row.first * q;
-                   std::fill(total, total + row.length * q, 0.0);
-                   // Oldest to newest: the same order in a continuous and a restored run.
-                   for (int age = 0; age < filled_; ++age)
-                   {
-                       const std::size_t s = slotIndex(age);
-                       // The row's part in the slot's layout (all of it unless the live box
-                       // grew since the slot was laid out: zero outside)
-                       std::size_t skip = 0;
-                       std::size_t count = row.length;
-                       const double* slot = slotRow(s, box.lo[0], row, skip, count);
-                       for (std::size_t n = 0; n < count * q; ++n)
-                       {
-                           total[skip * q + n] += slot[n];
-                       }
-                   }
-               });
-}
-
-const double* AveragingWindow::slotRow(std::size_t slot, int i, const IndexRow& row, std::size_t& skip,
-                                       std::size_t& count) const
-{
-    const IndexBox& layout = slotLayouts_[slot];
-    if (layout == live_)
-    {
-        return slots_[slot].data() + row.first * static_cast<std::size_t>(nQuantities_);
-    }
-    // Grid indices of the row: i .. i + length - 1 (live indices) at (j, k)
-    const int lo = i + live_.lo[0];
-    const int hi = lo + static_cast<int>(row.length) - 1;
-    const int j = row.j + live_.lo[1];
-    const int k = row.k + live_.lo[2];
-    const int from = std::max(lo, layout.lo[0]);
-    const int to = std::min(hi, layout.hi[0]);
-    if (j < layout.lo[1] || j > layout.hi[1] || k < layout.lo[2] || k > layout.hi[2] || from > to)
-    {
-        count = 0;
-        return nullptr;
-    }
-    skip = static_cast<std::size_t>(from - lo);
-    count = static_cast<std::size_t>(to - from + 1);
-    return slots_[slot].data() + flatIndexInBox(layout, from, j, k) * static_cast<std::size_t>(nQuantities_);
+    forEachBoxRow(box,
+                  [&](std::size_t offset, std::size_t count)
+                  {
+                      double* total = total_.data() + offset;
+                      std::fill(total, total + count, 0.0);
+                      // Oldest to newest: the same order in a continuous and a restored run.
+                      for (int age = 0; age < filled_; ++age)
+                      {
+                          const double* slot = slots_[slotIndex(age)].data() + offset;
+                          for (std::size_t n = 0; n < count; ++n)
+                          {
+                              total[n] += slot[n];
+                          }
+                      }
+                  });
 }
 
 IndexBox AveragingWindow::box() const
@@ -490,7 +339,7 @@ void AveragingWindow::appendSlotValues(std::size_t slot, const IndexBox& box,
 {
     const std::size_t q = static_cast<std::size_t>(nQuantities_);
     const NodeValueArray& from = slots_[slot];
-    forEachRowIn(box, slotLayouts_[slot],
+    forEachRowIn(box, region_,
                  [&](const IndexRow& row)
                  {
                      values.insert(values.end(), from.begin() + static_cast<std::ptrdiff_t>(row.first * q),
@@ -619,15 +468,6 @@ void AveragingWindow::restore(const WindowState& state)
         ? boxes.size() - static_cast<std::size_t>(length_)
         : 0;
     clear(state.counters[7]);
-    if (tracksLive_)
-    {
-        IndexBox held;
-        for (std::size_t s = skip; s < boxes.size(); ++s)
-        {
-            held = held.united(boxes[s].intersected(region_));
-        }
-        relayout(held);
-    }
     std::size_t position = 0;
     for (std::size_t s = 0; s < boxes.size(); ++s)
     {
@@ -635,7 +475,6 @@ void AveragingWindow::restore(const WindowState& state)
         {
             NodeValueArray& slot = slots_[static_cast<std::size_t>(filled_)];
             slot = zeroedNodeValues(total_.size());
-            slotLayouts_[static_cast<std::size_t>(filled_)] = live_;
             const IndexBox kept = boxes[s].intersected(region_);
             copySavedSlot(state.values.data() + position, boxes[s], kept, slot);
             slotBoxes_[static_cast<std::size_t>(filled_)] = kept.empty() ? IndexBox{} : toRegion(kept);
@@ -666,19 +505,9 @@ void AveragingWindow::restoreParts(std::vector<WindowState>& parts)
         }
     }
     clear(first[7]);
-    if (tracksLive_)
-    {
-        IndexBox held;
-        for (const IndexBox& b : boxes)
-        {
-            held = held.united(b);
-        }
-        relayout(held);
-    }
     for (std::size_t s = 0; s < filled; ++s)
     {
         slots_[s] = zeroedNodeValues(total_.size());
-        slotLayouts_[s] = live_;
         slotBoxes_[s] = boxes[s].empty() ? IndexBox{} : toRegion(boxes[s]);
     }
     filled_ = static_cast<int>(filled);
@@ -703,16 +532,7 @@ void AveragingWindow::clear(std::int64_t committed)
     {
         slot.clear();
     }
-    if (tracksLive_)
-    {
-        // Nothing held: the replay or the restore that follows grows it again
-        live_ = IndexBox{};
-        nodes_ = live_.extents();
-        total_.clear();
-        summedAt_.clear();
-    }
     std::fill(slotBoxes_.begin(), slotBoxes_.end(), IndexBox{});
-    std::fill(slotLayouts_.begin(), slotLayouts_.end(), IndexBox{});
     std::fill(total_.begin(), total_.end(), 0.0);
     head_ = 0;
     filled_ = 0;
@@ -725,52 +545,16 @@ void AveragingWindow::copySavedSlot(const double* saved, const IndexBox& savedBo
                                     NodeValueArray& slot) const
 {
     // The saved slot's values cover savedBox (i fastest); this window keeps the part in its
-    // region (inside its live box), row by row.
+    // region, row by row.
     const std::size_t q = static_cast<std::size_t>(nQuantities_);
-    forEachRowIn(kept, live_,
-                 [&](const IndexRow& row)
-                 {
-                     const double* from = saved
-                         + flatIndexInBox(savedBox, kept.lo[0], row.j + live_.lo[1], row.k + live_.lo[2]) * q;
-                     std::copy(from, from + row.length * q,
-                               slot.begin() + static_cast<std::ptrdiff_t>(row.first * q));
-                 });
-}
-
-void AveragingWindow::growLive(const IndexBox& box)
-{
-    const IndexBox grown = live_.united(box.intersected(region_));
-    if (grown != live_)
-    {
-        relayout(grown);
-    }
-}
-
-void AveragingWindow::relayout(const IndexBox& grown)
-{
-    const std::size_t q = static_cast<std::size_t>(nQuantities_);
-    // The slots keep their layouts (read through slotLayouts_): each is laid out anew
-    // when it next takes a step, so a regrowth copies the total and stamps only
-    NodeValueArray total = zeroedNodeValues(grown.nodeCount() * q);
-    copyBoxValues(total_.data(), live_, total.data(), grown, live_, q);
-    total_.swap(total);
-    std::vector<std::int64_t> summedAt(grown.nodeCount(), -1);
-    copyBoxValues(summedAt_.data(), live_, summedAt.data(), grown, live_, 1);
-    summedAt_.swap(summedAt);
-    // The boxes in the grown box's indices: the same nodes
-    const IndexBox stale = toGrid(staleBox_);
-    std::vector<IndexBox> slotBoxes(slotBoxes_.size());
-    for (std::size_t s = 0; s < slotBoxes_.size(); ++s)
-    {
-        slotBoxes[s] = toGrid(slotBoxes_[s]);
-    }
-    live_ = grown;
-    nodes_ = grown.extents();
-    staleBox_ = toRegion(stale);
-    for (std::size_t s = 0; s < slotBoxes_.size(); ++s)
-    {
-        slotBoxes_[s] = toRegion(slotBoxes[s]);
-    }
+    forEachRowIn(
+        kept, region_,
+        [&](const IndexRow& row)
+        {
+            const double* from = saved
+                + flatIndexInBox(savedBox, kept.lo[0], row.j + region_.lo[1], row.k + region_.lo[2]) * q;
+            std::copy(from, from + row.length * q, slot.begin() + static_cast<std::ptrdiff_t>(row.first * q));
+        });
 }
 
 void AveragingWindow::makeResident(const IndexBox& box)
@@ -780,10 +564,10 @@ void AveragingWindow::makeResident(const IndexBox& box)
     {
         if (!slots_[s].empty())
         {
-            makeBoxResident(slots_[s], slotLayouts_[s], box, q);
+            makeBoxResident(slots_[s], region_, box, q);
         }
     }
-    makeBoxResident(total_, live_, box, q);
+    makeBoxResident(total_, region_, box, q);
 }
 
 void AveragingWindow::releasePages(const IndexBox& box)
@@ -793,20 +577,10 @@ void AveragingWindow::releasePages(const IndexBox& box)
     {
         if (!slots_[s].empty())
         {
-            releaseBoxPages(slots_[s], slotLayouts_[s], box, q);
+            releaseBoxPages(slots_[s], region_, box, q);
         }
     }
-    releaseBoxPages(total_, live_, box, q);
-}
-
-std::size_t AveragingWindow::heldBytes() const
-{
-    std::size_t values = total_.size();
-    for (const auto& slot : slots_)
-    {
-        values += slot.size();
-    }
-    return values * sizeof(double) + summedAt_.size() * sizeof(std::int64_t);
+    releaseBoxPages(total_, region_, box, q);
 }
 
 } // namespace dropletFiber

@@ -36,15 +36,6 @@
 // DensityGrid's owned box): node indices of nodeTotal() are those of the block
 // (flatIndexInBox), and the boxes given to push() are in the grid's indices. The whole
 // grid is the default.
-//
-// Live box (liveBox = true): slots, total and stamps cover only the part of the region
-// the pushed steps touched (liveBox(), empty at first; LiveBox.hpp), so that a block's
-// memory follows its spray, not its size. A push outside it grows it first: the total
-// and stamps are copied into the grown box; each slot keeps the layout of the live box it
-// was filled in until it takes a new step (then laid out over the grown box, as a slot is
-// allocated while the window fills), so a regrowth does not copy the W slots. The other
-// nodes read as zero, which is what a dense window holds there. Every value, and every
-// sum's order, is the dense window's.
 #pragma once
 
 #include "grid/GridSpec.hpp"
@@ -94,18 +85,16 @@ class AveragingWindow
 {
 public:
     AveragingWindow(const std::array<int, 3>& nodes, int nQuantities, int length);
-    // A window of the nodes of `region` (a non-empty box of the grid of gridNodes nodes);
-    // liveBox: its arrays cover the live box only (see above).
-    AveragingWindow(const std::array<int, 3>& gridNodes, const IndexBox& region, int nQuantities, int length,
-                    bool liveBox = false);
+    // A window of the nodes of `region` (a non-empty box of the grid of gridNodes nodes).
+    AveragingWindow(const std::array<int, 3>& gridNodes, const IndexBox& region, int nQuantities, int length);
 
     // Commit one step: `step` is a full per-node array that is zero outside `box`.
     void push(const std::vector<double>& step, const IndexBox& box);
     // The same from an array laid out over stepRegion (which holds box; box within
     // region()): the block's part of a larger step array.
     void push(const double* step, const IndexBox& stepRegion, const IndexBox& box);
-    // The same as push(step, box) without copying: `step` (laid out over liveBox(), zero
-    // outside box, box inside liveBox()) becomes the newest slot, and the caller gets back in `step` an array
+    // The same as push(step, box) without copying: `step` (laid out over region(), zero
+    // outside box) becomes the newest slot, and the caller gets back in `step` an array
     // of the same size (the evicted slot; a new one, all zero, while the window fills)
     // that is zero outside `dirty` (grid indices; empty: zero everywhere) and holds the
     // evicted step's values inside it: the caller zeroes that box before it accumulates
@@ -113,13 +102,7 @@ public:
     void pushSwappingUncleared(NodeValueArray& step, const IndexBox& box, IndexBox& dirty);
     // The block of the grid this window holds (grid indices).
     const IndexBox& region() const { return region_; }
-    // The nodes its arrays cover (grid indices): region() for a dense window.
-    const IndexBox& liveBox() const { return live_; }
-    // The live box becomes its union with `box` (inside region()), the values held copied.
-    void growLive(const IndexBox& box);
-    // Bytes of the slots, total and stamps allocated.
-    std::size_t heldBytes() const;
-    // The pages of the nodes of `box` (grid indices; the part in the live box) resident
+    // The pages of the nodes of `box` (grid indices; the part in the region) resident
     // in every allocated slot and the total, values kept (makeBoxResident).
     void makeResident(const IndexBox& box);
     // The pages wholly inside the rows of `box` given back in every slot and the total:
@@ -127,28 +110,24 @@ public:
     // box was saved (savePart) and that is to be discarded.
     void releasePages(const IndexBox& box);
 
-    // The window total of every node of liveBox(), laid out over it (brings the stale box
+    // The window total of every node of the region, laid out over it (brings the stale box
     // up to date first).
     const NodeValueArray& total() const;
     // The window total of one node (index in the region), nQuantities values into `sums`
-    // (no full update); zero outside the live box.
+    // (no full update).
     void nodeTotal(std::size_t node, double* sums) const;
-    // The same for the node (i, j, k) of the region (grid indices).
-    void nodeTotalAt(const std::array<int, 3>& node, double* sums) const;
     // Requests the memory nodeTotal(node) will read (its W slots' values when they are to
     // be summed), so that the reads of several nodes overlap instead of waiting for each
     // cache miss in turn: the collision's sample corners are scattered over slots of
     // megabytes. No effect on any value.
     void prefetchNodeTotal(std::size_t node) const;
-    void prefetchNodeTotalAt(const std::array<int, 3>& node) const;
     // Quantity q of the newest committed step at a node of the region (0 before any).
     double newestStepValue(std::size_t node, int q) const;
-    double newestStepValueAt(const std::array<int, 3>& node, int q) const;
     int length() const { return length_; }
     int filled() const { return filled_; } // steps in the window, <= length
     std::int64_t committedSteps() const { return committed_; }
     // Union of the boxes of the steps in the window (where total can be non-zero), in the
-    // live box's indices.
+    // region's indices.
     IndexBox box() const;
 
     WindowState save() const;
@@ -161,7 +140,7 @@ public:
     std::size_t savedValueCount() const;
     // Throws std::invalid_argument when the state does not fit this grid. A state saved
     // with a different window length is accepted: the newest min(filled, length) steps
-    // are kept. A live-box window's live box becomes the union of the kept slots' boxes.
+    // are kept.
     void restore(const WindowState& state);
     // restore(joinedWindowState(parts, region())) without the joined state: each part's
     // slot values copied straight into the slots, and the part freed (its values emptied)
@@ -176,26 +155,9 @@ public:
 private:
     std::size_t slotIndex(int age) const { return static_cast<std::size_t>((head_ + age) % length_); }
     void recomputeTotal(const IndexBox& box) const;
-    // The index in the live box of a node of the region (its index there / grid indices);
-    // false outside the live box.
-    bool liveIndex(std::size_t node, std::size_t& index) const;
-    bool liveIndexAt(const std::array<int, 3>& node, std::size_t& index) const;
-    void nodeTotalOfLive(std::size_t index, double* sums) const;
-    std::array<int, 3> gridIndicesOfLive(std::size_t index) const;
-    // A slot's values of the node at live index `node`; nullptr outside the slot's layout
-    // (zero there).
-    const double* slotValuesAt(std::size_t slot, std::size_t node) const;
-    // The part of a row of the live box (its first node at live index i, row.j, row.k)
-    // inside the slot's layout: its values, `skip` nodes after the row's first, `count`
-    // nodes (0: none).
-    const double* slotRow(std::size_t slot, int i, const IndexRow& row, std::size_t& skip,
-                          std::size_t& count) const;
-    // The slot's values of the nodes of box (grid indices, inside its layout) appended, i
+    // The slot's values of the nodes of box (grid indices, inside the region) appended, i
     // fastest.
     void appendSlotValues(std::size_t slot, const IndexBox& box, std::vector<double>& values) const;
-    void prefetchNodeTotalOfLive(std::size_t index) const;
-    // The arrays laid out over `grown` (holding the live box), the values copied.
-    void relayout(const IndexBox& grown);
     // push(): throws unless box (grid indices) lies in region() and in stepRegion.
     void checkStepBox(const IndexBox& box, const IndexBox& stepRegion) const;
     // The slot the next step goes to: the next unused one while the window fills (not
@@ -215,28 +177,22 @@ private:
     template <class F>
     void forEachBoxRow(const IndexBox& box, F&& f) const;
 
-    // Slot boxes, lo and hi of the live box: grid indices <-> indices in the live box
+    // Slot boxes, lo and hi of the region: grid indices <-> indices in the region
     IndexBox toRegion(const IndexBox& box) const;
     IndexBox toGrid(const IndexBox& box) const;
     bool wholeGrid() const;
 
     std::array<int, 3> gridNodes_;
     IndexBox region_;
-    std::array<int, 3> regionNodes_; // of the region (nodeTotal's node indices)
-    bool tracksLive_;                // the arrays cover the live box only
-    IndexBox live_;                  // region_ when !tracksLive_
-    std::array<int, 3> nodes_;       // of the live box (the arrays' indices: flatIndexInBox)
+    std::array<int, 3> nodes_; // of the region (its node indices: flatIndexInBox)
     int nQuantities_;
     int length_;
     std::vector<NodeValueArray> slots_;
     std::vector<IndexBox> slotBoxes_;
-    // The box (grid indices) each slot's array is laid out over: the live box when it took
-    // its step (a regrowth leaves the slots as they are; push lays a slot out anew)
-    std::vector<IndexBox> slotLayouts_;
     int head_ = 0; // slot of the oldest step
     int filled_ = 0;
     std::int64_t committed_ = 0;
-    // total_ (over the live box) is a cache of the slots' sum, valid outside staleBox_, and inside it at the
+    // total_ is a cache of the slots' sum, valid outside staleBox_, and inside it at the
     // nodes whose summedAt_ equals committed_ (summed by nodeTotal since the last push).
     mutable NodeValueArray total_;
     mutable IndexBox staleBox_;

@@ -29,10 +29,6 @@ GridBlock checkedBlock(const GridSpec& spec, const GridBlock& block)
             "DensityGrid: a block's owned nodes must be a non-empty box inside its storage "
             "box, inside the grid");
     }
-    if (block.live && block.storage != block.owned)
-    {
-        throw std::invalid_argument("DensityGrid: a block with a live box stores its owned nodes only");
-    }
     return block;
 }
 
@@ -46,8 +42,8 @@ DensityGrid::DensityGrid(const GridSpec& spec, const KernelSettings& kernel, int
 DensityGrid::DensityGrid(const GridSpec& spec, const KernelSettings& kernel, int windowLength,
                          const GridBlock& block)
     : spec_(validated(spec)), owned_(checkedBlock(spec, block).owned),
-      window_(spec.nodes, block.owned, nQuantities, windowLength, block.live), log_(windowLength),
-      weights_(spec, kernel), step_(spec.nodes, block.storage, block.live), sampler_(spec, block.owned)
+      window_(spec.nodes, block.owned, nQuantities, windowLength), log_(windowLength), weights_(spec, kernel),
+      step_(spec.nodes, block.storage), sampler_(spec, block.owned)
 {
 }
 

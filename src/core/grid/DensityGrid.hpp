@@ -51,11 +51,9 @@
 // Memory: nQuantities = 7 doubles (56 bytes) per node for the step values (per stored
 // node), the window total and each of the W window slots (allocated as the window fills;
 // per owned node), and the window's 8-byte stamp: (W + 2) * 56 + 8 bytes per node for the
-// whole grid, e.g. 250 x 250 nodes, W = 10: 43 MB. A block with a live box
-// (GridBlock::live) holds these for the nodes of its live box only (storedNodes()): the
-// part of its owned box its deposits have reached, grown as they spread (LiveBox.hpp);
-// the arrays' pages are resident only where written (NodeValueArray). The deposit log: 72 bytes per parcel deposited on the grid in each of the
-// W (+1) steps, e.g. 4,000 parcels per step, W = 10: 3.2 MB.
+// whole grid, e.g. 250 x 250 nodes, W = 10: 43 MB; the arrays' pages are resident only
+// where written (NodeValueArray). The deposit log: 72 bytes per parcel deposited on the
+// grid in each of the W (+1) steps, e.g. 4,000 parcels per step, W = 10: 3.2 MB.
 // Time per parcel: ~ nodes within reach of its path (one erf-type evaluation each, or a
 // few multiplications with the separable tables).
 #pragma once
@@ -87,14 +85,10 @@ namespace dropletFiber
 
 // The part of the grid one DensityGrid holds: the nodes it owns (its averaging window)
 // and the nodes it stores the step's deposit for (normally the owned nodes), grid indices.
-// live (storage == owned only): the step values and the window cover the live box only,
-// the owned nodes the deposits have reached (LiveBox.hpp); every value and result is the
-// dense block's, to the bit.
 struct GridBlock
 {
     IndexBox owned;
     IndexBox storage;
-    bool live = false;
 };
 
 class DensityGrid
@@ -171,17 +165,7 @@ public:
     // --- step values and the block's exchanges -------------------------------------------
     const IndexBox& ownedBox() const { return owned_; }
     const IndexBox& storageBox() const { return step_.storageBox(); }
-    // The nodes the step values cover (grid indices): the storage box, or for a block with
-    // a live box that box (the window's after commitStep()).
-    const IndexBox& liveBox() const { return step_.liveBox(); }
-    // The nodes whose step values and window this grid holds: liveBox().nodeCount().
-    std::size_t storedNodes() const { return step_.liveBox().nodeCount(); }
-    // Bytes of the step values, window slots, total and stamps allocated.
-    std::size_t heldBytes() const
-    {
-        return step_.liveBox().nodeCount() * nQuantities * sizeof(double) + window_.heldBytes();
-    }
-    // liveBox().nodeCount() * nQuantities doubles, GridQuantities layout over the live box
+    // storage.nodeCount() * nQuantities doubles, GridQuantities layout over the storage box
     // (flatIndexInBox; the whole grid: flat node index), zero outside stepBox(). The
     // vector's storage may change at commitStep() (it can become a window slot): take
     // data() anew after each commit. Writing through the non-const accessor (or
@@ -213,10 +197,8 @@ public:
     int windowLength() const { return window_.length(); }
     int stepsInWindow() const { return window_.filled(); }
     std::int64_t committedSteps() const { return window_.committedSteps(); }
-    // The window sums of the nodes of windowLiveBox() (the owned box for a dense block),
-    // laid out over it; the other owned nodes' are zero.
+    // The window sums of the owned nodes, laid out over the owned box (flatIndexInBox).
     const NodeValueArray& windowTotals() const { return window_.total(); }
-    const IndexBox& windowLiveBox() const { return window_.liveBox(); }
     // The window's restart state: the deposit log of its steps (DepositLog, formats 3 and
     // 4), or its node values (AveragingWindow, formats 1 and 2): the smaller of the two
     // (Smaller), or the one asked for; node values where a step in the window was not

@@ -84,38 +84,24 @@ bool wholeGrid(const std::array<int, 3>& gridNodes, const IndexBox& box)
 
 } // namespace
 
-StepValues::StepValues(const std::array<int, 3>& gridNodes, const IndexBox& storage, bool liveBox)
-    : gridNodes_(gridNodes), storage_(storage), tracksLive_(liveBox), live_(liveBox ? IndexBox{} : storage),
-      storesWholeGrid_(wholeGrid(gridNodes, live_))
+StepValues::StepValues(const std::array<int, 3>& gridNodes, const IndexBox& storage)
+    : gridNodes_(gridNodes), storage_(storage), storesWholeGrid_(wholeGrid(gridNodes, storage))
 {
-    step_ = zeroedNodeValues(live_.nodeCount() * nQuantities);
-    rowPending_.assign(live_.empty() ? 0 : storageRow(0, live_.hi[2] - live_.lo[2] + 1), 0);
+    step_ = zeroedNodeValues(storage_.nodeCount() * nQuantities);
+    rowPending_.assign(storage_.empty() ? 0 : storageRow(0, storage_.hi[2] - storage_.lo[2] + 1), 0);
 }
 
 double* StepValues::valuesOfBlockNode(std::size_t node)
 {
     const std::array<int, 3> n = nodeIndicesOfFlat(gridNodes_, node);
-    return live_.holds(n[0], n[1], n[2])
-        ? step_.data() + flatIndexInBox(live_, n[0], n[1], n[2]) * nQuantities
+    return storage_.holds(n[0], n[1], n[2])
+        ? step_.data() + flatIndexInBox(storage_, n[0], n[1], n[2]) * nQuantities
         : nullptr;
-}
-
-void StepValues::relayout(const IndexBox& grown)
-{
-    // The evicted step's rows zeroed first: the array then holds the step's values only
-    clearPendingRows();
-    NodeValueArray moved = zeroedNodeValues(grown.nodeCount() * nQuantities);
-    copyBoxValues(step_.data(), live_, moved.data(), grown, stepBox_, nQuantities);
-    step_.swap(moved);
-    live_ = grown;
-    storesWholeGrid_ = wholeGrid(gridNodes_, live_);
-    rowPending_.assign(storageRow(0, live_.hi[2] - live_.lo[2] + 1), 0);
 }
 
 void StepValues::addListed(const NodeOmegas& nodes, double inverseSum, const ParcelTotals& totals,
                            const IndexBox& box)
 {
-    cover(box);
     clearPendingRowsOf(box); // the weighted nodes lie inside it
     if (storesWholeGrid_)
     {
@@ -154,25 +140,24 @@ std::size_t StepValues::addSeparable(SeparableWeight& rows, double inverseSum, c
 {
     // The stored part of the box only: no node list, no per-node index arithmetic (a block
     // evaluates only its part of a copy).
-    cover(box);
     const IndexBox stored = box.intersected(storage_);
     const auto first = static_cast<std::size_t>(stored.lo[0] - box.lo[0]);
     // The values of the row rowsAhead further in j (the next layer's at a layer's end: a
     // wasted request), requested while this one is added: rows of a few dozen nodes are too
     // short for the hardware's prefetcher, on grids beyond the caches.
     const std::size_t rowAhead
-        = rowsAhead * static_cast<std::size_t>(live_.hi[0] - live_.lo[0] + 1) * nQuantities;
+        = rowsAhead * static_cast<std::size_t>(storage_.hi[0] - storage_.lo[0] + 1) * nQuantities;
     if (inLanes && rows.vectorised() && !stored.empty())
     {
         addSeparableInLanes(rows, inverseSum, totals, box, stored, rowAhead);
         touch(box);
         return stored.empty() ? 0 : stored.nodeCount();
     }
-    forEachRowIn(stored, live_,
+    forEachRowIn(stored, storage_,
                  [&](const IndexRow& row)
                  {
-                     const int j = row.j + live_.lo[1] - box.lo[1];
-                     const int k = row.k + live_.lo[2] - box.lo[2];
+                     const int j = row.j + storage_.lo[1] - box.lo[1];
+                     const int k = row.k + storage_.lo[2] - box.lo[2];
                      // First write into the row this step: the evicted step's values go
                      // (the row is being brought into cache by this parcel anyway)
                      const std::size_t rowIndex = storageRow(row.j, row.k);
@@ -199,7 +184,7 @@ void StepValues::addSeparableInLanes(SeparableWeight& rows, double inverseSum, c
     // run is a layer's rows up to the next pending row, which is zeroed and starts the next
     // run: its values are added while still in cache (one call per layer once the step's
     // rows are cleared, one per row where all are pending, as addSeparable).
-    const std::array<int, 3> extents = live_.extents();
+    const std::array<int, 3> extents = storage_.extents();
     SeparableLanes::BoxRows to;
     to.rowStride = static_cast<std::size_t>(extents[0]) * nQuantities;
     to.layerStride = to.rowStride * static_cast<std::size_t>(extents[1]);
@@ -209,7 +194,7 @@ void StepValues::addSeparableInLanes(SeparableWeight& rows, double inverseSum, c
     hi[0] = stored.hi[0] - box.lo[0];
     auto addRun = [&](int k, int jFirst, int jLast)
     {
-        const std::size_t first = flatIndexInBox(live_, stored.lo[0], jFirst, k) * nQuantities;
+        const std::size_t first = flatIndexInBox(storage_, stored.lo[0], jFirst, k) * nQuantities;
         to.values = step_.data() + first;
         to.available = step_.size() - first;
         lo[1] = jFirst - box.lo[1];
@@ -222,7 +207,7 @@ void StepValues::addSeparableInLanes(SeparableWeight& rows, double inverseSum, c
         int runFirst = stored.lo[1];
         for (int j = stored.lo[1]; j <= stored.hi[1]; ++j)
         {
-            const std::size_t rowIndex = storageRow(j - live_.lo[1], k - live_.lo[2]);
+            const std::size_t rowIndex = storageRow(j - storage_.lo[1], k - storage_.lo[2]);
             if (rowPending_[rowIndex] != 0)
             {
                 if (j > runFirst)
@@ -241,13 +226,13 @@ void StepValues::pack(const IndexBox& box, double* values) const
 {
     checkStored(box, storage_, "packStep");
     clearPendingRowsOf(box);
-    const IndexBox held = box.intersected(live_);
-    if (held != box)
-    {
-        // The nodes outside the live box hold zero
-        std::fill(values, values + box.nodeCount() * nQuantities, 0.0);
-    }
-    copyBoxValues(step_.data(), live_, values, box, held, nQuantities);
+    forEachRowIn(box, storage_,
+                 [&](const IndexRow& row)
+                 {
+                     const double* first = step_.data() + row.first * nQuantities;
+                     std::copy(first, first + row.length * nQuantities,
+                               values + row.offsetInBox * nQuantities);
+                 });
 }
 
 void StepValues::unpack(const IndexBox& box, const double* values, std::size_t count)
@@ -261,9 +246,8 @@ void StepValues::unpack(const IndexBox& box, const double* values, std::size_t c
     {
         throw std::invalid_argument("DensityGrid::unpackStep: value count does not match the box");
     }
-    cover(box);
     clearPendingRowsOf(box); // the rows' parts outside the box keep the step's values
-    forEachRowIn(box, live_,
+    forEachRowIn(box, storage_,
                  [&](const IndexRow& row)
                  {
                      const double* first = values + row.offsetInBox * nQuantities;
@@ -277,12 +261,6 @@ void StepValues::commitTo(AveragingWindow& window, const IndexBox& owned)
 {
     if (storage_ == owned)
     {
-        // The same layout on both sides: each live box grown to their union
-        window.growLive(live_);
-        if (window.liveBox() != live_)
-        {
-            relayout(window.liveBox());
-        }
         // The array has the window's layout (serial runs; blocks of the function object
         // store their owned nodes only): it becomes the newest slot (zero outside stepBox_
         // once the rows no deposit reached are cleared) and the evicted slot the next array,
@@ -295,8 +273,8 @@ void StepValues::commitTo(AveragingWindow& window, const IndexBox& owned)
     }
     else
     {
-        window.push(step_.data(), live_, stepBox_.intersected(owned));
-        forEachRowIn(stepBox_, live_,
+        window.push(step_.data(), storage_, stepBox_.intersected(owned));
+        forEachRowIn(stepBox_, storage_,
                      [&](const IndexRow& row)
                      {
                          double* values = step_.data() + row.first * nQuantities;
@@ -308,7 +286,7 @@ void StepValues::commitTo(AveragingWindow& window, const IndexBox& owned)
 
 void StepValues::zeroPendingRow(std::size_t row) const
 {
-    const auto rowNodes = static_cast<std::size_t>(live_.hi[0] - live_.lo[0] + 1);
+    const auto rowNodes = static_cast<std::size_t>(storage_.hi[0] - storage_.lo[0] + 1);
     const auto dirtyNodes = static_cast<std::size_t>(dirty_.hi[0] - dirty_.lo[0] + 1);
     double* first = step_.data() + (row * rowNodes + static_cast<std::size_t>(dirty_.lo[0])) * nQuantities;
     std::fill(first, first + dirtyNodes * nQuantities, 0.0);
@@ -322,10 +300,10 @@ void StepValues::clearPendingRowsOf(const IndexBox& box) const
         return;
     }
     // The box's rows in storage indices, within the dirty rows
-    const int jLo = std::max(box.lo[1] - live_.lo[1], dirty_.lo[1]);
-    const int jHi = std::min(box.hi[1] - live_.lo[1], dirty_.hi[1]);
-    const int kLo = std::max(box.lo[2] - live_.lo[2], dirty_.lo[2]);
-    const int kHi = std::min(box.hi[2] - live_.lo[2], dirty_.hi[2]);
+    const int jLo = std::max(box.lo[1] - storage_.lo[1], dirty_.lo[1]);
+    const int jHi = std::min(box.hi[1] - storage_.lo[1], dirty_.hi[1]);
+    const int kLo = std::max(box.lo[2] - storage_.lo[2], dirty_.lo[2]);
+    const int kHi = std::min(box.hi[2] - storage_.lo[2], dirty_.hi[2]);
     for (int k = kLo; k <= kHi; ++k)
     {
         for (int j = jLo; j <= jHi; ++j)
@@ -364,8 +342,8 @@ void StepValues::markDirty(const IndexBox& dirty)
     }
     for (int d = 0; d < 3; ++d)
     {
-        dirty_.lo[d] = dirty.lo[d] - live_.lo[d];
-        dirty_.hi[d] = dirty.hi[d] - live_.lo[d];
+        dirty_.lo[d] = dirty.lo[d] - storage_.lo[d];
+        dirty_.hi[d] = dirty.hi[d] - storage_.lo[d];
     }
     for (int k = dirty_.lo[2]; k <= dirty_.hi[2]; ++k)
     {

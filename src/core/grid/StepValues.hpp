@@ -19,18 +19,12 @@
 // holds to the bit what clearing the slot at once gave. Empty (no pending row) for blocks
 // whose storage is not the owned box (they copy the step into the window).
 //
-// Live box (liveBox = true): the array covers the part of the storage box the deposits
-// have reached (liveBox(), empty at first), grown before a write outside it
-// (grownLiveBox, LiveBox.hpp; the values held copied), and the window's live box follows
-// it at the commit. Nodes outside it hold zero, as in a dense array.
-//
-// Memory: nQuantities = 7 doubles (56 bytes) per stored node (per node of the live box).
+// Memory: nQuantities = 7 doubles (56 bytes) per stored node.
 #pragma once
 
 #include "grid/AveragingWindow.hpp"
 #include "grid/GridQuantities.hpp"
 #include "grid/GridSpec.hpp"
-#include "grid/LiveBox.hpp"
 #include "grid/WeightSink.hpp"
 
 #include <array>
@@ -46,21 +40,18 @@ using ParcelTotals = std::array<double, nQuantities>;
 class StepValues
 {
 public:
-    // gridNodes: the grid's node counts; storage: the nodes stored (grid indices);
-    // liveBox: the array covers the live box only (storage must be the owned box).
-    StepValues(const std::array<int, 3>& gridNodes, const IndexBox& storage, bool liveBox = false);
+    // gridNodes: the grid's node counts; storage: the nodes stored (grid indices).
+    StepValues(const std::array<int, 3>& gridNodes, const IndexBox& storage);
 
     const IndexBox& storageBox() const { return storage_; }
     // True when some node of the box (grid indices) is stored here: a deposit whose nodes
     // all lie in other blocks adds nothing here, and is not evaluated (StepDeposit::wants).
     bool storesAnyOf(const IndexBox& box) const { return !box.intersected(storage_).empty(); }
-    // The nodes the array covers (grid indices): the storage box for a dense array.
-    const IndexBox& liveBox() const { return live_; }
     // The stored nodes the step touched (grid indices).
     const IndexBox& touchedBox() const { return stepBox_; }
     // The array's pages of the nodes of `box` (grid indices) resident, values kept.
-    void makeResident(const IndexBox& box) { makeBoxResident(step_, live_, box, nQuantities); }
-    // liveBox().nodeCount() * nQuantities doubles over the live box (flatIndexInBox),
+    void makeResident(const IndexBox& box) { makeBoxResident(step_, storage_, box, nQuantities); }
+    // storageBox().nodeCount() * nQuantities doubles over the storage box (flatIndexInBox),
     // zero outside touchedBox(); the pending rows cleared first.
     NodeValueArray& values()
     {
@@ -77,7 +68,6 @@ public:
     // The weights that follow lie in box: its pending rows are cleared, the touched box grows.
     void prepare(const IndexBox& box)
     {
-        cover(box);
         clearPendingRowsOf(box);
         touch(box);
     }
@@ -106,7 +96,7 @@ public:
 
     // --- the exchange between blocks -----------------------------------------------------
     // Copies the box's values (nQuantities per node, i fastest; the box inside the storage
-    // box; zero outside the live box) into values[0 .. box.nodeCount() * nQuantities).
+    // box) into values[0 .. box.nodeCount() * nQuantities).
     void pack(const IndexBox& box, double* values) const;
     // ...and back: overwrites the box; the touched box grows by it.
     void unpack(const IndexBox& box, const double* values, std::size_t count);
@@ -126,26 +116,12 @@ private:
     // addSeparable's rows in AVX2 + FMA, runs of a layer's rows of the stored part of the box.
     void addSeparableInLanes(SeparableWeight& rows, double inverseSum, const ParcelTotals& totals,
                              const IndexBox& box, const IndexBox& stored, std::size_t rowAhead);
-    // Before a write into box (grid indices): the live box grown to hold its stored part.
-    void cover(const IndexBox& box)
-    {
-        if (tracksLive_)
-        {
-            const IndexBox grown = grownLiveBox(live_, box, storage_);
-            if (grown != live_)
-            {
-                relayout(grown);
-            }
-        }
-    }
-    // The array laid out over `grown` (holding the live box), the step's values copied.
-    void relayout(const IndexBox& grown);
     void touch(const IndexBox& box) { stepBox_ = stepBox_.united(box.intersected(storage_)); }
-    // A row's index in the array: j + ny k (live box indices).
+    // A storage row's index: j + ny k (storage indices).
     std::size_t storageRow(int j, int k) const
     {
         return static_cast<std::size_t>(j)
-            + static_cast<std::size_t>(live_.hi[1] - live_.lo[1] + 1) * static_cast<std::size_t>(k);
+            + static_cast<std::size_t>(storage_.hi[1] - storage_.lo[1] + 1) * static_cast<std::size_t>(k);
     }
     // Zeroes the dirty part of a pending row (storageRow) and marks it cleared.
     void zeroPendingRow(std::size_t row) const;
@@ -165,9 +141,7 @@ private:
 
     std::array<int, 3> gridNodes_;
     IndexBox storage_;
-    bool tracksLive_;      // the array covers the live box only
-    IndexBox live_;        // storage_ when !tracksLive_
-    bool storesWholeGrid_; // flat node index = array index
+    bool storesWholeGrid_; // flat node index = storage index
     // mutable: the lazy clearing gives the same values, so const readers may clear first
     mutable NodeValueArray step_;
     IndexBox stepBox_;

@@ -19,29 +19,24 @@ bool WindowSampler::owns(std::size_t node) const
     return node < spec_.nodeCount() && owned_.holds(n[0], n[1], n[2]);
 }
 
-std::array<int, 3> WindowSampler::ownedIndices(std::size_t node) const
+std::size_t WindowSampler::windowIndex(std::size_t node) const
 {
     const std::array<int, 3> n = nodeIndicesOfFlat(spec_.nodes, node);
     if (node >= spec_.nodeCount() || !owned_.holds(n[0], n[1], n[2]))
     {
         throw std::out_of_range("DensityGrid: node " + std::to_string(node) + " is not owned by this block");
     }
-    return n;
+    return flatIndexInBox(owned_, n[0], n[1], n[2]);
 }
 
 void WindowSampler::windowTotal(const AveragingWindow& window, std::size_t node, double* sums) const
 {
-    if (ownsWholeGrid_)
-    {
-        window.nodeTotal(node, sums);
-        return;
-    }
-    window.nodeTotalAt(ownedIndices(node), sums);
+    window.nodeTotal(ownsWholeGrid_ ? node : windowIndex(node), sums);
 }
 
 double WindowSampler::lastStepValue(const AveragingWindow& window, std::size_t node, int q) const
 {
-    return ownsWholeGrid_ ? window.newestStepValue(node, q) : window.newestStepValueAt(ownedIndices(node), q);
+    return window.newestStepValue(ownsWholeGrid_ ? node : windowIndex(node), q);
 }
 
 DropletFieldValue WindowSampler::fieldFromSums(const AveragingWindow& window, const QuantitySums& s) const
@@ -143,7 +138,8 @@ void WindowSampler::prefetchOwnedCornerSums(const AveragingWindow& window, const
         }
         else if (owns(node))
         {
-            window.prefetchNodeTotalAt(nodeIndicesOfFlat(spec_.nodes, node));
+            const std::array<int, 3> n = nodeIndicesOfFlat(spec_.nodes, node);
+            window.prefetchNodeTotal(flatIndexInBox(owned_, n[0], n[1], n[2]));
         }
     }
 }
@@ -193,10 +189,8 @@ double WindowSampler::windowMassPerStep(const AveragingWindow& window) const
         return 0.0;
     }
     double mass = 0.0;
-    // Over the window's live box: the other owned nodes hold zero (the same sum, the
-    // nodes in the same order)
     const NodeValueArray& total = window.total();
-    for (std::size_t n = 0; n < total.size() / nQuantities; ++n)
+    for (std::size_t n = 0; n < owned_.nodeCount(); ++n)
     {
         mass += total[n * nQuantities + quantityMass];
     }

@@ -87,8 +87,8 @@ private:
     double cellsPerNodeVolume(std::size_t node) const;
     // Corner c's share of sample()'s sums: weight x window sums per whole cell.
     void addCornerSum(const CornerWeights& corners, int c, const double* total, QuantitySums& sums) const;
-    // The grid indices of an owned node; throws std::out_of_range otherwise.
-    std::array<int, 3> ownedIndices(std::size_t node) const;
+    // The window's index of an owned node; throws std::out_of_range otherwise.
+    std::size_t windowIndex(std::size_t node) const;
 
     GridSpec spec_;
     IndexBox owned_;

@@ -187,7 +187,7 @@ void Foam::functionObjects::dropletFiberCollision::writeParallelStatistics()
 {
     // The grid nodes this processor stores (its block) and the fibers it
     // holds
-    parallelStatistics_.holding(grid_->storedNodes(), held_.size());
+    parallelStatistics_.holding(grid_->storageBox().nodeCount(), held_.size());
     const dropletFiber::parallelStatistics::spread all =
         parallelStatistics_.overProcessors();
     // Also in a serial run (one processor: sends nothing, max = mean), the

@@ -176,10 +176,9 @@ Foam::dropletFiber::gridBlocks::exchangeLists
 
 ::dropletFiber::GridBlock Foam::dropletFiber::gridBlocks::block() const
 {
-    // Dense blocks: their arrays' pages become resident where the deposits
-    // reach (NodeValueArray), and they deposit 2.5 times faster than live
-    // boxes (GridBlock::live) while the spray spreads (docs/scaleOut.md)
-    return {owned_, owned_, false};
+    // The owned nodes, stored whole: their arrays' pages become resident
+    // where the deposits reach (NodeValueArray)
+    return {owned_, owned_};
 }
 
 

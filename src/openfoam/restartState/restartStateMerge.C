@@ -323,7 +323,7 @@ bool foundOnAll(const processorStates& s, const word& key)
         ::dropletFiber::DensityGrid blockGrid
         (
             grid.spec, grid.kernel, int(grid.averagingSteps),
-            ::dropletFiber::GridBlock{block, block, false}
+            ::dropletFiber::GridBlock{block, block}
         );
         blockGrid.restoreWindow(window);
         return blockGrid.saveWindowPart(block);

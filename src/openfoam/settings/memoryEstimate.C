@@ -277,8 +277,8 @@ void Foam::dropletFiber::reportMemory
     const scalar fiberPoints
 )
 {
-    // An upper bound: a block holds its live box only (the owned nodes its
-    // deposits reached), the whole block where the spray fills it
+    // An upper bound: a block's pages are resident only where its deposits
+    // reached (NodeValueArray), the whole block where the spray fills it
     os  << "    memory per processor (estimate): grid "
         << inMB(estimate.gridHeld).c_str() << " (";
     if (Pstream::parRun())
