@@ -151,11 +151,13 @@ inline void makeValuesResident(NodeValueArray& values, std::size_t first, std::s
     }
 }
 
-// makeValuesResident over the values of `box`'s nodes (nQuantities each; grid indices,
-// the part outside `layout` ignored) in an array laid out over `layout`
-// (flatIndexInBox): rows that follow each other in memory are one range.
-inline void makeBoxResident(NodeValueArray& values, const IndexBox& layout, const IndexBox& box,
-                            std::size_t nQuantities)
+// Calls onRange(first, count) for each range of the values of `box`'s nodes (nQuantities
+// each; grid indices, the part outside `layout` ignored) in an array laid out over
+// `layout` (flatIndexInBox): rows that follow each other in memory are one range, so
+// that a system call covers as many pages as it can.
+template <class OnRange>
+void forEachValueRangeIn(const IndexBox& layout, const IndexBox& box, std::size_t nQuantities,
+                         OnRange&& onRange)
 {
     std::size_t first = 0;
     std::size_t end = 0;
@@ -165,12 +167,23 @@ inline void makeBoxResident(NodeValueArray& values, const IndexBox& layout, cons
                      const std::size_t from = row.first * nQuantities;
                      if (from != end)
                      {
-                         makeValuesResident(values, first, end - first);
+                         onRange(first, end - first);
                          first = from;
                      }
                      end = from + row.length * nQuantities;
                  });
-    makeValuesResident(values, first, end - first);
+    onRange(first, end - first);
+}
+
+// makeValuesResident over the values of `box`'s nodes (nQuantities each; grid indices,
+// the part outside `layout` ignored) in an array laid out over `layout`
+// (flatIndexInBox): rows that follow each other in memory are one range.
+inline void makeBoxResident(NodeValueArray& values, const IndexBox& layout, const IndexBox& box,
+                            std::size_t nQuantities)
+{
+    forEachValueRangeIn(layout, box, nQuantities,
+                        [&](std::size_t first, std::size_t count)
+                        { makeValuesResident(values, first, count); });
 }
 
 // The whole pages inside values[first, first + count) given back to the operating system
@@ -197,20 +210,9 @@ inline void releaseValuePages(NodeValueArray& values, std::size_t first, std::si
 inline void releaseBoxPages(NodeValueArray& values, const IndexBox& layout, const IndexBox& box,
                             std::size_t nQuantities)
 {
-    std::size_t first = 0;
-    std::size_t end = 0;
-    forEachRowIn(box.intersected(layout), layout,
-                 [&](const IndexRow& row)
-                 {
-                     const std::size_t from = row.first * nQuantities;
-                     if (from != end)
-                     {
-                         releaseValuePages(values, first, end - first);
-                         first = from;
-                     }
-                     end = from + row.length * nQuantities;
-                 });
-    releaseValuePages(values, first, end - first);
+    forEachValueRangeIn(layout, box, nQuantities,
+                        [&](std::size_t first, std::size_t count)
+                        { releaseValuePages(values, first, count); });
 }
 
 } // namespace dropletFiber
