@@ -13,16 +13,6 @@ namespace
 constexpr std::int64_t formatVersion = 1;      // the whole grid
 constexpr std::int64_t blockFormatVersion = 2; // a block of it: its box after the header
 
-IndexBox wholeGridBox(const std::array<int, 3>& nodes)
-{
-    IndexBox box;
-    for (int d = 0; d < 3; ++d)
-    {
-        box.lo[d] = 0;
-        box.hi[d] = nodes[d] - 1;
-    }
-    return box;
-}
 
 [[noreturn]] void failRestart(const std::string& what)
 {
@@ -37,7 +27,7 @@ bool AveragingWindow::boxHolds(const IndexBox& box, std::size_t node) const
 }
 
 AveragingWindow::AveragingWindow(const std::array<int, 3>& nodes, int nQuantities, int length)
-    : AveragingWindow(nodes, wholeGridBox(nodes), nQuantities, length)
+    : AveragingWindow(nodes, wholeBox(nodes), nQuantities, length)
 {
 }
 
@@ -51,7 +41,7 @@ AveragingWindow::AveragingWindow(const std::array<int, 3>& gridNodes, const Inde
         throw std::invalid_argument("averaging window: length must be at least 1 step, got "
                                     + std::to_string(length));
     }
-    if (region.empty() || region.intersected(wholeGridBox(gridNodes)) != region)
+    if (region.empty() || region.intersected(wholeBox(gridNodes)) != region)
     {
         throw std::invalid_argument("averaging window: region " + boxText(region)
                                     + " is not a block of the grid");
@@ -65,7 +55,7 @@ AveragingWindow::AveragingWindow(const std::array<int, 3>& gridNodes, const Inde
 
 bool AveragingWindow::wholeGrid() const
 {
-    return region_ == wholeGridBox(gridNodes_);
+    return region_ == wholeBox(gridNodes_);
 }
 
 IndexBox AveragingWindow::toRegion(const IndexBox& box) const
@@ -398,7 +388,7 @@ std::size_t readWindowStateHeader(const std::vector<std::int64_t>& c, std::int64
     {
         fail("different number of quantities per node");
     }
-    saved = wholeGridBox(gridNodes);
+    saved = wholeBox(gridNodes);
     const std::size_t size = c[0] == blockVersion ? windowStateHeaderSize + 6 : windowStateHeaderSize;
     if (c[0] == blockVersion)
     {

@@ -212,9 +212,8 @@ GridPartition GridPartition::depositBisection(const DepositWork& work, int parts
                                     + std::to_string(parts));
     }
     std::vector<IndexBox> boxes(static_cast<std::size_t>(parts));
-    const std::array<int, 3>& t = touched.tiles();
-    bisectByDeposit(work.groups(), touched, IndexBox{{{0, 0, 0}}, {{t[0] - 1, t[1] - 1, t[2] - 1}}},
-                    Processors{0, parts}, maxNodesPerPart, boxes);
+    bisectByDeposit(work.groups(), touched, wholeBox(touched.tiles()), Processors{0, parts}, maxNodesPerPart,
+                    boxes);
     return GridPartition(std::move(boxes));
 }
 

@@ -10,8 +10,7 @@ DepositWork::DepositWork(const std::array<int, 3>& gridNodes, int maxTilesPerDir
 
 void DepositWork::addParcel(const IndexBox& depositBox, double work)
 {
-    const std::array<int, 3>& t = tiles();
-    const IndexBox all = touched_.nodesOf(IndexBox{{{0, 0, 0}}, {{t[0] - 1, t[1] - 1, t[2] - 1}}});
+    const IndexBox all = touched_.nodesOf(wholeBox(tiles()));
     const IndexBox nodes = depositBox.intersected(all);
     if (nodes.empty())
     {

@@ -52,6 +52,12 @@ struct IndexBox
     bool operator!=(const IndexBox& other) const { return !(*this == other); }
 };
 
+// Every index of a lattice of counts[d] points per direction (a grid's nodes, or its tiles).
+inline IndexBox wholeBox(const std::array<int, 3>& counts)
+{
+    return IndexBox{{{0, 0, 0}}, {{counts[0] - 1, counts[1] - 1, counts[2] - 1}}};
+}
+
 // "(lo x y z) to (hi x y z)", for messages.
 std::string boxText(const IndexBox& box);
 

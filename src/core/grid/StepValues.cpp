@@ -76,16 +76,10 @@ void checkStored(const IndexBox& box, const IndexBox& storage, const char* what)
     }
 }
 
-bool wholeGrid(const std::array<int, 3>& gridNodes, const IndexBox& box)
-{
-    return box.lo == std::array<int, 3>{{0, 0, 0}}
-    && box.hi == std::array<int, 3>{{gridNodes[0] - 1, gridNodes[1] - 1, gridNodes[2] - 1}};
-}
-
 } // namespace
 
 StepValues::StepValues(const std::array<int, 3>& gridNodes, const IndexBox& storage)
-    : gridNodes_(gridNodes), storage_(storage), storesWholeGrid_(wholeGrid(gridNodes, storage))
+    : gridNodes_(gridNodes), storage_(storage), storesWholeGrid_(storage == wholeBox(gridNodes))
 {
     step_ = zeroedNodeValues(storage_.nodeCount() * nQuantities);
     rowPending_.assign(storage_.empty() ? 0 : storageRow(0, storage_.hi[2] - storage_.lo[2] + 1), 0);
@@ -151,7 +145,7 @@ std::size_t StepValues::addSeparable(SeparableWeight& rows, double inverseSum, c
     {
         addSeparableInLanes(rows, inverseSum, totals, box, stored, rowAhead);
         touch(box);
-        return stored.empty() ? 0 : stored.nodeCount();
+        return stored.nodeCount();
     }
     forEachRowIn(stored, storage_,
                  [&](const IndexRow& row)

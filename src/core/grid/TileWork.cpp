@@ -10,11 +10,6 @@ namespace dropletFiber
 namespace
 {
 
-IndexBox gridBox(const std::array<int, 3>& nodes)
-{
-    return IndexBox{{{0, 0, 0}}, {{nodes[0] - 1, nodes[1] - 1, nodes[2] - 1}}};
-}
-
 // The tiles a box of nodes meets (tile indices), given the nodes per tile.
 IndexBox tilesMet(const IndexBox& nodes, const std::array<int, 3>& tileNodes)
 {
@@ -67,7 +62,7 @@ IndexBox TileWork::nodesOf(const IndexBox& tileBox) const
 
 void TileWork::addBox(const IndexBox& box, double perNode)
 {
-    const IndexBox nodes = box.intersected(gridBox(gridNodes_));
+    const IndexBox nodes = box.intersected(wholeBox(gridNodes_));
     if (nodes.empty())
     {
         return;
@@ -89,7 +84,7 @@ void TileWork::addBox(const IndexBox& box, double perNode)
 
 double TileWork::workIn(const IndexBox& box) const
 {
-    const IndexBox nodes = box.intersected(gridBox(gridNodes_));
+    const IndexBox nodes = box.intersected(wholeBox(gridNodes_));
     if (nodes.empty())
     {
         return 0.0;

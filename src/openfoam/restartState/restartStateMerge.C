@@ -447,15 +447,13 @@ Foam::dictionary Foam::dropletFiber::mergedStateDictionary
     {
         parts.push_back(blockWindowValues(s.states[proci], s.paths[proci], grid));
     }
-    ::dropletFiber::IndexBox whole;
-    for (int d = 0; d < 3; ++d)
-    {
-        whole.lo[d] = 0;
-        whole.hi[d] = grid.spec.nodes[d] - 1;
-    }
     try
     {
-        return ::dropletFiber::joinedWindowState(parts, whole);
+        return ::dropletFiber::joinedWindowState
+        (
+            parts,
+            ::dropletFiber::wholeBox(grid.spec.nodes)
+        );
     }
     catch (const std::exception& e)
     {

@@ -14,6 +14,7 @@
 #include "grid/SeparableLanes.hpp"
 #include "grid/SeparableWeight.hpp"
 
+#include "RequireLanes.hpp"
 #include "TestGrids.hpp"
 
 #include <gtest/gtest.h>
@@ -26,12 +27,6 @@ using namespace dropletFiber;
 
 namespace
 {
-
-#define REQUIRE_LANES()                                                                                      \
-    if (!SeparableLanes::available())                                                                        \
-    {                                                                                                        \
-        GTEST_SKIP() << "this CPU has no AVX2 + FMA (or this build no AVX2 code): nothing to test";          \
-    }
 
 constexpr std::size_t nq = SeparableLanes::quantities;
 

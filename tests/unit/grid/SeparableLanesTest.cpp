@@ -20,6 +20,7 @@
 #include "grid/SeparableLanes.hpp"
 #include "grid/SeparableWeight.hpp"
 
+#include "RequireLanes.hpp"
 #include "TestGrids.hpp"
 
 #include <gtest/gtest.h>
@@ -36,12 +37,6 @@ using namespace dropletFiber;
 
 namespace
 {
-
-#define REQUIRE_LANES()                                                                                      \
-    if (!SeparableLanes::available())                                                                        \
-    {                                                                                                        \
-        GTEST_SKIP() << "this CPU has no AVX2 + FMA (or this build no AVX2 code): nothing to test";          \
-    }
 
 // Q tables of `stride` positive factors in [1e-3, 1] and Q row factors in [1e-3, 1].
 struct RandomRow
