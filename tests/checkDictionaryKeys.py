@@ -37,6 +37,12 @@ READERS = (
     "src/openfoam/settings/turbulenceSettings.C",
     "src/openfoam/airSampler/airSampler.C",
     "src/openfoam/dropletFiberCollision/dropletFiberCollision.C",
+    "src/openfoam/stages/sprayParcels/sprayParcels.C",
+    "src/openfoam/stages/couplingGrid/couplingGrid.C",
+    "src/openfoam/stages/fiberPopulation/fiberPopulation.C",
+    "src/openfoam/stages/fiberMotion/fiberMotion.C",
+    "src/openfoam/stages/couplingOutput/couplingOutput.C",
+    "src/openfoam/stages/couplingRestart/couplingRestart.C",
 )
 CHECKED_READ = re.compile(
     r"\b(?:getPositive|getNonNegative|getCheckedScalar|getLabelInRange|getSwitch"

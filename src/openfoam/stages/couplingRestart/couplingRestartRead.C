@@ -2,15 +2,20 @@
   dropletFiber: stochastic droplet-fiber coupling for OpenFOAM
 -------------------------------------------------------------------------------
 Description
-    The checks of the restart state before its parts are read: a missing
-    state where a run restarts, a state of another processor count or of
-    another time stop the run naming the file and what to do.
+    The restart state read at the start: a missing state where a run
+    restarts, a state of another processor count or of another time stop the
+    run naming the file and what to do; else the parts read their entries,
+    every value checked, and a processor's error stops all of them.
 
 \*---------------------------------------------------------------------------*/
 
 #include "couplingRestart.H"
 #include "OStringStream.H"
 #include "OSspecific.H"
+#include "IFstream.H"
+#include "stringOps.H"
+#include "restartSources.H"
+#include "PstreamReduceOps.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -161,6 +166,116 @@ void Foam::dropletFiber::couplingRestart::checkStateTime
             << " (uniform/time included), or set 'restart fresh;'."
             << exit(FatalIOError);
     }
+}
+
+
+bool Foam::dropletFiber::couplingRestart::readState
+(
+    UPtrList<restartPart>& parts,
+    const gridSettings& grid
+)
+{
+    const fileName path = statePath(time_.timeName());
+    if (fresh_)
+    {
+        Info<< type() << " " << name() << ": restart fresh: ";
+        if (isFile(path))
+        {
+            Info<< "the restart state " << path << " is not read, ";
+        }
+        Info<< "starting from the dictionary's fibers and an empty grid"
+            << " window" << nl;
+        return false;
+    }
+    if (!isFile(path))
+    {
+        stopIfStateMissing(path);
+        stopIfRestartWithoutState(path);
+        Info<< type() << " " << name() << ": no restart state " << path
+            << " (the case's first time, or not after the function object's"
+            << " timeStart): starting from the dictionary's fibers and an"
+            << " empty grid window" << nl;
+        return false;
+    }
+
+    IFstream is(path);
+    const dictionary state(is);
+    checkStateProcessors(state, path);
+    checkStateTime(state, path);
+    forAll(parts, parti)
+    {
+        parts[parti].readState(state, path);
+    }
+    // States of earlier versions have no sources to compare with
+    if (state.found("sources"))
+    {
+        dropletFiber::warnSourcesDiffer
+        (
+            type() + " '" + name() + "'", state.subDict("sources"), path,
+            dict_.subOrEmptyDict("fibers"), grid
+        );
+    }
+
+    Info<< type() << " " << name() << ": restarted from " << path
+        << ": captured mass so far "
+        << state.subDict("totals").get<scalar>("captured") << " kg" << nl;
+    return true;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::dropletFiber::couplingRestart::readStateOnEveryProcessor
+(
+    UPtrList<restartPart>& parts,
+    const gridSettings& grid
+)
+{
+    // Each processor reads its own copy. OpenFOAM prints an error of a
+    // function object's construction on the master only: the message of a
+    // processor whose copy is missing or damaged goes to all of them, and
+    // all stop.
+    if (!Pstream::parRun())
+    {
+        return readState(parts, grid);
+    }
+    bool restored = false;
+    List<string> failures(Pstream::nProcs());
+    try
+    {
+        restored = readState(parts, grid);
+    }
+    catch (const Foam::IOerror& err)
+    {
+        OStringStream os;
+        err.write(os, false);
+        failures[Pstream::myProcNo()] = stringOps::trim(os.str());
+    }
+    catch (const Foam::error& err)
+    {
+        OStringStream os;
+        err.write(os, false);
+        failures[Pstream::myProcNo()] = stringOps::trim(os.str());
+    }
+    const bool someRestored = returnReduce(restored, orOp<bool>());
+    if (someRestored && !restored && failures[Pstream::myProcNo()].empty())
+    {
+        failures[Pstream::myProcNo()] =
+            "Restart state " + statePath(time_.timeName()) + " is missing,"
+            " while other processors have theirs.";
+    }
+    Pstream::gatherList(failures);
+    Pstream::scatterList(failures);
+    forAll(failures, proci)
+    {
+        if (!failures[proci].empty())
+        {
+            FatalIOErrorInFunction(dict_)
+                << "processor " << proci << ": " << failures[proci].c_str()
+                << exit(FatalIOError);
+        }
+    }
+    return restored;
 }
 
 
