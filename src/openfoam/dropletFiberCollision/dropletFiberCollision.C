@@ -235,8 +235,10 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
     dropletFiber::stepRow step;
     statistics_.startStep();
 
-    // 1.-2. The parcels of this step, onto the grid, averaged over the window
+    // 1.-2. The parcels of this step (after a restart, with the removal of
+    //       the step restarted from), onto the grid, averaged over the window
     clockValue depositionStart(true);
+    spray_.applyRestoredRemovalOnce();
     const std::vector<::dropletFiber::Parcel>& parcels =
         spray_.gather(step.parcels, step.droplets);
     step.deposit = coreCall

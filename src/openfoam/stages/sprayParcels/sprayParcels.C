@@ -112,14 +112,6 @@ Foam::wordList Foam::dropletFiber::sprayParcels::selectClouds() const
 const std::vector<::dropletFiber::Parcel>&
 Foam::dropletFiber::sprayParcels::gather(label& parcels, scalar& droplets)
 {
-    if (removalRestored_)
-    {
-        coreCall
-        (
-            "removing the droplets captured before the restart",
-            [this]() { applyRestoredRemoval(); }
-        );
-    }
     parcels_.clear();
     stepClouds_.clear();
     cloudStarts_.clear();

@@ -213,6 +213,19 @@ Foam::dropletFiber::parcelRemoval Foam::dropletFiber::sprayParcels::writeBack
 }
 
 
+void Foam::dropletFiber::sprayParcels::applyRestoredRemovalOnce()
+{
+    if (removalRestored_)
+    {
+        coreCall
+        (
+            "removing the droplets captured before the restart",
+            [this]() { applyRestoredRemoval(); }
+        );
+    }
+}
+
+
 void Foam::dropletFiber::sprayParcels::applyRemovalBeforeFirstStep()
 {
     // In the run that wrote the state the removal came before the clouds'
