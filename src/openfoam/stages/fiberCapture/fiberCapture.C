@@ -122,17 +122,10 @@ void Foam::dropletFiber::fiberCapture::warnSamplesOutside
     const ::dropletFiber::GridSpec& g
 )
 {
-    // Once warned, no more reductions (the flag is the same on every
-    // processor: it follows a reduced count)
-    if (warnedSamplesOutside_)
-    {
-        return;
-    }
-    const label total = returnReduce(samplesOutside, sumOp<label>());
-    if (total > 0)
+    if (samplesOutside > 0)
     {
         WarningInFunction
-            << type() << " " << name() << ": " << total
+            << type() << " " << name() << ": " << samplesOutside
             << " collision sample points of fiber segments lie outside the"
             << " grid box at time " << time_.timeName()
             << ": those segments see no droplets there." << nl
@@ -210,7 +203,15 @@ void Foam::dropletFiber::fiberCapture::read
             );
         }
     );
-    warnSamplesOutside(samplesOutside, grid.spec());
+    // Once warned, no more reductions (the flag is the same on every
+    // processor: it follows a reduced count)
+    if (!warnedSamplesOutside_)
+    {
+        warnSamplesOutside
+        (
+            returnReduce(samplesOutside, sumOp<label>()), grid.spec()
+        );
+    }
     if (depletion_)
     {
         const std::vector<double> granted =

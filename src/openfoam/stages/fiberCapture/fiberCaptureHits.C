@@ -94,34 +94,26 @@ void Foam::dropletFiber::fiberCapture::countHits
     {
         giveHits(fields, hitMass, cut, samplesPerSegment, capture);
     }
-    if (fellShort)
+    // Every processor's cut (empty on those without samples), summed
+    if (fellShort && !loggedHitsCut_)
     {
-        logHitsCutOnce(cut);
+        scalar total = 0;
+        for (const double c : cut)
+        {
+            total += c;
+        }
+        logHitsCutOnce(returnReduce(total, sumOp<scalar>()));
     }
 }
 
 
-void Foam::dropletFiber::fiberCapture::logHitsCutOnce
-(
-    const std::vector<double>& cut
-)
+void Foam::dropletFiber::fiberCapture::logHitsCutOnce(const scalar cut)
 {
-    // Every processor's cut (empty on those without samples) is formed
-    if (loggedHitsCut_)
-    {
-        return;
-    }
     loggedHitsCut_ = true;
-    scalar total = 0;
-    for (const double c : cut)
-    {
-        total += c;
-    }
-    reduce(total, sumOp<scalar>());
     Info<< type() << " " << name() << ": at time " << time_.timeName()
         << " discrete hits asked more of some parcels than they held: they"
         << " gave all they had and the hits at their nodes were cut by "
-        << total << " kg, so that captured = removed (docs/model.md sec. 7,"
+        << cut << " kg, so that captured = removed (docs/model.md sec. 7,"
         << " P33; logged once)" << endl;
 }
 
