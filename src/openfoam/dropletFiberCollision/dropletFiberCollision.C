@@ -135,11 +135,19 @@ Foam::functionObjects::dropletFiberCollision::depositParcels
     // Discrete hits draw whole droplets from the node sums: a last-bit
     // difference can change a count, so there the sums are made the same on
     // every decomposition (docs/model.md sec. 4, grid blocks)
-    return grid_.deposit
+    return coreCall
     (
-        parcels, dt, capture_.depletion() ? &nearFibers : nullptr,
-        capture_.options().mode == ::dropletFiber::CollisionMode::Discrete,
-        statistics_
+        "depositing the parcels",
+        [&]()
+        {
+            return grid_.deposit
+            (
+                parcels, dt, capture_.depletion() ? &nearFibers : nullptr,
+                capture_.options().mode
+             == ::dropletFiber::CollisionMode::Discrete,
+                statistics_
+            );
+        }
     );
 }
 
@@ -177,6 +185,23 @@ Foam::functionObjects::dropletFiberCollision::collideAndDeplete
         );
     }
     return capture;
+}
+
+
+void Foam::functionObjects::dropletFiberCollision::advanceFibers
+(
+    ::dropletFiber::CaptureSources& capture,
+    const scalar dt,
+    dropletFiber::stepRow& step
+)
+{
+    const ::dropletFiber::StepReport report = motion_.advance
+    (
+        population_.fibers(), population_.boxes(), dt, capture, statistics_
+    );
+    step.capturedStep = capture_.countCaptured(capture);
+    step.maxSegmentLengthError = report.maxSegmentLengthError;
+    step.subSteps = report.subSteps;
 }
 
 
@@ -237,40 +262,29 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
 
     // 1.-2. The parcels of this step (after a restart, with the removal of
     //       the step restarted from), onto the grid, averaged over the window
-    clockValue depositionStart(true);
+    clockValue clock(true);
     spray_.applyRestoredRemovalOnce();
-    const std::vector<::dropletFiber::Parcel>& parcels =
-        spray_.gather(step.parcels, step.droplets);
-    step.deposit = coreCall
-    (
-        "depositing the parcels", [&]() { return depositParcels(parcels, dt); }
-    );
-    step.depositionTime = depositionStart.elapsed();
+    const auto& parcels = spray_.gather(step.parcels, step.droplets);
+    step.deposit = depositParcels(parcels, dt);
+    step.depositionTime = clock.elapsed();
     grid_.recordDeposit(step.deposit, step.depositionTime);
 
     // 3. New fibers
-    clockValue fiberStart(true);
+    clock.update();
     population_.inject(statistics_);
-    step.fiberTime = fiberStart.elapsed();
+    step.fiberTime = clock.elapsed();
 
     // 4. Collision mass of every segment; with depletion taken from the parcels
-    clockValue collisionStart(true);
+    clock.update();
     ::dropletFiber::CaptureSources capture = collideAndDeplete(parcels, dt);
-    step.collisionTime = collisionStart.elapsed();
+    step.collisionTime = clock.elapsed();
 
-    // 5. Advance the fibers: capture, air drag, bending, inextensibility
-    fiberStart.update();
-    const ::dropletFiber::StepReport report = motion_.advance
-    (
-        population_.fibers(), population_.boxes(), dt, capture, statistics_
-    );
-    step.capturedStep = capture_.countCaptured(capture);
-    step.maxSegmentLengthError = report.maxSegmentLengthError;
-    step.subSteps = report.subSteps;
-
-    // 6. Fibers that left; the others to the processor now holding them
+    // 5. Advance the fibers: capture, air drag, bending, inextensibility;
+    // 6. fibers that left removed, the others to the processor holding them
+    clock.update();
+    advanceFibers(capture, dt, step);
     population_.removeLostAndPassOn(statistics_);
-    step.fiberTime += scalar(fiberStart.elapsed());
+    step.fiberTime += scalar(clock.elapsed());
     grid_.rebalance(parcels, dt, statistics_);
 
     // 7. Report; at write times the restart state and the mass balances
