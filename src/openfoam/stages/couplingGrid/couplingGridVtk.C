@@ -11,7 +11,7 @@ Description
 #include "couplingGrid.H"
 #include "OSspecific.H"
 
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 std::vector<::dropletFiber::VtkField>
 Foam::dropletFiber::couplingGrid::fields
@@ -72,6 +72,8 @@ Foam::dropletFiber::couplingGrid::fields
     return fields;
 }
 
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 void Foam::dropletFiber::couplingGrid::writeVtk
 (

@@ -65,8 +65,6 @@ void Foam::dropletFiber::fiberMotion::advanceTurbulence
 }
 
 
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
 void Foam::dropletFiber::fiberMotion::reportTurbulence(Ostream& os) const
 {
     const auto& s = turbulence_.settings;

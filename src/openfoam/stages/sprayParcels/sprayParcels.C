@@ -30,6 +30,75 @@ Foam::dropletFiber::sprayParcels::sprayParcels
 {}
 
 
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::label Foam::dropletFiber::sprayParcels::cloudEnd(const label k) const
+{
+    return k + 1 < stepClouds_.size() ? cloudStarts_[k + 1] : parcels_.size();
+}
+
+
+void Foam::dropletFiber::sprayParcels::warnImplausibleDroplets()
+{
+    // At the first step with parcels (on any processor), once
+    if (checkedDroplets_)
+    {
+        return;
+    }
+    scalar lo = VGREAT;
+    scalar hi = -VGREAT;
+    for (const scalar rho : parcels_.rho)
+    {
+        lo = min(lo, rho);
+        hi = max(hi, rho);
+    }
+    reduce(lo, minOp<scalar>());
+    reduce(hi, maxOp<scalar>());
+    if (lo > hi)
+    {
+        return;
+    }
+    checkedDroplets_ = true;
+    const auto& range = dropletDensityRange;
+    const string text = implausible(lo < range.lo ? lo : hi, range);
+    if (!text.empty())
+    {
+        WarningInFunction
+            << type() << " " << name() << ": the droplet density (the"
+            << " parcels' rho: the clouds' constantProperties rho0 or their"
+            << " injection data) "
+            << text.c_str() << endl;
+    }
+}
+
+
+void Foam::dropletFiber::sprayParcels::logCloudRoute(const cloud& c)
+{
+    if (!loggedClouds_.insert(c.name()))
+    {
+        return;
+    }
+    const bool direct =
+        !gatherWriteObjects_ && cloudParcels::readsDirectly(c);
+    Info<< type() << " " << name() << ": cloud '" << c.name() << "' (type "
+        << c.type() << ") read "
+        << (
+               direct
+             ? "parcel by parcel (a stock solver's parcel type)"
+             : gatherWriteObjects_
+             ? "through cloud::writeObjects (entry gather writeObjects)"
+             : "through cloud::writeObjects (gather direct reads the stock"
+               " solvers' parcel types only)"
+           );
+    if (depletion_ && !cloudParcels::readsDirectly(c))
+    {
+        Info<< "; the droplets the fibers capture cannot be removed from"
+            << " its parcels";
+    }
+    Info<< nl;
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 void Foam::dropletFiber::sprayParcels::read
@@ -139,73 +208,6 @@ Foam::dropletFiber::sprayParcels::gather(label& parcels, scalar& droplets)
         p.rhoDroplet = parcels_.rho[i];
     }
     return stepParcels_;
-}
-
-
-Foam::label Foam::dropletFiber::sprayParcels::cloudEnd(const label k) const
-{
-    return k + 1 < stepClouds_.size() ? cloudStarts_[k + 1] : parcels_.size();
-}
-
-
-void Foam::dropletFiber::sprayParcels::warnImplausibleDroplets()
-{
-    // At the first step with parcels (on any processor), once
-    if (checkedDroplets_)
-    {
-        return;
-    }
-    scalar lo = VGREAT;
-    scalar hi = -VGREAT;
-    for (const scalar rho : parcels_.rho)
-    {
-        lo = min(lo, rho);
-        hi = max(hi, rho);
-    }
-    reduce(lo, minOp<scalar>());
-    reduce(hi, maxOp<scalar>());
-    if (lo > hi)
-    {
-        return;
-    }
-    checkedDroplets_ = true;
-    const auto& range = dropletDensityRange;
-    const string text = implausible(lo < range.lo ? lo : hi, range);
-    if (!text.empty())
-    {
-        WarningInFunction
-            << type() << " " << name() << ": the droplet density (the"
-            << " parcels' rho: the clouds' constantProperties rho0 or their"
-            << " injection data) "
-            << text.c_str() << endl;
-    }
-}
-
-
-void Foam::dropletFiber::sprayParcels::logCloudRoute(const cloud& c)
-{
-    if (!loggedClouds_.insert(c.name()))
-    {
-        return;
-    }
-    const bool direct =
-        !gatherWriteObjects_ && cloudParcels::readsDirectly(c);
-    Info<< type() << " " << name() << ": cloud '" << c.name() << "' (type "
-        << c.type() << ") read "
-        << (
-               direct
-             ? "parcel by parcel (a stock solver's parcel type)"
-             : gatherWriteObjects_
-             ? "through cloud::writeObjects (entry gather writeObjects)"
-             : "through cloud::writeObjects (gather direct reads the stock"
-               " solvers' parcel types only)"
-           );
-    if (depletion_ && !cloudParcels::readsDirectly(c))
-    {
-        Info<< "; the droplets the fibers capture cannot be removed from"
-            << " its parcels";
-    }
-    Info<< nl;
 }
 
 

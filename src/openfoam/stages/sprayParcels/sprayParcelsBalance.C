@@ -28,35 +28,6 @@ Description
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::dropletFiber::sprayParcels::findLiquidSpecies()
-{
-    liquidSpecies_.clear();
-    const wordList clouds =
-        cloudNames_.empty()
-      ? cloudParcels::cloudNames(mesh_)
-      : cloudNames_;
-    DynamicList<word> species;
-    for (const word& cloudName : clouds)
-    {
-        if (!mesh_.foundObject<cloud>(cloudName))
-        {
-            continue; // created later (selectClouds reports it if never)
-        }
-        const cloud& c = mesh_.lookupObject<cloud>(cloudName);
-        for (const word& s : cloudParcels::liquidSpecies(c))
-        {
-            if (!species.found(s))
-            {
-                species.append(s);
-            }
-        }
-    }
-    liquidSpecies_.transfer(species);
-    capturedSpecies_.setSize(liquidSpecies_.size());
-    capturedSpecies_ = Zero;
-}
-
-
 void Foam::dropletFiber::sprayParcels::addCapturedSpecies
 (
     const std::vector<double>& fraction
@@ -115,6 +86,37 @@ void Foam::dropletFiber::sprayParcels::addCapturedSpecies
 }
 
 
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::dropletFiber::sprayParcels::findLiquidSpecies()
+{
+    liquidSpecies_.clear();
+    const wordList clouds =
+        cloudNames_.empty()
+      ? cloudParcels::cloudNames(mesh_)
+      : cloudNames_;
+    DynamicList<word> species;
+    for (const word& cloudName : clouds)
+    {
+        if (!mesh_.foundObject<cloud>(cloudName))
+        {
+            continue; // created later (selectClouds reports it if never)
+        }
+        const cloud& c = mesh_.lookupObject<cloud>(cloudName);
+        for (const word& s : cloudParcels::liquidSpecies(c))
+        {
+            if (!species.found(s))
+            {
+                species.append(s);
+            }
+        }
+    }
+    liquidSpecies_.transfer(species);
+    capturedSpecies_.setSize(liquidSpecies_.size());
+    capturedSpecies_ = Zero;
+}
+
+
 const Foam::dropletFiber::cloudParcels::massReport&
 Foam::dropletFiber::sprayParcels::readCloudMassReport()
 {
@@ -164,5 +166,6 @@ void Foam::dropletFiber::sprayParcels::reportCloudBalance
     }
     Info<< endl;
 }
+
 
 // ************************************************************************* //
