@@ -3,15 +3,22 @@
 # checkDenseMat.sh - a random fixed-fiber mat through the function object, the
 # table S x travel per step (docs/model.md sec. 7; docs/validation.md, dense mats).
 #
-# Usage: checkDenseMat.sh CASE_DIR WORK_DIR TOLERANCE [S ... -- TRAVEL ...]
+# Usage: checkDenseMat.sh [--parallel] CASE_DIR WORK_DIR TOLERANCE [S ... -- TRAVEL ...]
 #   (defaults: S 1, ln 10, 4.6; travel 1, 1/2, 1/4 grid spacings per step)
 #   For every cell of the table a copy of the denseMat case gets its mat
 #   (makeMat.py: seed 1, the same fiber positions' draws for every travel) and
 #   is run serially by its Allrun (pimpleFoam, default grid settings);
 #   checkDenseMat.py then compares every penetration with exp(-S) from the
 #   fibers placed, within TOLERANCE, and writes the table (WORK_DIR/denseMat.csv).
+#   --parallel: every run on 2 ranks (the case's decomposeParDict, cut across
+#   the mat at x = 8 mm).
 #------------------------------------------------------------------------------
 set -euo pipefail
+allrunArgs=()
+if [ "${1:-}" = "--parallel" ]; then
+    allrunArgs=(-parallel)
+    shift
+fi
 caseDir="$1"; work="$2"; tolerance="$3"; shift 3
 here="$(cd "${0%/*}" && pwd)"
 # shellcheck disable=SC1091
@@ -35,7 +42,7 @@ for S in "${depths[@]}"; do
         run="$work/S${S:0:4}_travel$travel"
         cp -r "$caseDir" "$run"
         "$PY" "$run/makeMat.py" "$run" "$S" "$travel" 1
-        "$run/Allrun" > /dev/null
+        "$run/Allrun" "${allrunArgs[@]}" > /dev/null
         for log in "$run"/log.*; do
             if grep -q -E "FOAM FATAL|FOAM exiting|Segmentation fault" "$log"; then
                 tail -25 "$log"
