@@ -1,0 +1,117 @@
+"""Penetration of a random fixed-fiber mat through the function object (case denseMat;
+docs/model.md sec. 7, P15; docs/validation.md, dense mats).
+
+Usage: checkDenseMat.py [--tolerance TOL] [--csv FILE] CASE...
+
+For each finished case (makeMat.py's mat, run by its Allrun): the mat's interception
+depth is derived here from the fibers' points in system/matFibers and the case's
+sizes, independently of the library,
+    S = sum over fibers of 2 (r_F + r_p) L_f / (W D)     (fibers along z, normal to the flow)
+and its geometric penetration (P15, straight paths) is exp(-S). The measured
+penetration is from the function object's table over the last 10 ms (10 mm of travel,
+the spray has crossed the duct and the mat long before): the parcel mass that left
+through the outlet over the mass sprayed, escapedMass / sprayedMass (their increments),
+and 1 - capturedStep / sprayedMass for the same steps (the two differ by the change of
+the airborne mass, zero in a steady stream). Checked: both within TOL of exp(-S).
+
+And, the diagnosis of the gap (docs/model.md sec. 7, thick fibers): the lanes' mean
+field, the model's own limit for small steps, computed here from the fibers' positions:
+the mean over the parcels' lanes (y = (j/4 + 1/8) mm) of exp(-S_I(y)), S_I the
+piecewise-linear interpolant across the flow of the nodes' depths, each fiber's strip
+2 (r_F + r_p) spread over its two node columns by the hat weights of its y. The
+measured penetration must not exceed it by more than 0.1 % (P13's product per step
+only adds depth to it).
+"""
+import math
+import os
+import re
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
+from foamfiles import read_table  # noqa: E402
+from checks import check, finish  # noqa: E402
+
+W, D, h = 0.02, 0.001, 0.001
+rF, rp = 5e-5, 2e-5
+tMeasured = 0.02
+
+args = sys.argv[1:]
+tolerance, csv = 0.03, None
+while args and args[0].startswith("--"):
+    if args[0] == "--tolerance":
+        tolerance = float(args[1])
+    elif args[0] == "--csv":
+        csv = args[1]
+    else:
+        sys.exit("checkDenseMat.py: unknown option %s" % args[0])
+    args = args[2:]
+
+
+def fibers(case):
+    number = r"([-+0-9.eE]+)"
+    point = r"\(" + r"\s+".join([number] * 3) + r"\)"
+    found = []
+    for line in open(os.path.join(case, "system/matFibers")):
+        m = re.search(r"points\s*\(\s*" + point + r"\s*" + point, line)
+        if m:
+            a = [float(v) for v in m.groups()[:3]]
+            b = [float(v) for v in m.groups()[3:]]
+            found.append((a, b))
+    return found
+
+
+def hat(u):
+    return max(0.0, 1.0 - abs(u))
+
+
+def laneMeanField(placed):
+    columns = int(round(W / h))
+    depth = [0.0] * (columns + 1)
+    for a, b in placed:
+        length = math.dist(a, b)
+        u = a[1] / h
+        for n in range(columns + 1):
+            dual = 0.5 if n in (0, columns) else 1.0
+            depth[n] += 2.0 * (rF + rp) * length / (h * D) * hat(u - n) / dual
+    lanes = [(0.25 * j + 0.125) * h for j in range(4 * columns)]
+    return sum(math.exp(-sum(depth[n] * hat(y / h - n) for n in range(columns + 1)))
+               for y in lanes) / len(lanes)
+
+
+def travelOf(case):
+    text = open(os.path.join(case, "system/matTime")).read()
+    return float(re.search(r"deltaT\s+([-+0-9.eE]+)", text).group(1)) / h
+
+
+lines = []
+for case in args:
+    placed = fibers(case)
+    S = sum(2.0 * (rF + rp) * math.dist(a, b) for a, b in placed) / (W * D)
+    rows = read_table(os.path.join(case, "postProcessing/dropletFiber/0/dropletFiber.dat"))
+    start = max((r for r in rows if r["Time"] <= tMeasured + 1e-12), key=lambda r: r["Time"])
+    last = rows[-1]
+    sprayed = last["sprayedMass"] - start["sprayedMass"]
+    escaped = last["escapedMass"] - start["escapedMass"]
+    captured = sum(r["capturedStep"] for r in rows if r["Time"] > start["Time"] + 1e-12)
+    expected = math.exp(-S)
+    byOutlet, byCapture = escaped / sprayed, 1.0 - captured / sprayed
+    lane = laneMeanField(placed)
+    travel = travelOf(case)
+    lines.append((S, travel, byOutlet, byCapture, expected, lane))
+    print("S %.4f (%d fibers), %.3g spacing per step: penetration %.5f (outlet) %.5f "
+          "(captured) against exp(-S) %.5f: %+.2f %% %+.2f %%; lanes' mean field %.5f (%+.2f %%)"
+          % (S, len(placed), travel, byOutlet, byCapture, expected,
+             100 * (byOutlet / expected - 1), 100 * (byCapture / expected - 1),
+             lane, 100 * (lane / expected - 1)))
+    check(abs(byOutlet / expected - 1) < tolerance and abs(byCapture / expected - 1) < tolerance,
+          "S %.3f, %.3g spacing per step: within %.3g %% of exp(-S)"
+          % (S, travel, 100 * tolerance))
+    check(byOutlet < lane * (1 + 1e-3),
+          "S %.3f, %.3g spacing per step: at most the lanes' mean field" % (S, travel))
+
+if csv:
+    with open(csv, "w") as out:
+        out.write("S,travel,outlet,captured,expMinusS,laneMeanField\n")
+        for line in lines:
+            out.write(",".join("%.10g" % v for v in line) + "\n")
+finish()

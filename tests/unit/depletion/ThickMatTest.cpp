@@ -1,0 +1,163 @@
+// Depletion in a random mat of fibers thick against the grid spacing (docs/model.md sec. 7,
+// "Thick fibers"; docs/validation.md, dense mats): the case of tests/cases/denseMat in core
+// terms. Fibers of r_F = 50 um catching droplets of r_p = 20 um (strip 2 (r_F + r_p) = 0.14
+// of the 1 mm spacing, against 0.002 in DenseMatTest), at random in a slab 6 spacings thick
+// across a spray 20 spacings wide, 1/8 ... 1 spacing per step.
+//
+// What the model gives there: as the step shrinks the penetration tends to the lanes' mean
+// field, the mean over the parcels' lanes of exp(-S_I(x)), S_I the piecewise-linear
+// interpolant across the flow of the nodes' depths (each fiber's strip spread over its two
+// node columns by the hat weights of its x): computed here from the fibers' positions alone.
+// That limit is above exp(-S) (P15), by ~ exp(S c / 4h) for strips of width c: each fiber,
+// smeared over its columns, shadows itself (a lane crossing its depth f keeps exp(-f), not
+// 1 - f). At larger steps P13's product per step adds depth and hides part of it, so the
+// error against exp(-S) grows as the step shrinks. The target of the issue (within 3 % of
+// exp(-S) at every travel) is the disabled test below: an open gap.
+#include "StraightSpray.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <vector>
+
+using namespace dropletFiber;
+
+namespace
+{
+constexpr std::array<double, 2> depths = {{1.0, 2.302585092994046}};
+constexpr std::array<double, 4> travels = {{1.0, 0.5, 0.25, 0.125}}; // v dt / h
+
+struct ThickRun
+{
+    double model = 0.0, expMinusS = 0.0, lanes = 0.0;
+};
+
+double hat(double u)
+{
+    return std::max(0.0, 1.0 - std::abs(u));
+}
+
+// The mean over the lanes x = (j / 4 + 1 / 8) h of exp(-S_I(x)): S_I(x) = sum_n hat_n(x) S_n,
+// S_n = sum over fibers of (c / h) hat_n(x_f) / (the node's dual-cell width in spacings).
+double lanesMeanField(const std::vector<double>& xs, double strip, double h, int columns)
+{
+    std::vector<double> nodeDepth(static_cast<std::size_t>(columns) + 1, 0.0);
+    for (const double x : xs)
+    {
+        for (int n = 0; n <= columns; ++n)
+        {
+            const double dual = (n == 0 || n == columns) ? 0.5 : 1.0;
+            nodeDepth[static_cast<std::size_t>(n)] += strip / h * hat(x / h - n) / dual;
+        }
+    }
+    const int lanes = 4 * columns;
+    double mean = 0.0;
+    for (int j = 0; j < lanes; ++j)
+    {
+        const double x = 0.25 * j + 0.125; // in spacings
+        double depth = 0.0;
+        for (int n = 0; n <= columns; ++n)
+        {
+            depth += nodeDepth[static_cast<std::size_t>(n)] * hat(x - n);
+        }
+        mean += std::exp(-depth) / lanes;
+    }
+    return mean;
+}
+
+ThickRun thickMat(double S, double travel, unsigned seed)
+{
+    test::StraightSpray spray;
+    spray.columns = 20;
+    spray.rows = 10;
+    spray.dt = travel * spray.h / spray.speed;
+    spray.dropletRadius = 2e-5;
+    spray.fiberRadius = 5e-5;
+    spray.nParticle = 10.0;
+    const double strip = 2.0 * (spray.fiberRadius + spray.dropletRadius);
+    const double width = spray.columns * spray.h;
+    const int count = static_cast<int>(std::lround(S * width / strip));
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    std::vector<double> xs;
+    for (int n = 0; n < count; ++n)
+    {
+        xs.push_back(width * unit(rng));
+        spray.fibers.emplace_back(xs.back(), (2.0 + 6.0 * unit(rng)) * spray.h);
+    }
+    spray.run(static_cast<int>(std::lround(spray.rows / travel)) + 4, 2);
+    double captured = 0.0;
+    for (const double m : spray.fiberCaptured)
+    {
+        captured += m;
+    }
+    ThickRun result;
+    result.model = 1.0 - captured / spray.injectedMeasured;
+    result.expMinusS = std::exp(-count * strip / width); // P15: n_A 2 (r_F + r_p) t = N c / W
+    result.lanes = lanesMeanField(xs, strip, spray.h, spray.columns);
+    return result;
+}
+
+using Sweep = std::array<std::array<ThickRun, travels.size()>, depths.size()>;
+const Sweep& sweep()
+{
+    static const Sweep runs = []
+    {
+        Sweep all{};
+        for (std::size_t i = 0; i < depths.size(); ++i)
+        {
+            for (std::size_t j = 0; j < travels.size(); ++j)
+            {
+                const ThickRun& run = all[i][j] = thickMat(depths[i], travels[j], 7);
+                std::printf("S %.3f, %.3f spacing per step: %.5f, exp(-S) %.5f (%+.2f %%), lanes' mean "
+                            "field %.5f (%+.2f %%)\n",
+                            depths[i], travels[j], run.model, run.expMinusS,
+                            100.0 * (run.model / run.expMinusS - 1.0), run.lanes,
+                            100.0 * (run.model / run.lanes - 1.0));
+            }
+        }
+        return all;
+    }();
+    return runs;
+}
+} // namespace
+
+TEST(ThickMat, SmallStepsTendToTheLanesMeanField)
+{
+    for (std::size_t i = 0; i < depths.size(); ++i)
+    {
+        // Below it at every step (P13's product per step only adds depth), within 1.2 % of it
+        // at an eighth of a spacing per step, and closer there than at a spacing per step
+        for (std::size_t j = 0; j < travels.size(); ++j)
+        {
+            EXPECT_LT(sweep()[i][j].model, sweep()[i][j].lanes * (1.0 + 1e-3))
+                << "S " << depths[i] << ", travel " << travels[j];
+        }
+        const ThickRun& finest = sweep()[i].back();
+        const ThickRun& coarsest = sweep()[i].front();
+        EXPECT_LT(std::abs(finest.model / finest.lanes - 1.0), 0.012) << "S " << depths[i];
+        EXPECT_LT(std::abs(finest.model / finest.lanes - 1.0),
+                  std::abs(coarsest.model / coarsest.lanes - 1.0))
+            << "S " << depths[i];
+    }
+}
+
+// The target of docs/model.md sec. 7's open gap (thick fibers): within 3 % of exp(-S) at every
+// travel per step, as DenseMat for thin ones. Fails (+6 % at S = ln 10 for small steps, P20);
+// run with --gtest_also_run_disabled_tests.
+TEST(ThickMat, DISABLED_PenetrationWithinThreePercentOfExpMinusS)
+{
+    for (std::size_t i = 0; i < depths.size(); ++i)
+    {
+        for (std::size_t j = 0; j < travels.size(); ++j)
+        {
+            const ThickRun& run = sweep()[i][j];
+            EXPECT_LT(std::abs(run.model / run.expMinusS - 1.0), 0.03)
+                << "S " << depths[i] << ", travel " << travels[j];
+        }
+    }
+}
