@@ -119,7 +119,7 @@ def open_series(series):
     grid.vti.series and fibers.vtp.series), ParaView finds no reader for it: then its
     entries are opened as a file series (their times from their TimeValue)."""
     entries = json.load(open(series))["files"]
-    named = os.path.splitext(os.path.splitext(series)[0])[1]  # ".vti" of grid.vti.series
+    named = os.path.splitext(os.path.splitext(series)[0])[1]  # ".vti" of grid.vti.series, ".pvti" ...
     if all(entry["name"].endswith(named) for entry in entries):
         return OpenDataFile(series)
     return OpenDataFile([os.path.join(os.path.dirname(series), entry["name"]) for entry in entries])
@@ -194,10 +194,13 @@ for cloud in clouds():
     colour(display, "POINTS", "d", "Viridis (matplotlib)", "%s d [m]" % cloud)
 
 for folder in sorted(glob.glob(os.path.join(case, "postProcessing", "*", "*"))):
-    grid_series = os.path.join(folder, "grid.vti.series")
-    fiber_series = os.path.join(folder, "fibers.vtp.series")
+    # a serial run's series, or a parallel run's under either name
+    grid_series = ([f for f in (os.path.join(folder, "grid.vti.series"), os.path.join(folder, "grid.pvti.series"))
+                    if os.path.isfile(f)] + [""])[0]
+    fiber_series = ([f for f in (os.path.join(folder, "fibers.vtp.series"), os.path.join(folder, "fibers.pvtp.series"))
+                     if os.path.isfile(f)] + [""])[0]
     name = os.path.relpath(folder, os.path.join(case, "postProcessing"))
-    if os.path.isfile(grid_series):
+    if grid_series:
         grid = open_series(grid_series)
         RenameSource("grid " + name, grid)
         display = Show(grid, view)
@@ -212,7 +215,7 @@ for folder in sorted(glob.glob(os.path.join(case, "postProcessing", "*", "*"))):
             display.ScalarOpacityUnitDistance = max(box[2 * k + 1] - box[2 * k] for k in range(3)) / 8
         lut = colour(display, "POINTS", "rho", "Reds", "grid rho [kg/m3]", invert=True)
         transparent_where_empty(display, "rho", lut)
-    if os.path.isfile(fiber_series):
+    if fiber_series:
         fibers = open_series(fiber_series)
         RenameSource("fibers " + name, fibers)
         display = Show(fibers, view)
