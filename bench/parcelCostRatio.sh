@@ -5,10 +5,10 @@
 # channelSpray tutorial (serial, full run), from one profile (perf record with
 # call graphs, inclusive samples: a function's own and everything it calls,
 # OpenFOAM's and the C library's code included):
-#   per-parcel work: dropletFiberCollision::depositParcels (gathering the
-#     parcels, the deposit, the step into the window) + gridBlocks::removeCaptured
-#     (the parcels' depths and losses, P14) + ::depleteParcels (written back to
-#     the clouds), the parts that scale with the parcels;
+#   per-parcel work: couplingGrid::deposit (the deposit, the step into the
+#     window) + gridBlocks::removeCaptured (the parcels' depths and losses, P14)
+#     + sprayParcels::writeBack and fiberCapture::closeRemoval (written back to
+#     the clouds, the step's sums), the parts that scale with the parcels;
 #   the whole function object: dropletFiberCollision::execute + ::write (the
 #     fibers, collision, air sampling and output included);
 #   OpenFOAM's tracking: KinematicCloud::evolveCloud (injection, tracking,
@@ -85,8 +85,11 @@ def inclusive(pattern):
     return max(hits) if hits else 0.0
 prefix = r"^Foam::functionObjects::dropletFiberCollision::"
 whole = inclusive(prefix + r"execute$") + inclusive(prefix + r"write$")
-parcels = (inclusive(prefix + r"depositParcels$") + inclusive(prefix + r"depleteParcels$")
-           + inclusive(r"^Foam::dropletFiber::gridBlocks::removeCaptured"))
+stages = r"^Foam::dropletFiber::"
+parcels = (inclusive(stages + r"couplingGrid::deposit$")
+           + inclusive(stages + r"sprayParcels::writeBack$")
+           + inclusive(stages + r"fiberCapture::closeRemoval$")
+           + inclusive(stages + r"gridBlocks::removeCaptured"))
 cloud = inclusive(r"KinematicCloud<.*>::evolveCloud<")
 if not cloud:
     # OpenFOAM's profiling of the last time written: total times [s]
@@ -103,11 +106,11 @@ if not cloud:
     if not (solve and execute and inner):
         sys.exit("parcelCostRatio: no cloud::solve or execute in " + files[-1])
     print(f"  OpenFOAM's profiling: cloud::solve {solve:.3f} s, the function object's execute {execute:.3f} s")
-    print(f"  per-parcel work (depositParcels + depleteParcels): {parcels:.1f} % of the samples, "
+    print(f"  per-parcel work (deposit + removeCaptured + writeBack): {parcels:.1f} % of the samples, "
           f"{parcels / inner:.2f} of execute: ratio {parcels / inner * execute / solve:.2f}")
     print(f"  execute against cloud::solve: ratio {execute / solve:.2f}")
     sys.exit(0)
 print(f"  OpenFOAM's tracking (evolveCloud): {cloud:.1f} % of the samples")
-print(f"  per-parcel work (depositParcels + removeCaptured + depleteParcels): {parcels:.1f} %: ratio {parcels / cloud:.2f}")
+print(f"  per-parcel work (deposit + removeCaptured + writeBack): {parcels:.1f} %: ratio {parcels / cloud:.2f}")
 print(f"  whole function object (execute + write): {whole:.1f} %: ratio {whole / cloud:.2f}")
 PY

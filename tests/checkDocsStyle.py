@@ -2,8 +2,10 @@
 """The docs stay references: README.md, docs/*.md and tutorials/*/README.md have no dated
 heading (a Markdown heading holding a date such as 2026-11-03, 3 Dec 2026, December 2026,
 or the word "session"), no commit hash (7 to 40 hex digits with at least one letter and
-one digit, standing alone as a word or in backticks), and docs/performance.md stays at
-most 16 kB. History belongs in the commit messages.
+one digit, standing alone as a word or in backticks), no git branch name (a quoted name
+after or before the word "branch", or "merge branch"), and docs/performance.md stays at
+most 16 kB. History belongs in the commit messages. Every page of docs/ is checked, so a
+new page is covered as soon as it exists.
 
 Usage: checkDocsStyle.py <project dir>
        checkDocsStyle.py --self-test   (the check catches each kind of violation)
@@ -31,6 +33,13 @@ DATE = re.compile(
 # nor a number in scientific notation (12345e67).
 HASH = re.compile(r"(?<![\w#\-./+])([0-9a-f]{7,40})(?![\w\-/+]|\.\w)", re.I)
 SCIENTIFIC = re.compile(r"^\d+e\d+$", re.I)
+# A git branch by name: "branch `docs`", "branch: 'nolive'", "the `docs` branch",
+# "Merge branch" (not "both branches", "branch-free": no quoted name beside it)
+BRANCH = re.compile(
+    r"\bbranch(?:es)?\s*:?\s+[`'\"][\w./-]+[`'\"]"
+    r"|[`'\"][\w./-]+[`'\"]\s+branch\b"
+    r"|\bmerge\s+branch\b",
+    re.I)
 ATX_HEADING = re.compile(r"^ {0,3}#{1,6}(?:\s|$)")
 SETEXT_UNDERLINE = re.compile(r"^ {0,3}(?:=+|-+)\s*$")
 FENCE = re.compile(r"^ {0,3}(```|~~~)")
@@ -84,6 +93,9 @@ def check_file(path, project):
         for token in hashes(line):
             failures.append(f"{where}:{number}: commit hash '{token}' (history belongs in "
                             f"commit messages)")
+        for match in BRANCH.finditer(line):
+            failures.append(f"{where}:{number}: branch name ('{match.group(0)}'): history "
+                            f"belongs in commit messages")
     if os.path.relpath(path, project) == os.path.join("docs", "performance.md"):
         size = os.path.getsize(path)
         if size > PERFORMANCE_LIMIT:
@@ -104,7 +116,8 @@ def self_test():
     clean = ("# Performance reference\n\n## Deposit\n\n| figure | spread |\n|---|---|\n"
              "| 1.11 M parcels/s | 1e-17, 12345e6, 2.5e10 |\n\nColour #a1b2c3 and #a1b2c3d4, "
              "a path src/core/ab12cd3, 0x1f2e3d4c, deadbeef, 1234567, v1912, "
-             "uuid 123e4567-e89b-12d3-a456-426614174000.\n\nSetext heading\n---\n\n"
+             "uuid 123e4567-e89b-12d3-a456-426614174000; exact in both branches, branch-free "
+             "code.\n\nSetext heading\n---\n\n"
              "```\n# 2026-11-03 a shell comment in code\n```\n")
     cases = {
         "clean": (clean, None),
@@ -116,6 +129,9 @@ def self_test():
         "bare hash": (clean + "\nMeasured at fe903b6 with load 2.\n", "commit hash"),
         "hash in backticks": (clean + "\nbefore `bd02c6f1a2`, after.\n", "commit hash"),
         "full hash": (clean + "\n(" + "5ae65ca" * 5 + "12345)\n", "commit hash"),
+        "branch name": (clean + "\nMeasured on branch `balanced-blocks`.\n", "branch name"),
+        "named branch": (clean + "\nThe 'nolive' branch keeps it.\n", "branch name"),
+        "merge branch": (clean + "\nAfter Merge branch of the work.\n", "branch name"),
     }
     big = clean + ("Figures only, no history here; " * 3 + "\n") * 200
     big = big[:17 * 1024 - 1] + "\n"  # a 17 kB performance.md
@@ -147,7 +163,7 @@ def main():
     project = sys.argv[1] if len(sys.argv) > 1 else "."
     files, failures = check(project)
     print(f"{files} files checked: headings without dates or sessions, no commit hashes, "
-          f"docs/performance.md at most {PERFORMANCE_LIMIT} bytes")
+          f"no branch names, docs/performance.md at most {PERFORMANCE_LIMIT} bytes")
     for failure in failures:
         print("FAILED: " + failure)
     return 1 if failures else 0

@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 #------------------------------------------------------------------------------
 # checkRestartToTheBit.sh - a restart continues to the bit when the time
-# folders' names give back OpenFOAM's time (README, Restart; docs/model.md
-# sec. 4, what is exact).
+# folders' names give back OpenFOAM's time (docs/userGuide.md, what restarts
+# to the bit; docs/model.md sec. 4, what is exact). A solver with its own cloud
+# (the case's icoUncoupledKinematicParcelFoam): the icoUncoupledKinematicCloud
+# function object does not restart its cloud to the bit (the user guide says why).
 #
 # Usage: checkRestartToTheBit.sh CASE_DIR WORK_DIR
 #   The case with timePrecision 17, writePrecision 17 (the clouds' injected mass

@@ -183,7 +183,7 @@ def columns(run, work):
     out = os.path.join(case, "postProcessing", "dropletFiber", "0")
     path = os.path.join(out, "dropletFiber.dat")
     rows = table(path)
-    # The names the function object writes (README, Outputs); evaporatedMass replaces
+    # The names the function object writes (docs/userGuide.md, Outputs); evaporatedMass replaces
     # the table's own where it has one
     added = {"captured_H2O": 1.25e-10, "captured_RESIN": 2.5e-11, "evaporatedMass": 3.75e-9}
     names = [n for n in reversed(list(rows[0])) if n not in added] + list(added)

@@ -152,7 +152,7 @@ Options:
 
 Deposit options: the deposit entries of the function object's grid dictionary, with the
 same names (--rmax-cap also as --rMaxCap), allowed values and defaults, so that the
-deposit of a run can be repeated here (README, Dictionary entries):
+deposit of a run can be repeated here (docs/reference.md, grid):
   --beta B              kernel shape: inflection point between r_min (0) and r_max (1),
                         eq. 17/18; 0 < B <= 1 (default 0.025, the paper's)
   --rmax-cap R, --rMaxCap R

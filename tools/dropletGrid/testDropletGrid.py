@@ -401,19 +401,24 @@ def vectorised():
             check(code == 0 and masses == portable, what + "--vectorised %s is false" % word)
 
 
-# The deposit flags and their dictionary entries (grid sub-dictionary, README "Dictionary entries").
+# The deposit flags and their dictionary entries (grid sub-dictionary, docs/reference.md).
 DEPOSIT_ENTRIES = {"--beta": "beta", "--rmax-cap": "rMaxCap", "--dimension": "dimension",
                    "--cloudInCellBelow": "cloudInCellBelow", "--negligibleWeight": "negligibleWeight",
                    "--depositMethod": "depositMethod", "--vectorised": "vectorised"}
 
 
-def readme_defaults():
-    """{entry: default} of the grid.* rows of the README's dictionary table."""
-    readme = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "README.md")
-    defaults = {}
-    for line in open(readme, encoding="utf-8"):
-        match = re.match(r"\|\s*`grid\.(\w+)`.*\|\s*([^|]*?)\s*\|\s*$", line)
-        if match:
+def reference_defaults():
+    """{entry: default} of the rows of the grid table of docs/reference.md, the one
+    reference of the dictionary (columns Entry | Allowed | Default | What it does)."""
+    reference = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "docs",
+                             "reference.md")
+    defaults, in_grid = {}, False
+    for line in open(reference, encoding="utf-8"):
+        if line.startswith("#"):
+            in_grid = re.match(r"^##\s+`grid`\s*$", line) is not None
+            continue
+        match = re.match(r"^\|\s*`(\w+)`[^|]*\|[^|]*\|\s*([^|]*?)\s*\|", line)
+        if in_grid and match:
             defaults[match.group(1)] = match.group(2).strip("`")
     return defaults
 
@@ -426,16 +431,16 @@ def same_value(a, b):
 
 
 def same_as_dictionary():
-    # Defaults: the README's table of the function object's entries, against what the tool
+    # Defaults: docs/reference.md's table of the grid entries, against what the tool
     # says in --help and what it prints as the settings in force when no flag is given.
-    defaults = readme_defaults()
+    defaults = reference_defaults()
     code, help_text, err = run(["--help"])
     parcels = write(os.path.join(work, "one.csv"), HEADER + "0.02,0.03,0.0005,0,-5,0,5e-5,100,1000\n")
     code, out, err = run(["--parcels", parcels] + GRID)
     settings = " ".join(re.search(r"deposit settings:(.*?)\n\s*mass in", out, re.S).group(1).split())
     for flag, entry in DEPOSIT_ENTRIES.items():
         expected = defaults.get(entry)
-        check(expected is not None, "README documents grid.%s" % entry)
+        check(expected is not None, "docs/reference.md documents grid.%s" % entry)
         block = re.search(r"^  " + re.escape(flag) + r"\b(.*?)(?=^  --|^\S|\Z)", help_text, re.M | re.S)
         stated = re.search(r"\(default ([^,:)]+)", " ".join(block.group(1).split())) if block else None
         check(stated is not None and same_value(stated.group(1), expected),

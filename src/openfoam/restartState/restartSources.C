@@ -138,7 +138,7 @@ void warnNamedDiffer
             << how.str().c_str() << " (the restart state " << path
             << " against this run's dictionary): " << used.c_str() << "."
             << nl << "    Set 'restart fresh;' to start from the dictionary"
-            << " alone (docs: README, Restart)." << endl;
+            << " alone (docs/userGuide.md, Restart)." << endl;
     }
 }
 

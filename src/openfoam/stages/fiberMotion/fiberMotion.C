@@ -2,14 +2,14 @@
   dropletFiber: stochastic droplet-fiber coupling for OpenFOAM
 -------------------------------------------------------------------------------
 Description
-    Step 5 of execute(): the air at the fiber points and the fiber step. In
+    The air at the fiber points and the fiber step. In
     parallel each processor advances the fibers it holds (fiberOwnership),
     with the air at their points (airSampler asks the processors holding
     the points outside its cells); the outcome is reduced as scalars.
 
 \*---------------------------------------------------------------------------*/
 
-#include "dropletFiberCollision.H"
+#include "fiberMotion.H"
 #include "Pstream.H"
 #include "PstreamReduceOps.H"
 #include "OStringStream.H"
@@ -21,8 +21,11 @@ Description
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 ::dropletFiber::AirSample
-Foam::functionObjects::dropletFiberCollision::sampleAir
+Foam::dropletFiber::fiberMotion::sampleAir
 (
+    const heldFibers& held,
+    const processorBoxes& boxes,
+    parallelStatistics& statistics,
     ::dropletFiber::TurbulenceSample* turbulence
 ) const
 {
@@ -33,20 +36,21 @@ Foam::functionObjects::dropletFiberCollision::sampleAir
     {
         return {};
     }
-    const Eigen::Matrix3Xd points = ::dropletFiber::airSamplePoints(held_.fibers);
+    const Eigen::Matrix3Xd points = ::dropletFiber::airSamplePoints(held.fibers);
     if (returnReduce(label(points.cols()), sumOp<label>()) == 0)
     {
         return {};
     }
     const ::dropletFiber::AirSample air =
-        air_->sample(points, *boxes_, parallelStatistics_, turbulence);
-    stopIfAirNotFinite(air);
+        air_->sample(points, boxes, statistics, turbulence);
+    stopIfAirNotFinite(held, air);
     return air;
 }
 
 
-Foam::string Foam::functionObjects::dropletFiberCollision::nonFiniteAirHere
+Foam::string Foam::dropletFiber::fiberMotion::nonFiniteAirHere
 (
+    const heldFibers& held,
     const ::dropletFiber::AirSample& air
 ) const
 {
@@ -56,7 +60,7 @@ Foam::string Foam::functionObjects::dropletFiberCollision::nonFiniteAirHere
     {
         return string();
     }
-    const std::vector<::dropletFiber::Fiber>& fibers = held_.fibers;
+    const std::vector<::dropletFiber::Fiber>& fibers = held.fibers;
     const ::dropletFiber::AirSampleLayout layout =
         ::dropletFiber::airSampleLayout(fibers);
     std::size_t f = 0;
@@ -74,12 +78,12 @@ Foam::string Foam::functionObjects::dropletFiberCollision::nonFiniteAirHere
     os  << "the air " << quantity.c_str()
         << " is not finite at time " << time_.timeName() << " at point " << i
         << " (" << x.x() << ' ' << x.y() << ' ' << x.z() << ") of fiber "
-        << held_.id[f] << " (from '" << held_.origin[f] << "').";
+        << held.id[f] << " (from '" << held.origin[f] << "').";
     return os.str();
 }
 
 
-Foam::string Foam::functionObjects::dropletFiberCollision::firstFailureOfAll
+Foam::string Foam::dropletFiber::fiberMotion::firstFailureOfAll
 (
     const string& failure
 )
@@ -103,14 +107,15 @@ Foam::string Foam::functionObjects::dropletFiberCollision::firstFailureOfAll
 }
 
 
-void Foam::functionObjects::dropletFiberCollision::stopIfAirNotFinite
+void Foam::dropletFiber::fiberMotion::stopIfAirNotFinite
 (
+    const heldFibers& held,
     const ::dropletFiber::AirSample& air
 ) const
 {
     // Each processor checks the air of its own fibers; all stop, with the
     // message of the first processor that found one
-    const string failure = firstFailureOfAll(nonFiniteAirHere(air));
+    const string failure = firstFailureOfAll(nonFiniteAirHere(held, air));
     if (failure.empty() && air_->nonFiniteVelocityCells() == 0)
     {
         return;
@@ -132,8 +137,9 @@ void Foam::functionObjects::dropletFiberCollision::stopIfAirNotFinite
 }
 
 
-std::string Foam::functionObjects::dropletFiberCollision::stepFibers
+std::string Foam::dropletFiber::fiberMotion::stepFibers
 (
+    heldFibers& held,
     const scalar dt,
     const ::dropletFiber::AirSample& air,
     const ::dropletFiber::CaptureSources& capture,
@@ -141,11 +147,11 @@ std::string Foam::functionObjects::dropletFiberCollision::stepFibers
 )
 {
     // The solver's messages name the fibers by their ids
-    const std::vector<std::size_t> ids(held_.id.begin(), held_.id.end());
+    const std::vector<std::size_t> ids(held.id.begin(), held.id.end());
     std::string failure;
     try
     {
-        report = solver_->step(held_.fibers, dt, air, &capture, &ids);
+        report = solver_->step(held.fibers, dt, air, &capture, &ids);
     }
     catch (const std::exception& e)
     {
@@ -159,7 +165,7 @@ std::string Foam::functionObjects::dropletFiberCollision::stepFibers
 }
 
 
-void Foam::functionObjects::dropletFiberCollision::stopIfStepFailed
+void Foam::dropletFiber::fiberMotion::stopIfStepFailed
 (
     const std::string& failure
 ) const
@@ -177,44 +183,46 @@ void Foam::functionObjects::dropletFiberCollision::stopIfStepFailed
 
 
 ::dropletFiber::StepReport
-Foam::functionObjects::dropletFiberCollision::advanceFibers
+Foam::dropletFiber::fiberMotion::advanceFibers
 (
+    heldFibers& held,
+    const processorBoxes& boxes,
     const scalar dt,
-    ::dropletFiber::CaptureSources& capture
+    ::dropletFiber::CaptureSources& capture,
+    parallelStatistics& statistics
 )
 {
     // With turbulent air the fluctuation u' of every point is advanced
     // first, from the k and epsilon sampled with the air
-    const bool turbulent =
-        turbulence_.settings.model != ::dropletFiber::TurbulenceModelType::none;
+    const bool turbulent = this->turbulent();
     ::dropletFiber::TurbulenceSample turbulence;
     const ::dropletFiber::AirSample air =
-        sampleAir(turbulent ? &turbulence : nullptr);
+        sampleAir(held, boxes, statistics, turbulent ? &turbulence : nullptr);
     if (turbulent)
     {
-        advanceTurbulence(dt, turbulence);
+        advanceTurbulence(held, dt, turbulence);
     }
     else
     {
         // Switched to none during the run or restarted with none from a
         // turbulent state: the mean air only, as without turbulence
-        ::dropletFiber::clearTurbulentVelocities(held_.fibers);
+        ::dropletFiber::clearTurbulentVelocities(held.fibers);
     }
     // The step's own computing timed (the reductions after it are not)
-    using stage = dropletFiber::parallelStatistics::stage;
+    using stage = parallelStatistics::stage;
     ::dropletFiber::StepReport report;
     std::string failure;
-    parallelStatistics_.timed
+    statistics.timed
     (
         stage::fibers,
-        [&]() { failure = stepFibers(dt, air, capture, report); }
+        [&]() { failure = stepFibers(held, dt, air, capture, report); }
     );
     std::size_t points = 0;
-    for (const ::dropletFiber::Fiber& fiber : held_.fibers)
+    for (const ::dropletFiber::Fiber& fiber : held.fibers)
     {
         points += std::size_t(fiber.pointCount());
     }
-    parallelStatistics_.countFiberPoints(points);
+    statistics.countFiberPoints(points);
 
     // A fiber that cannot be advanced even at the smallest sub-step stops
     // the run with the reason (the results written so far stay)
@@ -226,5 +234,71 @@ Foam::functionObjects::dropletFiberCollision::advanceFibers
     report.subSteps = int(returnReduce(label(report.subSteps), sumOp<label>()));
     return report;
 }
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::dropletFiber::fiberMotion::fiberMotion
+(
+    const functionObject& owner,
+    const fvMesh& mesh
+)
+:
+    couplingStage(owner, mesh),
+    warnedZeroK_(false)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::dropletFiber::fiberMotion::read(const dictionary& dict)
+{
+    air_.reset(new airSampler(mesh_, dict.subOrEmptyDict("air")));
+    solverSettings_ =
+        readFiberSolverSettings(dict.subOrEmptyDict("fibers"), time_);
+    solver_.reset(new ::dropletFiber::FiberSolver(solverSettings_));
+    turbulence_ = readFiberTurbulence(dict.subOrEmptyDict("fibers"), mesh_);
+}
+
+
+::dropletFiber::StepReport Foam::dropletFiber::fiberMotion::advance
+(
+    heldFibers& held,
+    const processorBoxes& boxes,
+    const scalar dt,
+    ::dropletFiber::CaptureSources& capture,
+    parallelStatistics& statistics
+)
+{
+    return coreCall
+    (
+        "advancing the fibers",
+        [&]() { return advanceFibers(held, boxes, dt, capture, statistics); }
+    );
+}
+
+
+void Foam::dropletFiber::fiberMotion::reportAir(Ostream& os) const
+{
+    air_->report(os);
+}
+
+
+void Foam::dropletFiber::fiberMotion::report
+(
+    Ostream& os,
+    const label injectors,
+    const label fibers
+) const
+{
+    const auto& s = solverSettings_;
+    os  << "    fibers: gravity (" << s.gravity.x() << ' ' << s.gravity.y() << ' '
+        << s.gravity.z() << "), drag "
+        << ::dropletFiber::dragModelName(s.drag.model).c_str()
+        << ", theta " << s.theta << ", injectors " << injectors
+        << ", fibers now " << fibers << nl;
+    reportTurbulence(os);
+}
+
 
 // ************************************************************************* //

@@ -2,8 +2,8 @@
   dropletFiber: stochastic droplet-fiber coupling for OpenFOAM
 -------------------------------------------------------------------------------
 Description
-    Discrete hits (entry collision.mode, docs/model.md sec. 3, P30-P32) and
-    the binder distribution table. Every segment counts the droplets it
+    Discrete hits (entry collision.mode, docs/model.md sec. 3, P30-P32).
+    Every segment counts the droplets it
     catches: in mode expected the expected count of eq. 9 (granted mass over
     the mean mass of a caught droplet, m_hit, from the grid's moments); in
     mode discrete a Poisson number of that mean per sample, keyed by (seed,
@@ -17,21 +17,22 @@ Description
 
 \*---------------------------------------------------------------------------*/
 
-#include "dropletFiberCollision.H"
-#include "Time.H"
+#include "fiberCapture.H"
 #include "PstreamReduceOps.H"
 #include "collision/DiscreteHits.hpp"
-#include "fiber/BinderDistribution.hpp"
-#include "collisionSettings.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::functionObjects::dropletFiberCollision::countHits
+void Foam::dropletFiber::fiberCapture::countHits
 (
+    const heldFibers& held,
+    couplingGrid& grid,
+    const std::vector<::dropletFiber::Parcel>& parcels,
     const std::vector<::dropletFiber::DropletFieldValue>& fields,
     const std::vector<double>& granted,
     const std::vector<int>& samplesPerSegment,
-    ::dropletFiber::CaptureSources& capture
+    ::dropletFiber::CaptureSources& capture,
+    parallelStatistics& statistics
 )
 {
     const bool discrete =
@@ -45,8 +46,8 @@ void Foam::functionObjects::dropletFiberCollision::countHits
     std::size_t segment = 0;
     for (std::size_t f = 0; f < capture.size(); ++f)
     {
-        key.fiberId = std::uint64_t(held_.id[f]);
-        const scalar fiberRadius = held_.fibers[f].material().radius;
+        key.fiberId = std::uint64_t(held.id[f]);
+        const scalar fiberRadius = held.fibers[f].material().radius;
         for (std::size_t j = 0; j < capture[f].size(); ++j)
         {
             ::dropletFiber::SegmentSource& source = capture[f][j];
@@ -83,50 +84,41 @@ void Foam::functionObjects::dropletFiberCollision::countHits
         {
             ratios[s] = granted[s] > 0 ? hitMass[s]/granted[s] : 0;
         }
-        stepCaptured_ =
-            blocks_->realiseCapture
+        capturedFraction_ =
+            grid.realiseCapture
             (
-                captureLimit_, stepParcels_, ratios, cut, fellShort,
-                parallelStatistics_
+                captureLimit_, parcels, ratios, cut, fellShort, statistics
             );
     }
     if (discrete)
     {
         giveHits(fields, hitMass, cut, samplesPerSegment, capture);
     }
-    if (fellShort)
+    // Every processor's cut (empty on those without samples), summed
+    if (fellShort && !loggedHitsCut_)
     {
-        logHitsCutOnce(cut);
+        scalar total = 0;
+        for (const double c : cut)
+        {
+            total += c;
+        }
+        logHitsCutOnce(returnReduce(total, sumOp<scalar>()));
     }
 }
 
 
-void Foam::functionObjects::dropletFiberCollision::logHitsCutOnce
-(
-    const std::vector<double>& cut
-)
+void Foam::dropletFiber::fiberCapture::logHitsCutOnce(const scalar cut)
 {
-    // Every processor's cut (empty on those without samples) is formed
-    if (loggedHitsCut_)
-    {
-        return;
-    }
     loggedHitsCut_ = true;
-    scalar total = 0;
-    for (const double c : cut)
-    {
-        total += c;
-    }
-    reduce(total, sumOp<scalar>());
     Info<< type() << " " << name() << ": at time " << time_.timeName()
         << " discrete hits asked more of some parcels than they held: they"
         << " gave all they had and the hits at their nodes were cut by "
-        << total << " kg, so that captured = removed (docs/model.md sec. 7,"
+        << cut << " kg, so that captured = removed (docs/model.md sec. 7,"
         << " P33; logged once)" << endl;
 }
 
 
-void Foam::functionObjects::dropletFiberCollision::giveHits
+void Foam::dropletFiber::fiberCapture::giveHits
 (
     const std::vector<::dropletFiber::DropletFieldValue>& fields,
     const std::vector<double>& hitMass,
@@ -155,69 +147,5 @@ void Foam::functionObjects::dropletFiberCollision::giveHits
     }
 }
 
-
-void Foam::functionObjects::dropletFiberCollision::writeBinderDistribution()
-{
-    ::dropletFiber::BinderSums sums;
-    for (const ::dropletFiber::Fiber& fiber : held_.fibers)
-    {
-        sums.add(fiber);
-    }
-    List<scalar> values(label(sums.values.size()), Zero);
-    forAll(values, i)
-    {
-        values[i] = sums.values[std::size_t(i)];
-    }
-    Pstream::listCombineGather(values, plusEqOp<scalar>());
-    if (!writeToFile() || !Pstream::master())
-    {
-        return;
-    }
-    forAll(values, i)
-    {
-        sums.values[std::size_t(i)] = values[i];
-    }
-    const ::dropletFiber::BinderFigures figures =
-        ::dropletFiber::binderFigures(sums);
-    if (!binderFile_.valid())
-    {
-        binderFile_ = createFile("binderDistribution");
-        OFstream& os = binderFile_();
-        writeHeader
-        (
-            os,
-            "Binder along all fibers, per segment sigma = captured mass /"
-            " length (docs/model.md sec. 3, discrete hits); collision mode "
-          + dropletFiber::collisionModeName(collision_.mode)
-          + "; expected*: the expected mode's mass on the same fibers"
-        );
-        writeCommented(os, "Time");
-        for
-        (
-            const char* column :
-            {
-                "fiberLength", "segments", "bareFraction", "meanSigma",
-                "sigmaCoV", "hitsPerLength", "expectedBareFraction",
-                "expectedMeanSigma", "expectedSigmaCoV"
-            }
-        )
-        {
-            writeTabbed(os, column);
-        }
-        os  << endl;
-    }
-    OFstream& os = binderFile_();
-    writeCurrentTime(os);
-    os  << tab << figures.length
-        << tab << label(sums.values[5])
-        << tab << figures.bareFraction
-        << tab << figures.meanSigma
-        << tab << figures.sigmaVariation
-        << tab << figures.hitsPerLength
-        << tab << figures.expectedBareFraction
-        << tab << figures.expectedMeanSigma
-        << tab << figures.expectedSigmaVariation
-        << endl;
-}
 
 // ************************************************************************* //

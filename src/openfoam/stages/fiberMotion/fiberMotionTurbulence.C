@@ -7,11 +7,11 @@ Description
     by (seed, fiber id, point, time index) so that the realisation does not
     depend on the decomposition or on restarts (the time index continues
     over a restart and u' is part of each fiber's restart state); the log
-    line saying whether it is on and why; the dispersion table.
+    line saying whether it is on and why.
 
 \*---------------------------------------------------------------------------*/
 
-#include "dropletFiberCollision.H"
+#include "fiberMotion.H"
 #include "PstreamReduceOps.H"
 
 #include <cmath>
@@ -20,8 +20,9 @@ Description
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::functionObjects::dropletFiberCollision::advanceTurbulence
+void Foam::dropletFiber::fiberMotion::advanceTurbulence
 (
+    heldFibers& held,
     const scalar dt,
     const ::dropletFiber::TurbulenceSample& turbulence
 )
@@ -51,10 +52,10 @@ void Foam::functionObjects::dropletFiberCollision::advanceTurbulence
     {
         return;   // no air sampled here (no movable fiber, or no drag)
     }
-    const std::vector<std::uint64_t> ids(held_.id.begin(), held_.id.end());
+    const std::vector<std::uint64_t> ids(held.id.begin(), held.id.end());
     ::dropletFiber::advanceTurbulentVelocities
     (
-        held_.fibers,
+        held.fibers,
         ids,
         turbulence,
         turbulence_.settings,
@@ -64,21 +65,23 @@ void Foam::functionObjects::dropletFiberCollision::advanceTurbulence
 }
 
 
-void Foam::functionObjects::dropletFiberCollision::reportTurbulence() const
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::dropletFiber::fiberMotion::reportTurbulence(Ostream& os) const
 {
     const auto& s = turbulence_.settings;
-    Info<< "    fibers.turbulence: "
+    os  << "    fibers.turbulence: "
         << ::dropletFiber::turbulenceModelName(s.model).c_str() << " ("
         << turbulence_.reason.c_str() << ")";
     if (s.model != ::dropletFiber::TurbulenceModelType::none)
     {
-        Info<< ": u' with variance 2k/3, T_L = " << s.timeScaleCoeff
+        os  << ": u' with variance 2k/3, T_L = " << s.timeScaleCoeff
             << " k/epsilon, L = " << s.lengthScaleCoeff
             << " k^1.5/epsilon along the fibers, seed " << label(s.seed);
     }
     else
     {
-        Info<< ": the fibers see the mean air only";
+        os  << ": the fibers see the mean air only";
     }
     if
     (
@@ -86,85 +89,10 @@ void Foam::functionObjects::dropletFiberCollision::reportTurbulence() const
      && solverSettings_.drag.model == ::dropletFiber::DragModelType::none
     )
     {
-        Info<< " (no effect: fibers.drag is none)";
+        os  << " (no effect: fibers.drag is none)";
     }
-    Info<< nl;
+    os  << nl;
 }
 
-
-void Foam::functionObjects::dropletFiberCollision::writeFiberDispersion()
-{
-    if (turbulence_.settings.model == ::dropletFiber::TurbulenceModelType::none)
-    {
-        return;
-    }
-    // Sums over the movable fibers of all processors: count, centres and
-    // their squares per direction; points and u'^2 per component
-    List<scalar> sums(11, Zero);
-    for (const ::dropletFiber::Fiber& fiber : held_.fibers)
-    {
-        if (fiber.immobile())
-        {
-            continue;
-        }
-        const Eigen::Vector3d c = fiber.centreOfMass();
-        sums[0] += 1;
-        for (int d = 0; d < 3; ++d)
-        {
-            sums[1 + d] += c(d);
-            sums[4 + d] += c(d)*c(d);
-        }
-        const Eigen::Matrix3Xd& u = fiber.state().turbulentVelocity;
-        sums[7] += scalar(fiber.pointCount());
-        for (int d = 0; d < 3 && u.cols(); ++d)
-        {
-            sums[8 + d] += u.row(d).squaredNorm();
-        }
-    }
-    Pstream::listCombineGather(sums, plusEqOp<scalar>());
-    if (!writeToFile() || !Pstream::master())
-    {
-        return;
-    }
-    if (!dispersionFile_.valid())
-    {
-        dispersionFile_ = createFile("fiberDispersion");
-        OFstream& os = dispersionFile_();
-        writeHeader(os, "Movable fibers: centres of mass and turbulent velocity u' (docs/model.md sec. 8)");
-        writeCommented(os, "Time");
-        for
-        (
-            const char* column :
-            {
-                "fibers", "meanCentreX", "meanCentreY", "meanCentreZ",
-                "spreadX", "spreadY", "spreadZ",
-                "uTurbRmsX", "uTurbRmsY", "uTurbRmsZ"
-            }
-        )
-        {
-            writeTabbed(os, column);
-        }
-        os  << endl;
-    }
-    OFstream& os = dispersionFile_();
-    writeCurrentTime(os);
-    const scalar n = max(sums[0], scalar(1));
-    const scalar points = max(sums[7], scalar(1));
-    os  << tab << label(sums[0]);
-    for (int d = 0; d < 3; ++d)
-    {
-        os  << tab << sums[1 + d]/n;
-    }
-    for (int d = 0; d < 3; ++d)
-    {
-        const scalar mean = sums[1 + d]/n;
-        os  << tab << std::sqrt(max(sums[4 + d]/n - mean*mean, scalar(0)));
-    }
-    for (int d = 0; d < 3; ++d)
-    {
-        os  << tab << std::sqrt(sums[8 + d]/points);
-    }
-    os  << endl;
-}
 
 // ************************************************************************* //

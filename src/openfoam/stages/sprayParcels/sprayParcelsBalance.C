@@ -9,8 +9,8 @@ Description
         sprayed = airborne + evaporated + escaped + captured,
 
     with the cloud's own figures for the first (injectors), third and fourth
-    (their submodels: cloudParcels::addMassReport) and the function
-    object's for airborne (the parcel mass after the removal) and captured.
+    (their submodels: cloudParcels::addMassReport) and the capture stage's
+    for airborne (the parcel mass after the removal) and captured.
     Where the parcels carry a liquid composition the captured mass is also
     summed per liquid species, parcel by parcel as it is removed:
     captured_i = sum_p c_p m_p Y_p,i (c_p the fraction of its droplets
@@ -19,7 +19,7 @@ Description
 
 \*---------------------------------------------------------------------------*/
 
-#include "dropletFiberCollision.H"
+#include "sprayParcels.H"
 #include "cloud.H"
 #include "Time.H"
 #include "fvMesh.H"
@@ -28,12 +28,12 @@ Description
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::functionObjects::dropletFiberCollision::findLiquidSpecies()
+void Foam::dropletFiber::sprayParcels::findLiquidSpecies()
 {
     liquidSpecies_.clear();
     const wordList clouds =
         cloudNames_.empty()
-      ? dropletFiber::cloudParcels::cloudNames(mesh_)
+      ? cloudParcels::cloudNames(mesh_)
       : cloudNames_;
     DynamicList<word> species;
     for (const word& cloudName : clouds)
@@ -43,7 +43,7 @@ void Foam::functionObjects::dropletFiberCollision::findLiquidSpecies()
             continue; // created later (selectClouds reports it if never)
         }
         const cloud& c = mesh_.lookupObject<cloud>(cloudName);
-        for (const word& s : dropletFiber::cloudParcels::liquidSpecies(c))
+        for (const word& s : cloudParcels::liquidSpecies(c))
         {
             if (!species.found(s))
             {
@@ -57,7 +57,7 @@ void Foam::functionObjects::dropletFiberCollision::findLiquidSpecies()
 }
 
 
-void Foam::functionObjects::dropletFiberCollision::addCapturedSpecies
+void Foam::dropletFiber::sprayParcels::addCapturedSpecies
 (
     const std::vector<double>& fraction
 )
@@ -80,16 +80,15 @@ void Foam::functionObjects::dropletFiberCollision::addCapturedSpecies
     forAll(stepClouds_, k)
     {
         const cloud& c = mesh_.lookupObject<cloud>(stepClouds_[k]);
-        const wordList names = dropletFiber::cloudParcels::liquidSpecies(c);
+        const wordList names = cloudParcels::liquidSpecies(c);
         if (names.empty())
         {
             continue;
         }
         const label start = cloudStarts_[k];
-        const label end =
-            k + 1 < stepClouds_.size() ? cloudStarts_[k + 1] : parcels_.size();
+        const label end = cloudEnd(k);
         scalarList captured(names.size(), Zero);
-        dropletFiber::cloudParcels::addCapturedSpecies
+        cloudParcels::addCapturedSpecies
         (
             c,
             fraction.data() + start,
@@ -116,32 +115,37 @@ void Foam::functionObjects::dropletFiberCollision::addCapturedSpecies
 }
 
 
-void Foam::functionObjects::dropletFiberCollision::readCloudMassReport()
+const Foam::dropletFiber::cloudParcels::massReport&
+Foam::dropletFiber::sprayParcels::readCloudMassReport()
 {
-    cloudMass_ = dropletFiber::cloudParcels::massReport();
+    cloudMass_ = cloudParcels::massReport();
     for (const word& cloudName : stepClouds_)
     {
-        dropletFiber::cloudParcels::addMassReport
+        cloudParcels::addMassReport
         (
             mesh_.lookupObject<cloud>(cloudName), cloudMass_
         );
     }
+    return cloudMass_;
 }
 
 
-void Foam::functionObjects::dropletFiberCollision::reportCloudBalance() const
+void Foam::dropletFiber::sprayParcels::reportCloudBalance
+(
+    const scalar airborne,
+    const scalar captured
+) const
 {
     if (!depletion_)
     {
         return;
     }
     const auto& m = cloudMass_;
-    const scalar accounted =
-        depletionStep_.airborne + m.evaporated + m.escaped + totals_.captured;
+    const scalar accounted = airborne + m.evaporated + m.escaped + captured;
     Info<< type() << " " << name() << " cloud balance at time "
         << time_.timeName() << ": sprayed " << m.sprayed << " kg = airborne "
-        << depletionStep_.airborne << " + evaporated " << m.evaporated
-        << " + escaped " << m.escaped << " + captured " << totals_.captured
+        << airborne << " + evaporated " << m.evaporated
+        << " + escaped " << m.escaped << " + captured " << captured
         << " kg (relative difference "
         << (m.sprayed > 0 ? (m.sprayed - accounted)/m.sprayed : scalar(0))
         << ")" << nl;
@@ -155,7 +159,7 @@ void Foam::functionObjects::dropletFiberCollision::reportCloudBalance() const
                 << capturedSpecies_[i] << " kg";
             sum += capturedSpecies_[i];
         }
-        Info<< " (sum " << sum << " kg of " << totals_.captured << " kg)"
+        Info<< " (sum " << sum << " kg of " << captured << " kg)"
             << nl;
     }
     Info<< endl;

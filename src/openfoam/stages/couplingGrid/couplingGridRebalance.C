@@ -12,7 +12,7 @@ Description
 
 \*---------------------------------------------------------------------------*/
 
-#include "dropletFiberCollision.H"
+#include "couplingGrid.H"
 #include "threadCpuTime.H"
 
 #include <fstream>
@@ -74,27 +74,29 @@ struct movePhases
 } // End anonymous namespace
 
 
-// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::functionObjects::dropletFiberCollision::rebalanceBlocks
+void Foam::dropletFiber::couplingGrid::rebalance
 (
-    const scalar dt
+    const std::vector<::dropletFiber::Parcel>& parcels,
+    const scalar dt,
+    parallelStatistics& statistics
 )
 {
     if
     (
         !Pstream::parRun()
-     || !gridSettings_.balancedBlocks
-     || grid_->committedSteps() % gridSettings_.balanceSteps != 0
+     || !settings_.balancedBlocks
+     || grid_->committedSteps() % settings_.balanceSteps != 0
     )
     {
         return;
     }
-    using stage = dropletFiber::parallelStatistics::stage;
+    using stage = parallelStatistics::stage;
     movePhases phases;
     std::vector<::dropletFiber::WindowState> parts;
     bool moved = false;
-    parallelStatistics_.timed
+    statistics.timed
     (
         stage::deposit,
         [&]()
@@ -107,11 +109,11 @@ void Foam::functionObjects::dropletFiberCollision::rebalanceBlocks
                     return blocks_->rebalance
                     (
                         *grid_,
-                        stepParcels_,
+                        parcels,
                         dt,
-                        gridSettings_.balanceSteps,
-                        gridSettings_.moveCost,
-                        parallelStatistics_,
+                        settings_.balanceSteps,
+                        settings_.moveCost,
+                        statistics,
                         parts
                     );
                 }
@@ -129,7 +131,7 @@ void Foam::functionObjects::dropletFiberCollision::rebalanceBlocks
     // The old window's pages were given back part by part as saved; the old
     // grid is freed before the parts arrive, and each part once copied into
     // the new window
-    parallelStatistics_.timed
+    statistics.timed
     (
         stage::deposit,
         [&]()
@@ -140,7 +142,7 @@ void Foam::functionObjects::dropletFiberCollision::rebalanceBlocks
                 [&]()
                 {
                     grid_.reset();
-                    blocks_->receiveWindowParts(parallelStatistics_, parts);
+                    blocks_->receiveWindowParts(statistics, parts);
                     phases.end(2);
                     rebuildGrid(nullptr);
                     grid_->restoreWindowParts(parts);
@@ -154,29 +156,6 @@ void Foam::functionObjects::dropletFiberCollision::rebalanceBlocks
     );
     phases.ms[6] = residentMiB();
     phases.report();
-}
-
-
-void Foam::functionObjects::dropletFiberCollision::rebuildGrid
-(
-    const ::dropletFiber::WindowState* window
-)
-{
-    grid_.reset();
-    grid_.reset
-    (
-        new ::dropletFiber::DensityGrid
-        (
-            gridSettings_.spec,
-            gridSettings_.kernel,
-            int(gridSettings_.averagingSteps),
-            blocks_->block()
-        )
-    );
-    if (window)
-    {
-        grid_->restoreWindow(*window);
-    }
 }
 
 

@@ -1,0 +1,120 @@
+/*---------------------------------------------------------------------------*\
+  dropletFiber: stochastic droplet-fiber coupling for OpenFOAM
+-------------------------------------------------------------------------------
+Description
+    The conductor's reports: the settings in force, each step's figures
+    gathered from the stages for the output, and at write times the restart
+    state, the binder table, the balances and the VTK files.
+
+\*---------------------------------------------------------------------------*/
+
+#include "dropletFiberCollision.H"
+#include "collisionSettings.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::functionObjects::dropletFiberCollision::reportStep
+(
+    dropletFiber::stepRow& step
+)
+{
+    // Over all processors (collective: before the master's writing)
+    step.fibers = population_.count();
+    step.fiberMass = population_.mass();
+    step.capturedTotal = capture_.captured();
+    step.depletion = capture_.depletion();
+    if (step.depletion)
+    {
+        step.cloudMass = spray_.readCloudMassReport();
+        step.removal = capture_.step();
+        step.capturedSpecies = spray_.capturedSpecies();
+    }
+    output_.writeStep(step);
+    // With turbulent air, the fibers' dispersion
+    if (motion_.turbulent())
+    {
+        output_.writeFiberDispersion(population_.dispersionSums());
+    }
+    // The grid nodes this processor stores (its block) and the fibers it
+    // holds, with the step's work, over processors
+    statistics_.holding(grid_.storedNodes(), population_.fibers().size());
+    output_.writeParallelStatistics(statistics_.overProcessors());
+}
+
+
+void Foam::functionObjects::dropletFiberCollision::writeAtWriteTime()
+{
+    coreCall
+    (
+        "writing the restart state",
+        [this]() { restart_.writeState(stateParts_, grid_.settings()); }
+    );
+    output_.writeBinderDistribution
+    (
+        population_.binderSums(),
+        dropletFiber::collisionModeName(capture_.options().mode)
+    );
+    output_.reportConservation
+    (
+        grid_.totals(), population_.totals(), capture_.captured(),
+        population_.mass()
+    );
+    capture_.reportBinderBalance();
+    statistics_.reportBalance(Info, type() + " " + name(), time_.timeName());
+    spray_.reportCloudBalance(capture_.step().airborne, capture_.captured());
+    grid_.reportAtWrite();
+}
+
+
+void Foam::functionObjects::dropletFiberCollision::reportSettings()
+{
+    Info<< type() << " " << name() << ":" << nl;
+    spray_.report(Info);
+    grid_.report(Info);
+    capture_.report(Info);
+    grid_.reportBlocks(Info);
+    motion_.reportAir(Info);
+    grid_.reportMemory(Info, population_.pointsHere());
+    motion_.report(Info, population_.injectorCount(), population_.count());
+    output_.report(Info);
+    Info<< endl;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::functionObjects::dropletFiberCollision::write()
+{
+    coreCall
+    (
+        "writing the VTK files",
+        [this]()
+        {
+            output_.writeVtk
+            (
+                [this]
+                (
+                    const fileName& dir,
+                    const scalar t,
+                    ::dropletFiber::SeriesFile& series
+                )
+                {
+                    population_.writeVtk(dir, t, series, motion_.turbulent());
+                },
+                [this]
+                (
+                    const fileName& dir,
+                    const scalar t,
+                    ::dropletFiber::SeriesFile& series
+                )
+                {
+                    grid_.writeVtk(dir, t, series, statistics_);
+                }
+            );
+        }
+    );
+    return true;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,364 @@
+/*---------------------------------------------------------------------------*\
+  dropletFiber: stochastic droplet-fiber coupling for OpenFOAM
+-------------------------------------------------------------------------------
+Description
+    Depletion over the grid's blocks (docs/model.md sec. 7, P12-P14, P19):
+    each sample's demand attributed by the owners of its corners to their
+    nodes (grantCapture), the nodes' grants, and each parcel's captured
+    fraction from the optical depths of the nodes its deposit reached, added
+    up over the blocks it reached (removeCaptured).
+
+\*---------------------------------------------------------------------------*/
+
+#include "gridBlocks.H"
+#include "UOPstream.H"
+#include "UIPstream.H"
+#include "grid/MultilinearWeights.hpp"
+
+#include <stdexcept>
+#include <string>
+#include <algorithm>
+#include <unordered_map>
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::dropletFiber::gridBlocks::attributeDemand
+(
+    const ::dropletFiber::DensityGrid& grid,
+    const std::vector<Eigen::Vector3d>& points,
+    const std::vector<double>& massShares,
+    ::dropletFiber::CaptureLimit& limit,
+    std::vector<::dropletFiber::SampleCapture>& local,
+    std::vector<std::vector<std::size_t>>& askedFor
+)
+{
+    local.assign(points.size(), ::dropletFiber::SampleCapture());
+    for (std::size_t p = 0; p < points.size(); ++p)
+    {
+        if (!(massShares[p] > 0))
+        {
+            continue; // no capture: nothing asked of any node
+        }
+        const ::dropletFiber::CornerWeights corners =
+            ::dropletFiber::multilinearWeights(spec_, points[p]);
+        local[p] =
+            ::dropletFiber::attributeOwnedCorners
+            (
+                grid, corners, massShares[p], Eigen::Vector3d::Zero()
+            );
+        limit.addDemand(local[p]);
+        if (Pstream::parRun())
+        {
+            const scalar share = massShares[p];
+            askCornerOwners(corners, points[p], p, askedFor, &share);
+        }
+    }
+}
+
+
+std::vector<double> Foam::dropletFiber::gridBlocks::grantCapture
+(
+    ::dropletFiber::DensityGrid& grid,
+    const std::vector<Eigen::Vector3d>& points,
+    const std::vector<double>& massShares,
+    const std::vector<::dropletFiber::Parcel>& parcels,
+    const double dt,
+    ::dropletFiber::CaptureLimit& limit,
+    ::dropletFiber::CaptureLimitReport& report,
+    std::vector<double>& captured,
+    parallelStatistics& statistics
+)
+{
+    const auto what = parallelStatistics::traffic::gridQueries;
+    limit.clear();
+    // Built in the members that realiseCapture (discrete hits,
+    // gridBlocksHits.C) reads after: no copy, in either collision mode
+    std::vector<::dropletFiber::SampleCapture>& local = grantLocal_;
+    auto& remote = grantRemote_;
+    auto& askedFor = grantAskedFor_;
+    askedFor.assign(outgoing_.size(), {});
+    remote.assign(outgoing_.size(), {});
+    forAll(outgoing_, proci)
+    {
+        outgoing_[proci].clear();
+    }
+    // P12: the demand at this block's corners, the rest asked of the owners
+    attributeDemand(grid, points, massShares, limit, local, askedFor);
+    List<List<scalar>> requests(outgoing_.size());
+    if (Pstream::parRun())
+    {
+        requests = exchangeLists(statistics, what);
+        forAll(requests, proci)
+        {
+            const List<scalar>& in = requests[proci];
+            for (label i = 0; i + 4 <= in.size(); i += 4)
+            {
+                const Eigen::Vector3d point(in[i], in[i + 1], in[i + 2]);
+                remote[proci].push_back
+                (
+                    ::dropletFiber::attributeOwnedCorners
+                    (
+                        grid, ::dropletFiber::multilinearWeights(spec_, point),
+                        in[i + 3], Eigen::Vector3d::Zero()
+                    )
+                );
+                limit.addDemand(remote[proci].back());
+            }
+        }
+    }
+    // P13 on the nodes owned here, the parcels' removal (P14), then each
+    // request's granted part back
+    report = limit.limit(grid);
+    captured = removeCaptured(grid, limit, parcels, dt, report, statistics);
+    return grantedMasses(limit, points, massShares, requests, statistics);
+}
+
+
+std::vector<double> Foam::dropletFiber::gridBlocks::grantedMasses
+(
+    const ::dropletFiber::CaptureLimit& limit,
+    const std::vector<Eigen::Vector3d>& points,
+    const std::vector<double>& massShares,
+    const List<List<scalar>>& requests,
+    parallelStatistics& statistics
+)
+{
+    // Per corner d_sc g_c, each from the corner's owner, added in corner order: the
+    // same bits whichever processors own the corners
+    std::vector<std::array<double, 8>> slots(points.size(), std::array<double, 8>{});
+    std::vector<int> count(points.size(), 0);
+    for (std::size_t p = 0; p < points.size(); ++p)
+    {
+        if (massShares[p] > 0)
+        {
+            const auto corners = ::dropletFiber::multilinearWeights(spec_, points[p]);
+            count[p] = corners.count;
+            grantedSlots(limit, grantLocal_[p], corners, slots[p]);
+        }
+    }
+    if (Pstream::parRun())
+    {
+        for (std::size_t proci = 0; proci < grantRemote_.size(); ++proci)
+        {
+            outgoing_[proci].clear();
+            const List<scalar>& in = requests[proci];
+            for (std::size_t i = 0; i < grantRemote_[proci].size(); ++i)
+            {
+                const Eigen::Vector3d point(in[4*i], in[4*i + 1], in[4*i + 2]);
+                const auto corners = ::dropletFiber::multilinearWeights(spec_, point);
+                std::array<double, 8> answer{};
+                grantedSlots(limit, grantRemote_[proci][i], corners, answer);
+                if (!cornerAnswers_)
+                {
+                    double sum = 0;
+                    for (int c = 0; c < corners.count; ++c)
+                    {
+                        sum += answer[c];
+                    }
+                    outgoing_[proci].append(sum);
+                    continue;
+                }
+                for (int c = 0; c < corners.count; ++c)
+                {
+                    outgoing_[proci].append(answer[c]);
+                }
+            }
+        }
+        const List<List<scalar>> answers =
+            exchangeLists(statistics, parallelStatistics::traffic::gridQueries);
+        forAll(answers, proci)
+        {
+            label at = 0;
+            for (const std::size_t p : grantAskedFor_[proci])
+            {
+                const int n = cornerAnswers_ ? count[p] : 1;
+                for (int c = 0; c < n; ++c)
+                {
+                    slots[p][c] += answers[proci][at++];
+                }
+            }
+        }
+    }
+    std::vector<double> granted(points.size(), 0.0);
+    for (std::size_t p = 0; p < points.size(); ++p)
+    {
+        for (int c = 0; c < count[p]; ++c)
+        {
+            granted[p] += slots[p][c];
+        }
+    }
+    return granted;
+}
+
+
+void Foam::dropletFiber::gridBlocks::grantedSlots
+(
+    const ::dropletFiber::CaptureLimit& limit,
+    const ::dropletFiber::SampleCapture& capture,
+    const ::dropletFiber::CornerWeights& corners,
+    std::array<double, 8>& slots
+)
+{
+    // The capture's entries are its corners with a part, in corner order: each
+    // to the next corner of its node (a node twice among the corners, at a
+    // folded face, keeps its two entries apart)
+    int c = 0;
+    for (int k = 0; k < capture.count; ++k)
+    {
+        while (c < corners.count && corners.node[c] != capture.node[k])
+        {
+            ++c;
+        }
+        if (c == corners.count)
+        {
+            break;
+        }
+        slots[c++] = capture.mass[k]*limit.grantedRatio(capture.node[k]);
+    }
+}
+
+
+std::vector<double> Foam::dropletFiber::gridBlocks::removeCaptured
+(
+    ::dropletFiber::DensityGrid& grid,
+    ::dropletFiber::CaptureLimit& limit,
+    const std::vector<::dropletFiber::Parcel>& parcels,
+    const double dt,
+    ::dropletFiber::CaptureLimitReport& report,
+    parallelStatistics& statistics
+)
+{
+    // A_p and X_p over this block's nodes: its parcels, then the copies
+    reaches_.clear();
+    for (const ::dropletFiber::Parcel& parcel : parcels)
+    {
+        limit.reach(grid, parcel, dt, reaches_);
+    }
+    for (const ::dropletFiber::Parcel& copy : copies_)
+    {
+        limit.reach(grid, copy, dt, reaches_);
+    }
+    const std::size_t own = parcels.size();
+    std::vector<double> saturated(own, 0.0);
+    std::vector<double> depth(own, 0.0);
+    std::vector<double> copySums;
+    if (Pstream::parRun())
+    {
+        exchangeReachSums(own, copySums, statistics);
+    }
+    for (std::size_t p = 0; p < own; ++p)
+    {
+        saturated[p] = reaches_.parcels[p].saturatedSum.value();
+        depth[p] = reaches_.parcels[p].depthSum.value();
+    }
+    // c_p from the whole sums; each block attributes the losses to its nodes
+    std::vector<double> captured(own, 0.0);
+    for (std::size_t p = 0; p < own; ++p)
+    {
+        captured[p] =
+            ::dropletFiber::CaptureLimit::capturedFraction(saturated[p], depth[p]);
+        if (reaches_.parcels[p].count > 0)
+        {
+            limit.remove
+            (
+                reaches_, p, ::dropletFiber::parcelMass(parcels[p]),
+                saturated[p], depth[p]
+            );
+        }
+    }
+    for (std::size_t c = 0; c < copies_.size(); ++c)
+    {
+        if (reaches_.parcels[own + c].count > 0)
+        {
+            limit.remove
+            (
+                reaches_, own + c, ::dropletFiber::parcelMass(copies_[c]),
+                copySums[2*c], copySums[2*c + 1]
+            );
+        }
+    }
+    limit.grant(report);
+    keepWholeReachSums(saturated, depth, copySums);
+    return captured;
+}
+
+
+void Foam::dropletFiber::gridBlocks::keepWholeReachSums
+(
+    const std::vector<double>& saturated,
+    const std::vector<double>& depth,
+    const std::vector<double>& copySums
+)
+{
+    // The parcels' first, then the copies', as reached
+    const std::size_t own = saturated.size();
+    for (std::size_t i = 0; i < reaches_.parcels.size(); ++i)
+    {
+        ::dropletFiber::ParcelReach& entry = reaches_.parcels[i];
+        entry.saturated = i < own ? saturated[i] : copySums[2*(i - own)];
+        entry.depth = i < own ? depth[i] : copySums[2*(i - own) + 1];
+    }
+}
+
+
+void Foam::dropletFiber::gridBlocks::exchangeReachSums
+(
+    const std::size_t ownParcels,
+    std::vector<double>& copySums,
+    parallelStatistics& statistics
+)
+{
+    const auto what = parallelStatistics::traffic::parcels;
+    constexpr label pieces = ::dropletFiber::FixedPointSum::pieceCount;
+    // The copies' exact parts to their processors, in the order received
+    std::size_t next = ownParcels;
+    forAll(outgoing_, proci)
+    {
+        outgoing_[proci].clear();
+        for (std::size_t i = 0; i < copiesFrom_[proci]; ++i, ++next)
+        {
+            const ::dropletFiber::ParcelReach& part = reaches_.parcels[next];
+            for (const auto& sum : {part.saturatedSum, part.depthSum})
+            {
+                for (const double piece : sum.pieces())
+                {
+                    outgoing_[proci].append(piece);
+                }
+            }
+        }
+    }
+    // Added exactly to the parcels' own parts: any order, the same bits
+    const List<List<scalar>> parts = exchangeLists(statistics, what);
+    forAll(parts, proci)
+    {
+        for (std::size_t i = 0; i < sentCopies_[proci].size(); ++i)
+        {
+            const scalar* in = parts[proci].cdata() + 2*pieces*i;
+            ::dropletFiber::ParcelReach& whole = reaches_.parcels[sentCopies_[proci][i]];
+            whole.saturatedSum.add(::dropletFiber::FixedPointSum::fromPieces(in));
+            whole.depthSum.add(::dropletFiber::FixedPointSum::fromPieces(in + pieces));
+        }
+    }
+    // The sums back to the blocks holding the copies
+    forAll(outgoing_, proci)
+    {
+        outgoing_[proci].clear();
+        for (const std::size_t p : sentCopies_[proci])
+        {
+            outgoing_[proci].append(reaches_.parcels[p].saturatedSum.value());
+            outgoing_[proci].append(reaches_.parcels[p].depthSum.value());
+        }
+    }
+    const List<List<scalar>> sums = exchangeLists(statistics, what);
+    copySums.clear();
+    forAll(sums, proci)
+    {
+        for (label i = 0; i < label(2*copiesFrom_[proci]); ++i)
+        {
+            copySums.push_back(sums[proci][i]);
+        }
+    }
+}
+
+
+// ************************************************************************* //

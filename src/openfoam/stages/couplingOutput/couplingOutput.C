@@ -1,0 +1,148 @@
+/*---------------------------------------------------------------------------*\
+  dropletFiber: stochastic droplet-fiber coupling for OpenFOAM
+-------------------------------------------------------------------------------
+Description
+    The output's settings, the VTK files' folder and series, the mass
+    balances in the log.
+
+\*---------------------------------------------------------------------------*/
+
+#include "couplingOutput.H"
+#include "dictionaryChecks.H"
+#include "OSspecific.H"
+
+// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- dict with the per-step table's writePrecision: the entry, else 10 (more
+//  digits than OpenFOAM's default: the table is compared across runs).
+//  writeFile opens the table in its constructor with the precision in force
+//  then, so the constructor must be given this too.
+Foam::dictionary tableFileDict(const Foam::dictionary& dict)
+{
+    Foam::dictionary fileDict(dict);
+    if (!fileDict.found("writePrecision"))
+    {
+        fileDict.add("writePrecision", 10);
+    }
+    return fileDict;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::dropletFiber::couplingOutput::couplingOutput
+(
+    const functionObject& owner,
+    const fvMesh& mesh,
+    const dictionary& dict
+)
+:
+    couplingStage(owner, mesh),
+    writeFile(mesh, owner.name(), "dropletFiber", tableFileDict(dict)),
+    writeVtk_(true),
+    writeGridVtk_(true)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::dropletFiber::couplingOutput::read(const dictionary& dict)
+{
+    writeFile::read(tableFileDict(dict));
+    writeVtk_ = getSwitch(dict, "writeVtk", true);
+    writeGridVtk_ = getSwitch(dict, "writeGridVtk", true);
+    return true;
+}
+
+
+void Foam::dropletFiber::couplingOutput::startVtk(const dictionary& dict)
+{
+    const fileName vtkDir =
+        baseFileDir()/name()/time_.timeName(time_.startTime().value());
+    if (Pstream::master() && (writeVtk_ || writeGridVtk_))
+    {
+        mkDir(vtkDir);
+    }
+    fibersSeries_.reset(new ::dropletFiber::SeriesFile(vtkDir/"fibers.vtp.series"));
+    gridSeries_.reset(new ::dropletFiber::SeriesFile(vtkDir/"grid.vti.series"));
+    checkedCoreCall
+    (
+        dict,
+        [this]()
+        {
+            fibersSeries_->load(time_.value() + 0.5*time_.deltaTValue());
+            gridSeries_->load(time_.value() + 0.5*time_.deltaTValue());
+        }
+    );
+}
+
+
+void Foam::dropletFiber::couplingOutput::writeVtk(const vtkWriter& fibers, const vtkWriter& grid)
+{
+    if (!writeVtk_ && !writeGridVtk_)
+    {
+        return;
+    }
+    const fileName dir =
+        baseFileDir()/name()/time_.timeName(time_.startTime().value());
+    if (Pstream::master())
+    {
+        mkDir(dir);
+    }
+    // The time folder's name as the files' time: 0.3, not the sum of the
+    // steps (0.30000000000000004)
+    const scalar t = readScalar(time_.timeName());
+
+    // Both collective in parallel: every processor writes its piece (its
+    // fibers, its block of the grid), the master the index of the pieces
+    if (writeVtk_)
+    {
+        fibers(dir, t, *fibersSeries_);
+    }
+    if (writeGridVtk_)
+    {
+        grid(dir, t, *gridSeries_);
+    }
+}
+
+
+void Foam::dropletFiber::couplingOutput::reportConservation
+(
+    const depositTotals& deposit,
+    const fiberTotals& fibers,
+    const scalar captured,
+    const scalar mass
+) const
+{
+    const scalar balance =
+        fibers.massAdded + captured
+      - fibers.massRemoved - mass;
+    Info<< type() << " " << name() << " conservation at time "
+        << time_.timeName() << ", summed over all steps so far:" << nl
+        << "    parcel mass " << deposit.parcelMass << " kg = on grid "
+        << deposit.deposited << " + outside it " << deposit.outside
+        << " (balance "
+        << deposit.parcelMass - deposit.deposited - deposit.outside
+        << " kg)" << nl
+        << "    fiber mass " << mass << " kg = added "
+        << fibers.massAdded << " + captured " << captured
+        << " - removed " << fibers.massRemoved
+        << " (balance " << balance << " kg)" << nl
+        << "    parcel-steps with the influence radius capped at rMaxCap: "
+        << deposit.parcelsCapped << nl << endl;
+}
+
+
+void Foam::dropletFiber::couplingOutput::report(Ostream& os) const
+{
+    os  << "    output: writeVtk " << Switch(writeVtk_).c_str()
+        << ", writeGridVtk " << Switch(writeGridVtk_).c_str() << nl;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,293 @@
+/*---------------------------------------------------------------------------*\
+  dropletFiber: stochastic droplet-fiber coupling for OpenFOAM
+-------------------------------------------------------------------------------
+Description
+    The tables: the per-step table and its log line, the parallel
+    statistics, the binder distribution and the fibers' dispersion.
+
+\*---------------------------------------------------------------------------*/
+
+#include "couplingOutput.H"
+
+#include <cmath>
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::dropletFiber::couplingOutput::writeParallelStatisticsHeader
+(
+    OFstream& os
+)
+{
+    writeHeader
+    (
+        os,
+        "Per time step, maxima over processors; the work (parcels to"
+        " cpuFibers, thread CPU time in s) as maximum and mean"
+    );
+    writeCommented(os, "Time");
+    writeTabbed(os, "nodesHeldMax");
+    writeTabbed(os, "fibersHeldMax");
+    writeTabbed(os, "bytesSentMax");
+    writeTabbed(os, "bytesParcelsMax");
+    writeTabbed(os, "bytesGridQueriesMax");
+    writeTabbed(os, "bytesFibersMax");
+    // In the order of parallelStatistics::work::operator[]
+    for
+    (
+        const char* figure :
+        {
+            "parcels", "parcelCopies", "nodeWeights", "collisionSamples",
+            "fiberPoints", "cpuDeposit", "cpuCollision", "cpuFibers"
+        }
+    )
+    {
+        writeTabbed(os, word(figure) + "Max");
+        writeTabbed(os, word(figure) + "Mean");
+    }
+    os  << endl;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::dropletFiber::couplingOutput::writeTableHeader
+(
+    const bool depletion,
+    const wordList& liquidSpecies
+)
+{
+    if (!writeToFile())
+    {
+        return;
+    }
+    OFstream& os = file();
+    writeHeader(os, "Droplet-fiber coupling, per time step (masses in kg, times in s)");
+    writeCommented(os, "Time");
+    for
+    (
+        const char* column :
+        {
+            "fibers", "parcels", "droplets", "parcelMass", "massOnGrid", "massOutsideGrid",
+            "capturedStep", "capturedTotal", "fiberMass",
+            "maxSegmentLengthError"
+        }
+    )
+    {
+        writeTabbed(os, column);
+    }
+    // Depletion's binder balance: eq. 9 before the limit, the mass taken
+    // from the parcels (= capturedStep), the parcel mass flying on
+    if (depletion)
+    {
+        for (const char* column : {"demandedStep", "removedStep", "airborneMass"})
+        {
+            writeTabbed(os, column);
+        }
+        // The clouds' own figures (sprayed = airborne + evaporated +
+        // escaped + capturedTotal) and the captured mass per liquid species
+        for (const char* column : {"sprayedMass", "evaporatedMass", "escapedMass"})
+        {
+            writeTabbed(os, column);
+        }
+        for (const word& species : liquidSpecies)
+        {
+            writeTabbed(os, "captured_" + species);
+        }
+    }
+    // One stage each: gather and deposit; collision (and depletion's
+    // removal); the fibers' injection, step and hand-over
+    writeTabbed(os, "wallTimeDeposition");
+    writeTabbed(os, "wallTimeCollision");
+    writeTabbed(os, "wallTimeFibers");
+    os  << endl;
+}
+
+
+void Foam::dropletFiber::couplingOutput::writeStep(const stepRow& step)
+{
+    if (owner_.log)
+    {
+        Info<< type() << " " << name() << ": parcels " << step.parcels
+            << ", fibers " << step.fibers
+            << ", captured " << step.capturedStep << " kg (total "
+            << step.capturedTotal << " kg), segment-length error "
+            << step.maxSegmentLengthError << ", sub-steps " << step.subSteps;
+        if (step.depletion)
+        {
+            Info<< ", removed from the parcels " << step.removal.removed
+                << " kg, airborne " << step.removal.airborne << " kg";
+        }
+        Info<< endl;
+    }
+
+    if (writeToFile())
+    {
+        OFstream& os = file();
+        writeCurrentTime(os);
+        os  << tab << step.fibers
+            << tab << step.parcels
+            << tab << step.droplets
+            << tab << step.deposit.massIn
+            << tab << step.deposit.massDeposited
+            << tab << step.deposit.massOutside
+            << tab << step.capturedStep
+            << tab << step.capturedTotal
+            << tab << step.fiberMass
+            << tab << step.maxSegmentLengthError;
+        if (step.depletion)
+        {
+            os  << tab << step.removal.demanded
+                << tab << step.removal.removed
+                << tab << step.removal.airborne
+                << tab << step.cloudMass.sprayed
+                << tab << step.cloudMass.evaporated
+                << tab << step.cloudMass.escaped;
+            for (const scalar captured : step.capturedSpecies)
+            {
+                os  << tab << captured;
+            }
+        }
+        os  << tab << step.depositionTime
+            << tab << step.collisionTime
+            << tab << step.fiberTime
+            << endl;
+    }
+}
+
+
+void Foam::dropletFiber::couplingOutput::writeParallelStatistics
+(
+    const parallelStatistics::spread& all
+)
+{
+    // Also in a serial run (one processor: sends nothing, max = mean), the
+    // reference of the work per processor
+    if (!writeToFile())
+    {
+        return;
+    }
+    if (!parallelStatisticsFile_.valid())
+    {
+        parallelStatisticsFile_ = createFile("parallelStatistics");
+        writeParallelStatisticsHeader(parallelStatisticsFile_());
+    }
+    OFstream& os = parallelStatisticsFile_();
+    const parallelStatistics::figures& maxima = all.maxima;
+    writeCurrentTime(os);
+    os  << tab << maxima.nodesHeld
+        << tab << maxima.fibersHeld
+        << tab << maxima.bytesSent
+        << tab << maxima.bytesParcels
+        << tab << maxima.bytesGridQueries
+        << tab << maxima.bytesFibers;
+    for (label i = 0; i < parallelStatistics::work::size; ++i)
+    {
+        os  << tab << all.maxWork[i] << tab << all.meanWork[i];
+    }
+    os  << endl;
+}
+
+
+void Foam::dropletFiber::couplingOutput::writeBinderDistribution
+(
+    const ::dropletFiber::BinderSums& sums,
+    const word& collisionMode
+)
+{
+    if (!writeToFile() || !Pstream::master())
+    {
+        return;
+    }
+    const ::dropletFiber::BinderFigures figures =
+        ::dropletFiber::binderFigures(sums);
+    if (!binderFile_.valid())
+    {
+        binderFile_ = createFile("binderDistribution");
+        OFstream& os = binderFile_();
+        writeHeader
+        (
+            os,
+            "Binder along all fibers, per segment sigma = captured mass /"
+            " length (docs/model.md sec. 3, discrete hits); collision mode "
+          + collisionMode
+          + "; expected*: the expected mode's mass on the same fibers"
+        );
+        writeCommented(os, "Time");
+        for
+        (
+            const char* column :
+            {
+                "fiberLength", "segments", "bareFraction", "meanSigma",
+                "sigmaCoV", "hitsPerLength", "expectedBareFraction",
+                "expectedMeanSigma", "expectedSigmaCoV"
+            }
+        )
+        {
+            writeTabbed(os, column);
+        }
+        os  << endl;
+    }
+    OFstream& os = binderFile_();
+    writeCurrentTime(os);
+    os  << tab << figures.length
+        << tab << label(sums.values[5])
+        << tab << figures.bareFraction
+        << tab << figures.meanSigma
+        << tab << figures.sigmaVariation
+        << tab << figures.hitsPerLength
+        << tab << figures.expectedBareFraction
+        << tab << figures.expectedMeanSigma
+        << tab << figures.expectedSigmaVariation
+        << endl;
+}
+
+
+void Foam::dropletFiber::couplingOutput::writeFiberDispersion(const List<scalar>& sums)
+{
+    if (!writeToFile() || !Pstream::master())
+    {
+        return;
+    }
+    if (!dispersionFile_.valid())
+    {
+        dispersionFile_ = createFile("fiberDispersion");
+        OFstream& os = dispersionFile_();
+        writeHeader(os, "Movable fibers: centres of mass and turbulent velocity u' (docs/model.md sec. 8)");
+        writeCommented(os, "Time");
+        for
+        (
+            const char* column :
+            {
+                "fibers", "meanCentreX", "meanCentreY", "meanCentreZ",
+                "spreadX", "spreadY", "spreadZ",
+                "uTurbRmsX", "uTurbRmsY", "uTurbRmsZ"
+            }
+        )
+        {
+            writeTabbed(os, column);
+        }
+        os  << endl;
+    }
+    OFstream& os = dispersionFile_();
+    writeCurrentTime(os);
+    const scalar n = max(sums[0], scalar(1));
+    const scalar points = max(sums[7], scalar(1));
+    os  << tab << label(sums[0]);
+    for (int d = 0; d < 3; ++d)
+    {
+        os  << tab << sums[1 + d]/n;
+    }
+    for (int d = 0; d < 3; ++d)
+    {
+        const scalar mean = sums[1 + d]/n;
+        os  << tab << std::sqrt(max(sums[4 + d]/n - mean*mean, scalar(0)));
+    }
+    for (int d = 0; d < 3; ++d)
+    {
+        os  << tab << std::sqrt(sums[8 + d]/points);
+    }
+    os  << endl;
+}
+
+
+// ************************************************************************* //
