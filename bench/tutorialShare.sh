@@ -27,6 +27,8 @@ done
 # shellcheck disable=SC1091
 . "$root/bin/functions.sh"
 loadFoamEnvironment
+# the tutorial's Allrun takes this project's tools, whatever ./Allwmake installed last
+export DROPLETFIBER_DIR="$root"
 tutorial="$root/tutorials/channelSpray"
 if ! grep -q "dropletFiberCollision" "$tutorial/system/controlDict"; then
     echo "tutorialShare: $tutorial/system/controlDict has no dropletFiberCollision function object" >&2

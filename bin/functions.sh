@@ -7,9 +7,9 @@
 #   run CMD...             print the command, then run it
 #   haveFoamEnvironment    true when an OpenFOAM environment is loaded
 #   foamKitDir             where installPrerequisites keeps the OpenFOAM kit
-#   loadFoamEnvironment    use the loaded OpenFOAM, else source the kit's bashrc;
-#                          exports DROPLETFIBER_DIR (this project), where the case
-#                          scripts find bin/checkFunctionObjectRan and bin/dropletFiberReport
+#   loadFoamEnvironment    use the loaded OpenFOAM, else source the kit's bashrc
+#   installUserTools DIR   copy the user-facing tools into DIR (Allwmake: $FOAM_USER_APPBIN)
+#   removeUserTools DIR    remove them from DIR (Allclean)
 #------------------------------------------------------------------------------
 
 info() { printf '[dropletFiber] %s\n' "$*"; }
@@ -27,10 +27,6 @@ foamKitDir() {
 loadFoamEnvironment() {
     # OpenFOAM derives user paths from $USER, which batch shells may not set
     export USER="${USER:-$(id -un)}"
-    # The tutorial's Allrun, run from a copy, checks its run with this project's
-    # bin/checkFunctionObjectRan
-    DROPLETFIBER_DIR="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-    export DROPLETFIBER_DIR
     if haveFoamEnvironment; then
         return 0
     fi
@@ -51,4 +47,42 @@ loadFoamEnvironment() {
         export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
     fi
     haveFoamEnvironment || die "sourcing $kit/etc/bashrc did not give a working wmake"
+}
+
+# The user-facing tools, installed like OpenFOAM's own utilities: ./Allwmake copies
+# them into $FOAM_USER_APPBIN (on PATH once OpenFOAM's environment is loaded), beside
+# reconstructDropletFiberState, so that a tutorial copied anywhere finds them on
+# PATH (its Allrun and <tutorial>.paraview.py; DROPLETFIBER_DIR=<project> takes the
+# project's bin/ instead). The report's Python modules (tools/dropletFiberReport) go
+# into DIR/dropletFiberPython, where the installed report looks for them. Copies, not
+# links: the installed tools work whatever becomes of this clone's files.
+userTools=(dropletFiberReport checkFunctionObjectRan dropletFiberParaView.py)
+userToolsModules=dropletFiberPython
+
+installUserTools() {
+    local dest="$1" src tool
+    src="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+    mkdir -p "$dest"
+    # the modules first (the report needs them), replaced as a whole: a module
+    # removed from the project does not stay behind
+    rm -rf "$dest/.$userToolsModules.new"
+    mkdir "$dest/.$userToolsModules.new"
+    cp "$src"/tools/dropletFiberReport/*.py "$dest/.$userToolsModules.new/"
+    rm -rf "$dest/$userToolsModules"
+    mv "$dest/.$userToolsModules.new" "$dest/$userToolsModules"
+    for tool in "${userTools[@]}"; do
+        # install(1) replaces the file (a new inode): a copy running meanwhile goes on
+        case "$tool" in
+            *.py) install -m 644 "$src/bin/$tool" "$dest/$tool" ;;  # a ParaView script, not a command
+            *)    install -m 755 "$src/bin/$tool" "$dest/$tool" ;;
+        esac
+    done
+}
+
+removeUserTools() {
+    local dest="$1" tool
+    for tool in "${userTools[@]}"; do
+        rm -f "$dest/$tool"
+    done
+    rm -rf "${dest:?}/$userToolsModules" "${dest:?}/.$userToolsModules.new"
 }

@@ -16,14 +16,15 @@
 # the separable weights ran in AVX2: the case's own work dominated.)
 # Usage: checkDepositReport.sh CASE_DIR WORK_DIR
 set -uo pipefail
+here="$(cd "${0%/*}" && pwd)"
 # shellcheck disable=SC1091
-. "$(cd "${0%/*}" && pwd)/lib/prepareCase.sh"
+. "$here/lib/prepareCase.sh"
 prepareCaseCopy "$1" "$2"
 cp system/controlDict system/controlDict.narrow
 cp constant/kinematicCloudProperties constant/kinematicCloudProperties.narrow
 
 pimpleFoam > log.narrow 2>&1 || { echo "FAILED: narrow run"; tail log.narrow; exit 1; }
-"$DROPLETFIBER_DIR/bin/checkFunctionObjectRan" log.narrow || exit 1
+"$here/../../bin/checkFunctionObjectRan" log.narrow || exit 1
 check '! grep -q "deposit of the parcels takes" log.narrow' \
     "narrow parcels: the deposit warning appeared"
 check 'grep -q "% of the wall time over" log.narrow' \

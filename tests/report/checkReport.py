@@ -238,10 +238,26 @@ def binder_panel_shows_both_modes(path):
     check(len(lines) == 4, "no other lines (got %s)" % sorted(lines))
 
 
-def missing(run, work):
-    """No case, a case that never ran (the tutorial's own folder), a wrong -name: exit
-    2 with a message naming what is missing, no traceback."""
+def never_run(work):
+    """A case that never ran: the tutorial's set-up copied without what a run of it in
+    its own folder may have left (time folders, postProcessing, processor folders,
+    logs): the test does not depend on whether the tutorial's folder has run."""
     tutorial = os.path.join(ROOT, "tutorials", "channelSpray")
+
+    def outputs(folder, names):
+        if os.path.abspath(folder) != tutorial:
+            return []
+        return [n for n in names if n == "postProcessing" or n.startswith(("processor", "log."))
+                or re.match(r"^[0-9.e+-]+$", n)]
+    case = os.path.join(work, "neverRun")
+    shutil.copytree(tutorial, case, ignore=outputs)
+    return case
+
+
+def missing(run, work):
+    """No case, a case that never ran (a copy of the tutorial's set-up), a wrong -name:
+    exit 2 with a message naming what is missing, no traceback."""
+    tutorial = never_run(work)
     for case, options, expected in ((os.path.join(work, "nowhere"), (), "no case folder"),
                                     (tutorial, (), "dropletFiber.dat"),
                                     (run, ("-name", "other"), "no postProcessing/other/")):
@@ -252,29 +268,74 @@ def missing(run, work):
         check(not os.path.exists(prefix + ".png"), "no PNG")
 
 
-def paraview(run, work):
-    """bin/dropletFiberParaView.py against a stand-in of paraview.simple that records
-    what it is asked to open: the serial run, and the 2-rank run (PARALLEL_RUN) without
-    its reconstructed times."""
-    calls = []
+class _StandIn(types.SimpleNamespace):
+    """A proxy of the stand-in of paraview.simple: methods not listed do nothing; a
+    data information of a one-cell-thick channel (a 2D case)."""
 
-    class Proxy(types.SimpleNamespace):
-        def __getattr__(self, name):
-            return lambda *a, **k: None
+    def __getattr__(self, name):
+        return lambda *a, **k: None
 
+    def ApplyPreset(self, preset, rescale):
+        self.preset = preset
+
+    def GetDataInformation(self):
+        return types.SimpleNamespace(GetBounds=lambda: (0, 0.05, 0, 0.15, 0, 0.01),
+                                     GetExtent=lambda: (0, 50, 0, 150, 0, 0))
+
+
+def paraview_stand_in(calls):
+    """A stand-in of paraview.simple (in sys.modules) recording every call in calls."""
     def recorder(name):
         def call(*args, **kwargs):
-            proxy = Proxy(name=name)
+            proxy = _StandIn(name=name, RGBPoints=[0.0, 0, 0, 0, 1.0, 1, 1, 1], TimestepValues=[0.04])
             calls.append((name, args, kwargs, proxy))
             return proxy
         return call
 
     simple = types.ModuleType("paraview.simple")
     for name in ("ColorBy", "GetActiveViewOrCreate", "GetAnimationScene", "GetColorTransferFunction",
-                 "OpenDataFile", "OpenFOAMReader", "Render", "RenameSource", "Show"):
+                 "GetOpacityTransferFunction", "GetScalarBar", "GetTimeKeeper", "OpenDataFile", "OpenFOAMReader",
+                 "Render", "RenameSource", "SaveScreenshot", "Show", "Slice"):
         setattr(simple, name, recorder(name))
     sys.modules["paraview"] = types.ModuleType("paraview")
     sys.modules["paraview.simple"] = simple
+
+
+def run_script(script, cwd, argv, env=None, **given):
+    """Runs a ParaView script as ParaView would (argv: [''] for the GUI's --script), in
+    cwd, with the environment variables env set; given: its globals. Returns the
+    SystemExit it raised, or None."""
+    here, old_argv, old_env = os.getcwd(), sys.argv, dict(os.environ)
+    os.chdir(cwd)
+    sys.argv = argv
+    for name, value in (env or {}).items():
+        if value is None:
+            os.environ.pop(name, None)
+        else:
+            os.environ[name] = value
+    try:
+        exec(compile(open(script).read(), script, "exec"), {"__name__": "__main__", **given})
+        return None
+    except SystemExit as stop:
+        return stop
+    finally:
+        os.chdir(here)
+        sys.argv = old_argv
+        os.environ.clear()
+        os.environ.update(old_env)
+
+
+def paraview(run, work):
+    """bin/dropletFiberParaView.py against a stand-in of paraview.simple that records
+    what it is asked to open and how it colours it, run as ParaView's GUI runs it
+    (--script: no arguments, the case the current folder, no screenshot): the serial
+    run, and the 2-rank run (PARALLEL_RUN) without its reconstructed times (its series
+    list .pvti and .pvtp files: opened as file series). Then the tutorial's own
+    channelSpray.paraview.py in a copy of the run: it finds the project's script on
+    PATH (as ./Allwmake installs it) or in DROPLETFIBER_DIR/bin, and says what to do
+    when neither has it; it shows its own folder, from any current folder."""
+    calls = []
+    paraview_stand_in(calls)
     script = os.path.join(ROOT, "bin", "dropletFiberParaView.py")
     for label, decompose in (("reconstructed", False), ("decomposed", True)):
         case = copy_case(sys.argv[4] if decompose else run, os.path.join(work, label))
@@ -283,24 +344,62 @@ def paraview(run, work):
                 if re.match(r"^[0-9.]+$", entry) and float(entry) > 0:
                     shutil.rmtree(os.path.join(case, entry))
         del calls[:]
-        here = os.getcwd()
-        os.chdir(case)
-        exec(compile(open(script).read(), script, "exec"), {"__name__": "__main__"})
-        os.chdir(here)
-        opened = [os.path.relpath(c[1][0], case) for c in calls if c[0] == "OpenDataFile"]
+        stop = run_script(script, case, [""])
+        check(stop is None, "%s: runs through (%s)" % (label, stop))
+        out = os.path.join(case, "postProcessing", "dropletFiber", "0")
+        series = {name: [e["name"] for e in json.load(open(os.path.join(out, name)))["files"]]
+                  for name in ("fibers.vtp.series", "grid.vti.series")}
+        opened = sorted(c[1][0] if isinstance(c[1][0], str) else tuple(c[1][0])
+                        for c in calls if c[0] == "OpenDataFile")
+        if decompose:
+            expected = sorted(tuple(os.path.join(out, f) for f in files) for files in series.values())
+            check(all(f.endswith((".pvtp", ".pvti")) for files in series.values() for f in files),
+                  "decomposed: the series list .pvtp and .pvti files")
+        else:
+            expected = sorted(os.path.join(out, name) for name in series)
+        check(opened == expected, "%s: opens the grid and the fibers (%s)" % (label, opened))
         readers = [c[2]["FileName"] for c in calls if c[0] == "OpenFOAMReader"]
         settings = [(c[3].CaseType, c[3].MeshRegions) for c in calls if c[0] == "OpenFOAMReader"]
         case_type = "Decomposed Case" if decompose else "Reconstructed Case"
         check(settings == [(case_type, ["internalMesh"]), (case_type, ["lagrangian/kinematicCloud"])],
               "%s: the OpenFOAM reader as %s, the mesh and the cloud (%s)" % (label, case_type, settings))
-        check(sorted(opened) == ["postProcessing/dropletFiber/0/fibers.vtp.series",
-                                 "postProcessing/dropletFiber/0/grid.vti.series"],
-              "%s: opens the grid and fibers series (%s)" % (label, opened))
         check(len(readers) == 2 and os.path.isfile(readers[0]), "%s: the air and the cloud through %s"
               % (label, readers[0] if readers else None))
-        colours = [c[1][1][1] for c in calls if c[0] == "ColorBy"]
+        coloured = [c for c in calls if c[0] == "ColorBy"]
+        colours = [c[1][1][1] for c in coloured]
         check(colours == ["U", "d", "rho", "sigma"], "%s: coloured by U, d, rho, sigma (%s)" % (label, colours))
-    print("(the stand-in checks the script's choices, not ParaView's own reading of the files)")
+        check(all(c[1][2:] == (True,) for c in coloured), "%s: each with a colour map of its own" % label)
+        maps = [c for c in calls if c[0] == "GetColorTransferFunction"]
+        check(all(c[2].get("separate") for c in maps) and len({id(c[1][1]) for c in maps}) == 4,
+              "%s: four separate colour maps, one per display" % label)
+        presets = [getattr(c[3], "preset", None) for c in maps]
+        check(len(set(presets)) == 4 and None not in presets, "%s: four different presets (%s)" % (label, presets))
+        check(not [c for c in calls if c[0] == "SaveScreenshot"], "%s: no screenshot in the GUI" % label)
+
+    # The tutorial's script in a copy of the run, run from another folder as pvbatch
+    # runs it (its __file__ given)
+    case = copy_case(run, os.path.join(work, "tutorialCopy"))
+    shutil.copy(os.path.join(ROOT, "tutorials", "channelSpray", "channelSpray.paraview.py"), case)
+    tutorial_script = os.path.join(case, "channelSpray.paraview.py")
+    installed = os.path.join(work, "installed")
+    os.makedirs(installed)
+    shutil.copy(script, installed)
+    elsewhere = os.path.join(work, "elsewhere")
+    os.makedirs(elsewhere)
+    for label, env in (("on PATH", {"PATH": installed + os.pathsep + "/usr/bin:/bin", "DROPLETFIBER_DIR": None}),
+                       ("DROPLETFIBER_DIR", {"PATH": "/usr/bin:/bin", "DROPLETFIBER_DIR": ROOT})):
+        del calls[:]
+        stop = run_script(tutorial_script, elsewhere, [tutorial_script], env, __file__=tutorial_script)
+        readers = [c[2]["FileName"] for c in calls if c[0] == "OpenFOAMReader"]
+        check(stop is None and len(readers) == 2 and os.path.dirname(readers[0]) == case,
+              "the tutorial's script, dropletFiberParaView.py %s: shows the copy's case from another folder (%s)"
+              % (label, readers[0] if readers else stop))
+    stop = run_script(tutorial_script, case, [""], {"PATH": "/usr/bin:/bin", "DROPLETFIBER_DIR": None,
+                                                     "FOAM_USER_APPBIN": None})
+    check(stop is not None and "dropletFiberParaView.py not found" in str(stop) and "Allwmake" in str(stop),
+          "the tutorial's script without the project's script on PATH: says what to do (%s)" % stop)
+    print("(the stand-in checks the script's choices, not ParaView's own reading of the files:"
+          " report.paraView.* runs it in ParaView)")
 
 
 def three_d(run, work):

@@ -3,11 +3,15 @@
 # (sourced, not run). Sourcing loads OpenFOAM and sets root (the project), PY
 # (python3) and bin/functions.sh's info and die.
 #
-# runTutorialCopy TUTORIAL WORK_DIR [ALLRUN_OPTION...]: copy tutorials/TUTORIAL to
-#   WORK_DIR (replacing it), clean it and run its Allrun with the options
-#   (log.Allrun, printed after); stops with the logs' tails when Allrun fails, and
-#   when the run went on without the function object (OpenFOAM runs on, exit 0,
-#   without a function object whose library it cannot load)
+# runTutorialCopy TUTORIAL WORK_DIR [ALLRUN_OPTION...]: runs tutorials/TUTORIAL as a
+#   user who copied it would: copied (and cleaned) into a new folder outside the
+#   project, its Allrun run there with the options, with neither DROPLETFIBER_DIR nor
+#   USER set, so that it finds the project's tools on PATH, where ./Allwmake installed
+#   them ($FOAM_USER_APPBIN); the finished case is then moved to WORK_DIR (replacing
+#   it; its log.Allrun printed). Stops with the logs' tails when Allrun fails, when the
+#   tools it used are not the installed ones, and when the run went on without the
+#   function object (OpenFOAM runs on, exit 0, without a function object whose library
+#   it cannot load)
 # compareWithReference TABLE REFERENCE [--update]: --update stores TABLE as
 #   REFERENCE and exits 0; otherwise every column of TABLE must equal REFERENCE's
 #   to 1e-6 of its scale (the runs are deterministic, so more is a change of
@@ -21,15 +25,25 @@ loadFoamEnvironment
 PY=/usr/bin/python3; [ -x "$PY" ] || PY=python3
 
 runTutorialCopy() {
-    local tutorial="$1" work="$2"
+    local tutorial="$1" work="$2" scratch copy tool
     shift 2
-    rm -rf "$work"; mkdir -p "$(dirname "$work")"
-    cp -r "$root/tutorials/$tutorial" "$work"
-    (cd "$work" && ./Allclean > /dev/null)
-    if ! (cd "$work" && DROPLETFIBER_DIR="$root" ./Allrun "$@" > log.Allrun 2>&1); then
-        tail -n 30 "$work"/log.* ; die "Allrun $* failed"
+    for tool in checkFunctionObjectRan dropletFiberReport; do
+        [ "$(command -v "$tool")" = "$FOAM_USER_APPBIN/$tool" ] \
+            || die "$tool on PATH is '$(command -v "$tool")', not the one ./Allwmake installs in $FOAM_USER_APPBIN: run ./Allwmake"
+    done
+    scratch="$(mktemp -d "${TMPDIR:-/tmp}/dropletFiber-$tutorial.XXXXXX")"
+    copy="$scratch/$tutorial"
+    cp -r "$root/tutorials/$tutorial" "$copy"
+    (cd "$copy" && ./Allclean > /dev/null)
+    if ! (cd "$copy" && env -u DROPLETFIBER_DIR -u USER ./Allrun "$@" > log.Allrun 2>&1); then
+        tail -n 30 "$copy"/log.*; rm -rf "$scratch"; die "Allrun $* failed in a copy of tutorials/$tutorial"
     fi
+    rm -rf "$work"; mkdir -p "$(dirname "$work")"
+    mv "$copy" "$work"
+    rm -rf "$scratch"
     cat "$work/log.Allrun"
+    grep -q -x "dropletFiber tools: $FOAM_USER_APPBIN/checkFunctionObjectRan, $FOAM_USER_APPBIN/dropletFiberReport" \
+        "$work/log.Allrun" || die "the copy's Allrun did not use the tools installed in $FOAM_USER_APPBIN"
     "$root/bin/checkFunctionObjectRan" "$work" \
         || die "the run of $work went on without the function object"
 }
