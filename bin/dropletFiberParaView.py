@@ -115,7 +115,8 @@ def clouds():
 
 def open_series(series):
     """A function object's .series file; when its entries are in another format than
-    its name says (a parallel run's grid_<t>.pvti and fibers_<t>.pvtp are listed in
+    its name says (parallel runs written before their indices were named
+    grid.pvti.series and fibers.pvtp.series listed their .pvti and .pvtp files in
     grid.vti.series and fibers.vtp.series), ParaView finds no reader for it: then its
     entries are opened as a file series (their times from their TimeValue)."""
     entries = json.load(open(series))["files"]

@@ -16,7 +16,9 @@ check "grep -q \"cloud 'kinematicCloud' (type Cloud<basicKinematicCollidingParce
 check "[ \"\$(grep -c \"cloud 'kinematicCloud' (type\" '$log')\" = 1 ]" "the cloud's route is logged more than once"
 check "grep -q -P '^# Time.*\\twallTimeDeposition *\\twallTimeCollision *\\twallTimeFibers *$' '$out/dropletFiber.dat'" \
     "the table's last columns are not wallTimeDeposition, wallTimeCollision, wallTimeFibers"
-for series in fibers.vtp.series grid.vti.series; do
+# a parallel run's series are named by the pieces' index they list (ParaView's reader)
+p=""; [ "$mode" = parallel ] && p=p
+for series in fibers.${p}vtp.series grid.${p}vti.series; do
     check "[ \"\$(grep -o '\"time\" : [^ ]*' '$out/$series' | tr '\n' ' ')\" = '\"time\" : 0.1 \"time\" : 0.2 ' ]" \
         "$series: the times are not the folders' names 0.1 and 0.2: $(grep -o '"time" : [^ ]*' "$out/$series" | tr '\n' ' ')"
 done

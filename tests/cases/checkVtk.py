@@ -30,6 +30,14 @@ from checks import check, finish  # noqa: E402
 case = sys.argv[1]
 name = sys.argv[2] if len(sys.argv) > 2 else "dropletFiber"
 out = os.path.join(case, "postProcessing", name, "0")
+parallel = os.path.isdir(os.path.join(case, "processor0"))
+
+
+def series_file(kind, ext):
+    """kind's ParaView series index: a parallel run's is named by the pieces' index it
+    lists (fibers.pvtp.series, grid.pvti.series), so that ParaView picks the reader that
+    opens them"""
+    return os.path.join(out, "%s.%s%s.series" % (kind, "p" if parallel else "", ext))
 
 
 
@@ -103,7 +111,7 @@ def joined(pieces):
 
 
 for kind, ext in (("fibers", "vtp"), ("grid", "vti")):
-    series = json.load(open(os.path.join(out, "%s.%s.series" % (kind, ext))))
+    series = json.load(open(series_file(kind, ext)))
     files = series["files"]
     check(len(files) > 0, "%s series lists %d files" % (kind, len(files)))
     for f in files:
@@ -112,7 +120,7 @@ for kind, ext in (("fibers", "vtp"), ("grid", "vti")):
     check(times == sorted(set(times)), "%s series times increase" % kind)
 
 # Fibers
-series = json.load(open(os.path.join(out, "fibers.vtp.series")))
+series = json.load(open(series_file("fibers", "vtp")))
 last = series["files"][-1]
 points, conn, pdata, cdata, n_lines = joined(fibers_of(os.path.join(out, last["name"])))
 n_points = len(points)
@@ -137,7 +145,7 @@ check(abs(integral - row["fiberMass"]) <= 1e-6 * row["fiberMass"],
       "integral of sigma %.10g kg = fiber mass in the table %.10g kg" % (integral, row["fiberMass"]))
 
 # Grid
-series = json.load(open(os.path.join(out, "grid.vti.series")))
+series = json.load(open(series_file("grid", "vti")))
 last_grid = os.path.join(out, series["files"][-1]["name"])
 FIELDS = (("rho", 1), ("rMeanNumber", 1), ("rMeanMass", 1), ("U", 3))
 

@@ -168,7 +168,7 @@ def decomposed(run, work):
     check(done.returncode == 0, "exit 0 (got %d)" % done.returncode)
     check("decomposed, 2 processors, not reconstructed" in text, "the report says decomposed, not reconstructed")
     out = os.path.join(case, "postProcessing", "dropletFiber", "0")
-    last = json.load(open(os.path.join(out, "fibers.vtp.series")))["files"][-1]["name"]
+    last = json.load(open(os.path.join(out, "fibers.pvtp.series")))["files"][-1]["name"]
     check(last.endswith(".pvtp"), "the fibers are in pieces (%s)" % last)
     check_values(text, table(os.path.join(out, "dropletFiber.dat")), os.path.join(case, "log.pimpleFoam"),
                  os.path.join(out, last))
@@ -347,16 +347,17 @@ def paraview(run, work):
         stop = run_script(script, case, [""])
         check(stop is None, "%s: runs through (%s)" % (label, stop))
         out = os.path.join(case, "postProcessing", "dropletFiber", "0")
+        names = ("fibers.pvtp.series", "grid.pvti.series") if decompose \
+            else ("fibers.vtp.series", "grid.vti.series")
         series = {name: [e["name"] for e in json.load(open(os.path.join(out, name)))["files"]]
-                  for name in ("fibers.vtp.series", "grid.vti.series")}
+                  for name in names}
         opened = sorted(c[1][0] if isinstance(c[1][0], str) else tuple(c[1][0])
                         for c in calls if c[0] == "OpenDataFile")
         if decompose:
-            expected = sorted(tuple(os.path.join(out, f) for f in files) for files in series.values())
             check(all(f.endswith((".pvtp", ".pvti")) for files in series.values() for f in files),
                   "decomposed: the series list .pvtp and .pvti files")
-        else:
-            expected = sorted(os.path.join(out, name) for name in series)
+        # the series opened as they are (a parallel run's named by the pieces' index)
+        expected = sorted(os.path.join(out, name) for name in series)
         check(opened == expected, "%s: opens the grid and the fibers (%s)" % (label, opened))
         readers = [c[2]["FileName"] for c in calls if c[0] == "OpenFOAMReader"]
         settings = [(c[3].CaseType, c[3].MeshRegions) for c in calls if c[0] == "OpenFOAMReader"]

@@ -30,6 +30,33 @@ Foam::dictionary tableFileDict(const Foam::dictionary& dict)
     return fileDict;
 }
 
+
+//- The ParaView series index of stem's files in dir: ParaView picks the
+//  reader of a series by the extension before ".series", so a parallel
+//  run's index, which lists the pieces' indices (.pvtp, .pvti), is named by
+//  them. One of a parallel run written before (named .vtp, .vti) is renamed
+//  so that a restart continues it (the master's: only it writes the index)
+Foam::fileName seriesPath
+(
+    const Foam::fileName& dir,
+    const Foam::word& stem,
+    const Foam::word& extension
+)
+{
+    using namespace Foam;
+    if (!Pstream::parRun())
+    {
+        return dir/stem + "." + extension + ".series";
+    }
+    const fileName path = dir/stem + ".p" + extension + ".series";
+    const fileName earlier = dir/stem + "." + extension + ".series";
+    if (Pstream::master() && !isFile(path) && isFile(earlier))
+    {
+        mv(earlier, path);
+    }
+    return path;
+}
+
 } // End anonymous namespace
 
 
@@ -68,8 +95,14 @@ void Foam::dropletFiber::couplingOutput::startVtk(const dictionary& dict)
     {
         mkDir(vtkDir);
     }
-    fibersSeries_.reset(new ::dropletFiber::SeriesFile(vtkDir/"fibers.vtp.series"));
-    gridSeries_.reset(new ::dropletFiber::SeriesFile(vtkDir/"grid.vti.series"));
+    fibersSeries_.reset
+    (
+        new ::dropletFiber::SeriesFile(seriesPath(vtkDir, "fibers", "vtp"))
+    );
+    gridSeries_.reset
+    (
+        new ::dropletFiber::SeriesFile(seriesPath(vtkDir, "grid", "vti"))
+    );
     checkedCoreCall
     (
         dict,
