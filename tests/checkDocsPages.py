@@ -14,27 +14,20 @@ Usage: checkDocsPages.py readmeSize|links|layout <project dir>
        checkDocsPages.py --self-test   (each check catches what it is for)
 Prints file:line and what is wrong for each violation; exits 1 if there is any.
 """
-import glob
 import os
 import re
 import sys
 import tempfile
 
+# The pages the docs style check reads, and its fence pattern
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from checkDocsStyle import FENCE, checked_files as pages  # noqa: E402
+
 README_LIMIT = 10 * 1024  # bytes of README.md
 LAYOUT_PAGE = os.path.join("docs", "development.md")
 
 LINK = re.compile(r"!?\[[^\]]*\]\(\s*<?([^)\s>]+)>?(?:\s+\"[^\"]*\")?\s*\)")
-FENCE = re.compile(r"^ {0,3}(```|~~~)")
 HEADING = re.compile(r"^ {0,3}#{1,6}\s+(.*?)\s*#*\s*$")
-
-
-def pages(project):
-    names = ["README.md"] + sorted(glob.glob(os.path.join(project, "docs", "*.md")))
-    names += sorted(glob.glob(os.path.join(project, "tutorials", "*", "README.md")))
-    for name in names:
-        path = os.path.join(project, name)
-        if os.path.isfile(path):
-            yield path
 
 
 def outside_code(text):

@@ -74,7 +74,6 @@ Foam::functionObjects::dropletFiberCollision::dropletFiberCollision
 )
 :
     fvMeshFunctionObject(name, runTime, dict),
-    dict_(dict),
     lastTimeIndex_(-1),
     output_(*this, mesh_, dict),
     spray_(*this, mesh_),
@@ -224,7 +223,6 @@ bool Foam::functionObjects::dropletFiberCollision::read(const dictionary& dict)
     const dropletFiber::gridSettings grid =
         dropletFiber::readGridSettings(dict.subOrEmptyDict("grid"), mesh_);
     motion_.read(dict);
-    dict_ = dict;
     if (running)
     {
         grid_.checkUnchanged(grid, dict.subOrEmptyDict("grid"));
@@ -291,7 +289,7 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
     reportStep(step);
     if (time_.writeTime())
     {
-        writeAtWriteTime();
+        writeAtWriteTime(step);
     }
     return true;
 }

@@ -42,7 +42,10 @@ void Foam::functionObjects::dropletFiberCollision::reportStep
 }
 
 
-void Foam::functionObjects::dropletFiberCollision::writeAtWriteTime()
+void Foam::functionObjects::dropletFiberCollision::writeAtWriteTime
+(
+    const dropletFiber::stepRow& step
+)
 {
     coreCall
     (
@@ -54,10 +57,11 @@ void Foam::functionObjects::dropletFiberCollision::writeAtWriteTime()
         population_.binderSums(),
         dropletFiber::collisionModeName(capture_.options().mode)
     );
+    // The fibers' mass summed for the step's row: nothing moved since
     output_.reportConservation
     (
         grid_.totals(), population_.totals(), capture_.captured(),
-        population_.mass()
+        step.fiberMass
     );
     capture_.reportBinderBalance();
     statistics_.reportBalance(Info, type() + " " + name(), time_.timeName());
