@@ -132,32 +132,38 @@ void CaptureLimit::clear()
     forgetTakenBricks();
 }
 
-void CaptureLimit::addDemand(const SampleCapture& sample)
+void CaptureLimit::addDemand(const SampleCapture& sample, double interceptors)
 {
     for (int c = 0; c < sample.count; ++c)
     {
-        addDemand(sample.node[static_cast<std::size_t>(c)], sample.mass[static_cast<std::size_t>(c)]);
+        addDemand(sample.node[static_cast<std::size_t>(c)], sample.mass[static_cast<std::size_t>(c)],
+                  interceptors);
     }
 }
 
-void CaptureLimit::addDemand(const SegmentCapture& segment)
+void CaptureLimit::addDemand(const SegmentCapture& segment, double interceptors)
 {
     for (const SampleCapture& sample : segment.samples)
     {
-        addDemand(sample);
+        addDemand(sample, interceptors);
     }
 }
 
-void CaptureLimit::addDemand(std::size_t node, double mass)
+void CaptureLimit::addDemand(std::size_t node, double mass, double interceptors)
 {
     if (!(mass >= 0.0))
     {
         throw std::invalid_argument("CaptureLimit::addDemand: mass at node " + std::to_string(node)
                                     + " must be >= 0, got " + std::to_string(mass));
     }
+    if (!(interceptors > 0.0) || !std::isfinite(interceptors))
+    {
+        throw std::invalid_argument("CaptureLimit::addDemand: interceptors at node " + std::to_string(node)
+                                    + " must be finite and > 0, got " + std::to_string(interceptors));
+    }
     NodeDemand& entry = demand_[node];
-    entry.total += mass;
-    entry.parts.push_back(mass);
+    entry.total += interceptors * mass;
+    entry.parts.emplace_back(mass, interceptors);
 }
 
 std::vector<NodeMass> CaptureLimit::takeForeignDemand(const DensityGrid& grid)
@@ -171,9 +177,9 @@ std::vector<NodeMass> CaptureLimit::takeForeignDemand(const DensityGrid& grid)
             continue;
         }
         // Each interceptor apart (P13 multiplies their survivals), in the order added
-        for (const double mass : entry->second.parts)
+        for (const auto& [mass, interceptors] : entry->second.parts)
         {
-            foreign.push_back(NodeMass{entry->first, mass});
+            foreign.push_back(NodeMass{entry->first, mass, interceptors});
         }
         entry = demand_.erase(entry);
     }
@@ -182,16 +188,17 @@ std::vector<NodeMass> CaptureLimit::takeForeignDemand(const DensityGrid& grid)
     return foreign;
 }
 
-double CaptureLimit::depthOf(const std::vector<double>& parts, double supply)
+double CaptureLimit::depthOf(const std::vector<std::pair<double, double>>& parts, double supply)
 {
     double logSurvival = 0.0;
-    for (const double part : parts)
+    for (const auto& [part, interceptors] : parts)
     {
         if (part >= supply)
         {
             return std::numeric_limits<double>::infinity(); // one interceptor takes all
         }
-        logSurvival += std::log1p(-part / supply);
+        // N physical fibers asking the same part independently: (1 - part / s_n)^N (P40)
+        logSurvival += interceptors * std::log1p(-part / supply);
     }
     return -logSurvival;
 }
@@ -203,9 +210,9 @@ void CaptureLimit::sortParts(NodeDemand& entry)
     // order, their sum and product are the same bits on every run
     std::sort(entry.parts.begin(), entry.parts.end());
     entry.total = 0.0;
-    for (const double part : entry.parts)
+    for (const auto& [part, interceptors] : entry.parts)
     {
-        entry.total += part;
+        entry.total += interceptors * part;
     }
 }
 

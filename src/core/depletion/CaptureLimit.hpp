@@ -84,11 +84,13 @@ struct SegmentCapture
     std::vector<SampleCapture> samples; // those inside the grid with rho > 0
 };
 
-// Per node mass (demand sent to a node's owner).
+// Per node mass (demand sent to a node's owner): one interceptor's part, asked by
+// `interceptors` physical fibers at that place (a computed fiber's weight).
 struct NodeMass
 {
     std::size_t node = 0;
     double mass = 0.0;
+    double interceptors = 1.0;
 };
 
 // What limit() found on a block; sums add up across blocks.
@@ -154,9 +156,12 @@ public:
     void clear();
 
     // --- 1. demand (any node; a block sends the foreign part to the owners) -----------------
-    void addDemand(const SampleCapture& sample);
-    void addDemand(const SegmentCapture& segment);
-    void addDemand(std::size_t node, double mass);
+    // interceptors: the physical fibers the sample's fiber stands for (N, weighted fibers,
+    // docs/model.md sec. 9), each asking the sample's mass independently: the node's demand
+    // grows by N times it and its survival by the factor (1 - d_sn / s_n)^N (P40).
+    void addDemand(const SampleCapture& sample, double interceptors = 1.0);
+    void addDemand(const SegmentCapture& segment, double interceptors = 1.0);
+    void addDemand(std::size_t node, double mass, double interceptors = 1.0);
     // The demand at nodes the grid does not own, moved out, in node order: each addDemand
     // call's part apart (the owner multiplies their survivals, P13), in the order added.
     std::vector<NodeMass> takeForeignDemand(const DensityGrid& grid);
@@ -248,18 +253,19 @@ private:
             + bricks_[0] * (static_cast<std::size_t>(j) + bricks_[1] * static_cast<std::size_t>(k));
     }
 
-    // Per node: the demand d_n and its parts d_sn, one per interceptor (addDemand call)
+    // Per node: the demand d_n and its parts d_sn, one per addDemand call, each with the
+    // physical fibers asking it (mass, interceptors)
     struct NodeDemand
     {
         double total = 0.0;
-        std::vector<double> parts;
+        std::vector<std::pair<double, double>> parts;
     };
     // The parts in value order and their total (the same bits whatever the order added).
     static void sortParts(NodeDemand& entry);
     // removed_ from removedTerms_ (remove()'s r_pn), summed per node in value order.
     void sumRemovedTerms();
-    // x_n = -ln prod (1 - d_sn / s_n) (P13); infinity where a part is >= s_n
-    static double depthOf(const std::vector<double>& parts, double supply);
+    // x_n = -ln prod (1 - d_sn / s_n)^N_s (P13, P40); infinity where a part is >= s_n
+    static double depthOf(const std::vector<std::pair<double, double>>& parts, double supply);
     std::unordered_map<std::size_t, NodeDemand> demand_;
     std::unordered_map<std::size_t, double> granted_; // g_n
     std::unordered_map<std::size_t, double> depth_;   // x_n > 0, owned nodes

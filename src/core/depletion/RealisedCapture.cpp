@@ -13,7 +13,8 @@ namespace
 constexpr double allCapturedWithin = 1e-12;
 } // namespace
 
-void RealisedCapture::add(const SampleCapture& sample, double realisedOverGranted, const CaptureLimit& limit)
+void RealisedCapture::add(const SampleCapture& sample, double realisedOverGranted, const CaptureLimit& limit,
+                          double interceptors)
 {
     if (!(realisedOverGranted >= 0.0))
     {
@@ -22,7 +23,7 @@ void RealisedCapture::add(const SampleCapture& sample, double realisedOverGrante
     for (int c = 0; c < sample.count; ++c)
     {
         const auto u = static_cast<std::size_t>(c);
-        const double granted = sample.mass[u] * limit.grantedRatio(sample.node[u]);
+        const double granted = interceptors * (sample.mass[u] * limit.grantedRatio(sample.node[u]));
         nodes_[sample.node[u]].emplace_back(granted, realisedOverGranted * granted);
     }
 }
@@ -104,7 +105,8 @@ std::vector<double> realisedFractions(const CaptureLimit& limit, const ParcelRea
 RealisedRemoval realiseCapture(CaptureLimit& limit, const ParcelReaches& reaches,
                                const std::vector<double>& parcelMasses,
                                const std::vector<SampleCapture>& samples,
-                               const std::vector<double>& realisedMass)
+                               const std::vector<double>& realisedMass,
+                               const std::vector<double>& interceptors)
 {
     RealisedCapture realised;
     std::vector<double> ratio(samples.size(), 0.0);
@@ -112,7 +114,7 @@ RealisedRemoval realiseCapture(CaptureLimit& limit, const ParcelReaches& reaches
     {
         const double granted = limit.grantedMass(samples[s]);
         ratio[s] = granted > 0.0 ? realisedMass[s] / granted : 0.0;
-        realised.add(samples[s], ratio[s], limit);
+        realised.add(samples[s], ratio[s], limit, interceptors.empty() ? 1.0 : interceptors[s]);
     }
     realised.scaleRemoval(limit);
     RealisedRemoval result;

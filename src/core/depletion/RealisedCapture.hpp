@@ -35,7 +35,10 @@ public:
     void clear() { nodes_.clear(); }
     // Sample's realised over granted mass (>= 0), over its nodes' granted parts (every
     // node of sample must have a granted ratio in limit: the owned part of a sample).
-    void add(const SampleCapture& sample, double realisedOverGranted, const CaptureLimit& limit);
+    // interceptors: the physical fibers behind the sample (its demand's weight in
+    // CaptureLimit::addDemand): each realises the same hits, N times one fiber's (P41).
+    void add(const SampleCapture& sample, double realisedOverGranted, const CaptureLimit& limit,
+             double interceptors = 1.0);
     // q_n on every node a sample was added for (CaptureLimit::scaleRemoval; all samples of
     // the step must have been added, with ratio 0 for those that caught nothing).
     void scaleRemoval(CaptureLimit& limit) const;
@@ -83,9 +86,12 @@ struct RealisedRemoval
     std::vector<double> sampleMass; // realised less what the parcels could not give, kg
     int emptied = 0;                // parcels whose parts asked more than they held
 };
+// interceptors (empty: one each): the physical fibers behind each sample; realisedMass and
+// the masses given are one physical fiber's.
 RealisedRemoval realiseCapture(CaptureLimit& limit, const ParcelReaches& reaches,
                                const std::vector<double>& parcelMasses,
                                const std::vector<SampleCapture>& samples,
-                               const std::vector<double>& realisedMass);
+                               const std::vector<double>& realisedMass,
+                               const std::vector<double>& interceptors = {});
 
 } // namespace dropletFiber

@@ -8,22 +8,24 @@ namespace dropletFiber
 
 void BinderSums::add(const Fiber& fiber)
 {
+    // Each of the N physical fibers it stands for counts (N times the sums of one)
+    const double n = fiber.represents();
     const Eigen::VectorXd& lengths = fiber.restLengths();
     const Eigen::VectorXd& mass = fiber.capturedMassPerSegment();
     const Eigen::VectorXd& hits = fiber.state().segmentHits;
     const Eigen::VectorXd& expected = fiber.state().segmentExpectedMass;
     for (Eigen::Index j = 0; j < fiber.segmentCount(); ++j)
     {
-        values[0] += lengths(j);
-        values[1] += mass(j) > 0.0 ? 0.0 : lengths(j);
-        values[2] += mass(j);
-        values[3] += mass(j) * mass(j) / lengths(j);
-        values[4] += hits.size() > j ? hits(j) : 0.0;
-        values[5] += 1.0;
+        values[0] += n * lengths(j);
+        values[1] += n * (mass(j) > 0.0 ? 0.0 : lengths(j));
+        values[2] += n * mass(j);
+        values[3] += n * (mass(j) * mass(j) / lengths(j));
+        values[4] += n * (hits.size() > j ? hits(j) : 0.0);
+        values[5] += 1.0; // computed segments: the resolution, not weighted
         const double e = expected.size() > j ? expected(j) : mass(j);
-        values[6] += e > 0.0 ? 0.0 : lengths(j);
-        values[7] += e;
-        values[8] += e * e / lengths(j);
+        values[6] += n * (e > 0.0 ? 0.0 : lengths(j));
+        values[7] += n * e;
+        values[8] += n * (e * e / lengths(j));
     }
 }
 

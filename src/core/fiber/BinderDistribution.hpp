@@ -8,7 +8,9 @@
 // and the first three for the expected mode's mass on the same fibers (segmentExpectedMass:
 // the mass the samples were granted; in expected mode the captured mass itself), so that
 // both modes' distributions can be compared.
-// The sums add up over fibers and processors (BinderSums::add, then the figures once).
+// The sums add up over fibers and processors (BinderSums::add, then the figures once); a
+// computed fiber standing for N physical ones (Fiber::represents) counts N times (but its
+// segments once: their count is the computed resolution).
 #pragma once
 
 #include "fiber/Fiber.hpp"

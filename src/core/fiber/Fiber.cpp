@@ -115,6 +115,8 @@ void Fiber::validate() const
         fail("Young's modulus must be >= 0");
     if (state_.segmentCapturedMass.minCoeff() < 0.0)
         fail("negative captured mass");
+    if (!(state_.represents > 0.0) || !std::isfinite(state_.represents))
+        fail("represents (the physical fibers it stands for) must be finite and > 0");
     for (const EndCondition* end : {&state_.startEnd, &state_.endEnd})
     {
         if (end->type == EndType::clamped && std::abs(end->clampDirection.norm() - 1.0) > 1e-12)
@@ -122,6 +124,16 @@ void Fiber::validate() const
             fail("clamp direction must be a unit vector");
         }
     }
+}
+
+void Fiber::setRepresents(double n)
+{
+    if (!(n > 0.0) || !std::isfinite(n))
+    {
+        throw std::invalid_argument("Fiber: represents (the physical fibers it stands for) must be finite and > 0, got "
+                                    + std::to_string(n));
+    }
+    state_.represents = n;
 }
 
 void Fiber::setVelocities(const Eigen::Matrix3Xd& velocities)

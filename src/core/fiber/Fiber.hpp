@@ -36,6 +36,10 @@ public:
     const EndCondition& startEnd() const { return state_.startEnd; }
     const EndCondition& endEnd() const { return state_.endEnd; }
     bool immobile() const { return state_.immobile; }
+    // The physical fibers it stands for (FiberState::represents).
+    double represents() const { return state_.represents; }
+    // Throws std::invalid_argument unless n is finite and > 0.
+    void setRepresents(double n);
     double length() const { return state_.restLengths.sum(); }
 
     // Initial conditions and loads set by the user. Velocities are made consistent

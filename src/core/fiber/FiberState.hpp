@@ -27,6 +27,10 @@ struct FiberState
     EndCondition startEnd; // at point 0
     EndCondition endEnd;   // at point n-1
     bool immobile = false; // fully fixed fiber (filters, validation)
+    // The physical fibers this computed fiber stands for, N > 0 (docs/model.md sec. 9):
+    // each the same in every respect (path, shape, captured mass per length, hits); the
+    // spray loses N times what the fiber captures. The state's masses are one fiber's.
+    double represents = 1.0;
     // Turbulent velocity fluctuation u' [m/s] per point (TurbulentAir, docs/model.md
     // sec. 8): part of the state so that a restart continues the same realisation;
     // empty (0 columns) without turbulence, or before the first turbulent step.

@@ -33,6 +33,26 @@ void FiberInjectorSpec::validate() const
         fail("density", "must be > 0");
     if (!(material.youngsModulus >= 0.0))
         fail("youngsModulus", "must be >= 0");
+    if (!(represents > 0.0) || !std::isfinite(represents))
+        fail("represents", "must be finite and > 0 (the physical fibers each computed fiber stands for)");
+}
+
+double FiberInjectorSpec::massFlow() const
+{
+    return rate * represents * material.baseLineDensity() * length;
+}
+
+double representsForMassFlow(double massFlow, double rate, double length, const FiberMaterial& material)
+{
+    for (const double v : {massFlow, rate, length, material.radius, material.density})
+    {
+        if (!(v > 0.0) || !std::isfinite(v))
+        {
+            throw std::invalid_argument("representsForMassFlow: mass flow, rate, length, radius and density"
+                                        " must be finite and > 0");
+        }
+    }
+    return massFlow / (rate * material.baseLineDensity() * length);
 }
 
 FiberInjector::FiberInjector(FiberInjectorSpec spec) : spec_(std::move(spec))
@@ -85,6 +105,7 @@ std::vector<Fiber> FiberInjector::inject(double t)
         }
         Fiber fiber(x, spec_.material);
         fiber.setVelocities(spec_.velocity.replicate(1, spec_.points));
+        fiber.setRepresents(spec_.represents);
         born.push_back(std::move(fiber));
     }
     injected_ = std::max(injected_, total);

@@ -33,10 +33,21 @@ struct FiberInjectorSpec
     double startTime = 0.0;                               // [s]
     double endTime = 0.0;                                 // [s], no fiber born at or after
     FiberMaterial material;
+    // The physical fibers each computed fiber stands for (Fiber::represents), N > 0
+    double represents = 1.0;
+
+    // The glass mass flow the stream stands for [kg/s]: rate x N x one fiber's mass.
+    double massFlow() const;
 
     // Throws std::invalid_argument naming the offending entry.
     void validate() const;
 };
+
+// The N (FiberInjectorSpec::represents) that makes a stream of `rate` computed fibers per
+// second of this length and material carry the physical glass mass flow massFlow [kg/s]:
+// N = massFlow / (rate rho_F pi r_F^2 length). Throws std::invalid_argument unless every
+// input is finite and > 0.
+double representsForMassFlow(double massFlow, double rate, double length, const FiberMaterial& material);
 
 class FiberInjector
 {

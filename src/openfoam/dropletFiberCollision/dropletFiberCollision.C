@@ -106,7 +106,10 @@ Foam::functionObjects::dropletFiberCollision::dropletFiberCollision
     output_.startVtk(dict);
     restart_.startMarker([this]() { return lastTimeIndex_; });
     reportSettings();
-    output_.writeTableHeader(capture_.depletion(), spray_.liquidSpecies());
+    output_.writeTableHeader
+    (
+        capture_.depletion(), spray_.liquidSpecies(), population_.weighted()
+    );
 }
 
 
@@ -198,7 +201,8 @@ void Foam::functionObjects::dropletFiberCollision::advanceFibers
     (
         population_.fibers(), population_.boxes(), dt, capture, statistics_
     );
-    step.capturedStep = capture_.countCaptured(capture);
+    step.capturedStep =
+        capture_.countCaptured(population_.fibers(), capture);
     step.maxSegmentLengthError = report.maxSegmentLengthError;
     step.subSteps = report.subSteps;
 }

@@ -20,6 +20,11 @@ void Foam::functionObjects::dropletFiberCollision::reportStep
 {
     // Over all processors (collective: before the master's writing)
     step.fibers = population_.count();
+    step.weighted = population_.weighted();
+    if (step.weighted)
+    {
+        step.fibersRepresented = population_.represented();
+    }
     step.fiberMass = population_.mass();
     step.capturedTotal = capture_.captured();
     step.depletion = capture_.depletion();

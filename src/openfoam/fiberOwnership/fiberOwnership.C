@@ -78,6 +78,7 @@ scalarList packState(const ::dropletFiber::FiberState& s)
     appendEnd(s.startEnd, values);
     appendEnd(s.endEnd, values);
     values.append(s.immobile ? 1 : 0);
+    values.append(s.represents);
     // The turbulent fluctuation travels with its fiber (0 or n columns)
     values.append(scalar(s.turbulentVelocity.cols()));
     append(s.turbulentVelocity, values);
@@ -111,6 +112,7 @@ scalarList packState(const ::dropletFiber::FiberState& s)
     extractEnd(values, k, s.startEnd);
     extractEnd(values, k, s.endEnd);
     s.immobile = values[k++] != 0;
+    s.represents = values[k++];
     s.turbulentVelocity.resize(3, Eigen::Index(values[k++]));
     extract(values, k, s.turbulentVelocity);
     s.segmentHits.resize(n - 1);

@@ -46,11 +46,16 @@ void Foam::dropletFiber::gridBlocks::attributeDemand
             (
                 grid, corners, massShares[p], Eigen::Vector3d::Zero()
             );
-        limit.addDemand(local[p]);
+        const scalar interceptors =
+            grantInterceptors_.empty() ? 1 : grantInterceptors_[p];
+        limit.addDemand(local[p], interceptors);
         if (Pstream::parRun())
         {
-            const scalar share = massShares[p];
-            askCornerOwners(corners, points[p], p, askedFor, &share);
+            const scalar extra[2] = {massShares[p], interceptors};
+            askCornerOwners
+            (
+                corners, points[p], p, askedFor, extra, grantRequestSize_ - 3
+            );
         }
     }
 }
@@ -61,6 +66,7 @@ std::vector<double> Foam::dropletFiber::gridBlocks::grantCapture
     ::dropletFiber::DensityGrid& grid,
     const std::vector<Eigen::Vector3d>& points,
     const std::vector<double>& massShares,
+    const std::vector<double>* interceptors,
     const std::vector<::dropletFiber::Parcel>& parcels,
     const double dt,
     ::dropletFiber::CaptureLimit& limit,
@@ -71,6 +77,14 @@ std::vector<double> Foam::dropletFiber::gridBlocks::grantCapture
 {
     const auto what = parallelStatistics::traffic::gridQueries;
     limit.clear();
+    // Weighted fibers: each request carries its physical fibers too
+    grantInterceptors_.clear();
+    if (interceptors)
+    {
+        grantInterceptors_ = *interceptors;
+    }
+    grantRequestSize_ = interceptors ? 5 : 4;
+    grantRemoteInterceptors_.assign(outgoing_.size(), {});
     // Built in the members that realiseCapture (discrete hits,
     // gridBlocksHits.C) reads after: no copy, in either collision mode
     std::vector<::dropletFiber::SampleCapture>& local = grantLocal_;
@@ -91,7 +105,8 @@ std::vector<double> Foam::dropletFiber::gridBlocks::grantCapture
         forAll(requests, proci)
         {
             const List<scalar>& in = requests[proci];
-            for (label i = 0; i + 4 <= in.size(); i += 4)
+            const label size = grantRequestSize_;
+            for (label i = 0; i + size <= in.size(); i += size)
             {
                 const Eigen::Vector3d point(in[i], in[i + 1], in[i + 2]);
                 remote[proci].push_back
@@ -102,7 +117,12 @@ std::vector<double> Foam::dropletFiber::gridBlocks::grantCapture
                         in[i + 3], Eigen::Vector3d::Zero()
                     )
                 );
-                limit.addDemand(remote[proci].back());
+                const scalar interceptors = size > 4 ? in[i + 4] : 1;
+                if (size > 4)
+                {
+                    grantRemoteInterceptors_[proci].push_back(interceptors);
+                }
+                limit.addDemand(remote[proci].back(), interceptors);
             }
         }
     }
@@ -142,9 +162,13 @@ std::vector<double> Foam::dropletFiber::gridBlocks::grantedMasses
         {
             outgoing_[proci].clear();
             const List<scalar>& in = requests[proci];
+            const std::size_t size = std::size_t(grantRequestSize_);
             for (std::size_t i = 0; i < grantRemote_[proci].size(); ++i)
             {
-                const Eigen::Vector3d point(in[4*i], in[4*i + 1], in[4*i + 2]);
+                const Eigen::Vector3d point
+                (
+                    in[size*i], in[size*i + 1], in[size*i + 2]
+                );
                 const auto corners = ::dropletFiber::multilinearWeights(spec_, point);
                 std::array<double, 8> answer{};
                 grantedSlots(limit, grantRemote_[proci][i], corners, answer);

@@ -33,7 +33,11 @@ std::vector<double> Foam::dropletFiber::gridBlocks::realiseCapture
     List<List<scalar>> ratios;
     for (std::size_t p = 0; p < grantLocal_.size(); ++p)
     {
-        realised.add(grantLocal_[p], realisedOverGranted[p], limit);
+        realised.add
+        (
+            grantLocal_[p], realisedOverGranted[p], limit,
+            grantInterceptors_.empty() ? 1 : grantInterceptors_[p]
+        );
     }
     if (Pstream::parRun())
     {
@@ -52,7 +56,12 @@ std::vector<double> Foam::dropletFiber::gridBlocks::realiseCapture
         {
             for (std::size_t i = 0; i < grantRemote_[proci].size(); ++i)
             {
-                realised.add(grantRemote_[proci][i], ratios[proci][label(i)], limit);
+                const std::vector<double>& n = grantRemoteInterceptors_[proci];
+                realised.add
+                (
+                    grantRemote_[proci][i], ratios[proci][label(i)], limit,
+                    n.empty() ? 1 : n[i]
+                );
             }
         }
     }

@@ -128,6 +128,12 @@ Foam::dictionary Foam::dropletFiber::fiberStateDict
     d.add("density", s.material.density);
     d.add("youngsModulus", s.material.youngsModulus);
     d.add("immobile", s.immobile);
+    // Weighted fibers only: a state of fibers that stand for one each is
+    // that of a run without weights
+    if (s.represents != 1)
+    {
+        d.add("represents", s.represents);
+    }
     d.add("startEnd", endDict(s.startEnd));
     d.add("endEnd", endDict(s.endEnd));
     d.add("positions", toScalarList(s.positions.data(), s.positions.size()));
@@ -190,6 +196,11 @@ Foam::dictionary Foam::dropletFiber::fiberStateDict
         d, "youngsModulus", nullptr, [](scalar v) { return v >= 0; }, ">= 0"
     );
     s.immobile = d.get<bool>("immobile");
+    s.represents = getCheckedScalar
+    (
+        d, "represents", &s.represents,
+        [](scalar v) { return v > 0; }, "> 0"
+    );
     s.startEnd = endFromDict(d.subDict("startEnd"));
     s.endEnd = endFromDict(d.subDict("endEnd"));
     const label points =

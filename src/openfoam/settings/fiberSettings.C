@@ -40,11 +40,11 @@ const wordList fibersKeys
 const wordList injectorKeys
 {
     "position", "direction", "velocity", "length", "rate", "startTime",
-    "endTime", "points"
+    "endTime", "points", "represents", "massFlowRate"
 };
 
 //- The entries of a fixed fiber besides the material: read by readFixedFibers
-const wordList fixedFiberKeys{"points", "hold"};
+const wordList fixedFiberKeys{"points", "hold", "represents"};
 
 
 //- checkKeys for each sub-dictionary of fibersDict.listName
@@ -216,10 +216,40 @@ Foam::dropletFiber::readFiberInjectors(const dictionary& fibersDict)
         s.endTime = d.lookupOrDefault<scalar>("endTime", GREAT);
         s.points = getLabelInRange(d, "points", defaultPoints, 2, 100000);
         s.material = readFiberMaterial(d, &defaults);
+        s.represents = readInjectorRepresents(d, s);
         checkedCoreCall(d, [&s]() { s.validate(); });
         specs.push_back(s);
     }
     return specs;
+}
+
+
+Foam::scalar Foam::dropletFiber::readInjectorRepresents
+(
+    const dictionary& d,
+    const ::dropletFiber::FiberInjectorSpec& spec
+)
+{
+    // Either the fibers each stands for, or the glass mass flow the stream
+    // carries (the production figure), from which they follow
+    if (!d.found("massFlowRate"))
+    {
+        return getPositive(d, "represents", 1);
+    }
+    if (d.found("represents"))
+    {
+        FatalIOErrorInFunction(d)
+            << "Injector '" << spec.name.c_str() << "' has both 'represents' "
+            << d.get<scalar>("represents") << " and 'massFlowRate' "
+            << d.get<scalar>("massFlowRate") << ": give one (massFlowRate"
+            << " sets represents = massFlowRate / (rate x one fiber's mass))."
+            << exit(FatalIOError);
+    }
+    const scalar massFlowRate = getPositive(d, "massFlowRate");
+    return ::dropletFiber::representsForMassFlow
+    (
+        massFlowRate, spec.rate, spec.length, spec.material
+    );
 }
 
 
@@ -275,7 +305,9 @@ Foam::dropletFiber::readFixedFibers(const dictionary& fibersDict)
               : EndCondition::freeEnd();
             return ::dropletFiber::Fiber(x, material, start);
         };
-        fibers.push_back({e.keyword(), checkedCoreCall(d, build)});
+        ::dropletFiber::Fiber fiber = checkedCoreCall(d, build);
+        fiber.setRepresents(getPositive(d, "represents", 1));
+        fibers.push_back({e.keyword(), std::move(fiber)});
     }
     return fibers;
 }

@@ -98,3 +98,31 @@ TEST(BinderDistribution, CaptureAddsTheExpectedMass)
     EXPECT_DOUBLE_EQ(a.state().segmentCapturedMass(0), 4e-9);
     EXPECT_EQ(a.state().segmentCapturedMass(1), 0.0);
 }
+
+// A computed fiber standing for N physical ones counts as N copies of itself (its
+// segments once: the resolution): fiber A of weight 3 with fiber B of weight 1 gives the
+// figures of three A's and one B, worked out as above. L = 3 x 4 + 4 = 16 mm, bare 3 mm,
+// mass 3 x 6 + 4 = 22 ug: mean 1.375 mg/m; sum l sigma^2 = 3 x 12 + 4 = 40 mm (mg/m)^2,
+// over L 2.5, variance 2.5 - 1.890625 = 0.609375, CoV 0.780625 / 1.375 = 0.567727;
+// hits 3 x 8 + 7 = 31 over 16 mm: 1937.5 per m.
+TEST(BinderDistribution, AWeightedFiberCountsAsItsPhysicalFibers)
+{
+    Fiber a = straightFiber({1e-3, 1e-3, 2e-3});
+    a.mutableState().segmentCapturedMass << 0.0, 2e-9, 4e-9;
+    a.mutableState().segmentHits << 0.0, 3.0, 5.0;
+    a.setRepresents(3.0);
+    Fiber b = straightFiber({4e-3});
+    b.mutableState().segmentCapturedMass << 4e-9;
+    b.mutableState().segmentHits << 7.0;
+    BinderSums sums;
+    sums.add(a);
+    sums.add(b);
+    const BinderFigures f = binderFigures(sums);
+    EXPECT_NEAR(f.length, 16e-3, 1e-15);
+    EXPECT_NEAR(f.bareFraction, 3.0 / 16.0, 1e-12);
+    EXPECT_NEAR(f.meanSigma, 1.375e-6, 1e-15);
+    EXPECT_NEAR(f.sigmaVariation, std::sqrt(0.609375) / 1.375, 1e-9);
+    EXPECT_NEAR(f.hitsPerLength, 1937.5, 1e-9);
+    EXPECT_EQ(sums.values[5], 4.0); // segments computed
+    EXPECT_THROW(a.setRepresents(0.0), std::invalid_argument);
+}

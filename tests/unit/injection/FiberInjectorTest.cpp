@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -141,4 +142,27 @@ TEST(FiberInjector, countsBeyondExactIntegersNameTheRate)
         EXPECT_NE(std::string(e.what()).find("'rate'"), std::string::npos);
         EXPECT_NE(std::string(e.what()).find("'stream'"), std::string::npos);
     }
+}
+
+// A production flow as the stream's weight (docs/model.md sec. 9): 800 kg/h of glass in
+// fibers of 4 um diameter, 30 mm long, 2500 kg/m^3 is 0.2222 kg/s / 9.4248e-10 kg per fiber
+// = 2.3579e8 fibers/s; at 800 computed fibers/s each stands for 2.9473e5.
+TEST(FiberInjector, representsFollowsFromTheGlassMassFlow)
+{
+    dropletFiber::FiberMaterial glass{2e-6, 2500.0, 7e10};
+    const double perFiber = 2500.0 * M_PI * 2e-6 * 2e-6 * 0.03; // 9.42478e-10 kg, by hand
+    const double n = dropletFiber::representsForMassFlow(800.0 / 3600.0, 800.0, 0.03, glass);
+    EXPECT_NEAR(n, 800.0 / 3600.0 / perFiber / 800.0, 1e-9 * n);
+    EXPECT_NEAR(n, 2.9473e5, 0.0001e5);
+    FiberInjectorSpec s = stream();
+    s.represents = 12.5;
+    FiberInjector injector(s);
+    EXPECT_NEAR(injector.spec().massFlow(), 10.0 * 12.5 * 2500.0 * M_PI * 16e-12 * 0.1, 1e-20);
+    for (const auto& fiber : injector.inject(1.0))
+    {
+        EXPECT_EQ(fiber.represents(), 12.5); // every fiber of the stream
+    }
+    EXPECT_THROW(dropletFiber::representsForMassFlow(0.0, 800.0, 0.03, glass), std::invalid_argument);
+    s.represents = 0.0;
+    EXPECT_THROW(FiberInjector{s}, std::invalid_argument);
 }

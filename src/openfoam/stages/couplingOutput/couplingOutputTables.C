@@ -53,7 +53,8 @@ void Foam::dropletFiber::couplingOutput::writeParallelStatisticsHeader
 void Foam::dropletFiber::couplingOutput::writeTableHeader
 (
     const bool depletion,
-    const wordList& liquidSpecies
+    const wordList& liquidSpecies,
+    const bool weighted
 )
 {
     if (!writeToFile())
@@ -74,6 +75,11 @@ void Foam::dropletFiber::couplingOutput::writeTableHeader
     )
     {
         writeTabbed(os, column);
+        // Weighted fibers: the physical fibers the computed ones represent
+        if (weighted && word(column) == "fibers")
+        {
+            writeTabbed(os, "fibersRepresented");
+        }
     }
     // Depletion's binder balance: eq. 9 before the limit, the mass taken
     // from the parcels (= capturedStep), the parcel mass flying on
@@ -124,8 +130,12 @@ void Foam::dropletFiber::couplingOutput::writeStep(const stepRow& step)
     {
         OFstream& os = file();
         writeCurrentTime(os);
-        os  << tab << step.fibers
-            << tab << step.parcels
+        os  << tab << step.fibers;
+        if (step.weighted)
+        {
+            os  << tab << step.fibersRepresented;
+        }
+        os  << tab << step.parcels
             << tab << step.droplets
             << tab << step.deposit.massIn
             << tab << step.deposit.massDeposited

@@ -217,7 +217,7 @@ void Foam::dropletFiber::fiberCapture::read
         const std::vector<double> granted =
             limitCapture
             (
-                grid, parcels, fields, points, massSums, sampleMasses,
+                held, grid, parcels, fields, points, massSums, sampleMasses,
                 samplesPerSegment, dt, capture, statistics
             );
         countHits
@@ -240,15 +240,18 @@ void Foam::dropletFiber::fiberCapture::read
 
 Foam::scalar Foam::dropletFiber::fiberCapture::countCaptured
 (
+    const heldFibers& held,
     const ::dropletFiber::CaptureSources& capture
 )
 {
+    // Every physical fiber a computed one stands for took its capture
     scalar m = 0;
-    for (const auto& fiberCapture : capture)
+    for (std::size_t f = 0; f < capture.size(); ++f)
     {
-        for (const auto& segment : fiberCapture)
+        const scalar n = held.fibers[f].represents();
+        for (const auto& segment : capture[f])
         {
-            m += segment.mass;
+            m += n*segment.mass;
         }
     }
     const scalar capturedStep = returnReduce(m, sumOp<scalar>());

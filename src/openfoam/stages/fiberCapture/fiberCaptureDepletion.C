@@ -28,6 +28,7 @@ Description
 std::vector<double>
 Foam::dropletFiber::fiberCapture::limitCapture
 (
+    const heldFibers& held,
     couplingGrid& grid,
     const std::vector<::dropletFiber::Parcel>& parcels,
     const std::vector<::dropletFiber::DropletFieldValue>& fields,
@@ -51,12 +52,24 @@ Foam::dropletFiber::fiberCapture::limitCapture
             shares[s] = sampleMasses[s]/massSums[s];
         }
     }
+    // Weighted fibers: each sample asked by the N physical fibers its fiber
+    // stands for (P40); eq. 9's demand N times one fiber's
+    std::vector<double> interceptors;
+    if (held.weighted)
+    {
+        interceptors = samplesInterceptors(held, samplesPerSegment);
+        demanded = 0;
+        for (std::size_t s = 0; s < points.size(); ++s)
+        {
+            demanded += interceptors[s]*sampleMasses[s];
+        }
+    }
     ::dropletFiber::CaptureLimitReport report;
     const std::vector<double> granted =
         grid.grantCapture
         (
-            points, shares, parcels, dt, captureLimit_, report,
-            capturedFraction_, statistics
+            points, shares, held.weighted ? &interceptors : nullptr, parcels,
+            dt, captureLimit_, report, capturedFraction_, statistics
         );
     step_ = depletionSummary();
     step_.demanded = demanded;
@@ -84,6 +97,29 @@ Foam::dropletFiber::fiberCapture::limitCapture
         step_.limitedDemand = report.massDemanded - report.massGranted;
     }
     return granted;
+}
+
+
+std::vector<double> Foam::dropletFiber::fiberCapture::samplesInterceptors
+(
+    const heldFibers& held,
+    const std::vector<int>& samplesPerSegment
+)
+{
+    std::vector<double> interceptors;
+    std::size_t segment = 0;
+    for (const ::dropletFiber::Fiber& fiber : held.fibers)
+    {
+        for (Eigen::Index j = 0; j < fiber.segmentCount(); ++j)
+        {
+            interceptors.insert
+            (
+                interceptors.end(), std::size_t(samplesPerSegment[segment++]),
+                fiber.represents()
+            );
+        }
+    }
+    return interceptors;
 }
 
 

@@ -107,7 +107,7 @@ void Foam::dropletFiber::fiberPopulation::takeBornFibers
     // in the order of birth (a serial run's)
     for (const auto& fiber : born.fibers)
     {
-        totals_.massAdded += fiber.totalMass();
+        totals_.massAdded += fiber.represents()*fiber.totalMass();
     }
     fiberOwnership::keepBornHere(*boxes_, born, statistics, holders_);
     for (std::size_t k = 0; k < born.size(); ++k)
@@ -137,7 +137,7 @@ void Foam::dropletFiber::fiberPopulation::removeLostFibers()
                     return true;
                 }
             }
-            massRemoved += fiber.totalMass();
+            massRemoved += fiber.represents()*fiber.totalMass();
             ++removed;
             return false;
         }
@@ -310,9 +310,11 @@ void Foam::dropletFiber::fiberPopulation::start
             born.append(std::move(named.fiber), named.name, nextFiberId_++);
         }
         takeBornFibers(born, statistics);
+        noteWeights();
         return;
     }
     nextFiberId_ = nextFiberIdAfterRestart();
+    noteWeights();
     if (stateProcessors == 0)
     {
         // A serial run's state (decomposePar copies it to every processor):
@@ -327,6 +329,46 @@ void Foam::dropletFiber::fiberPopulation::start
     }
     Info<< type() << " " << name() << ": " << count()
         << " fibers restored" << nl;
+}
+
+
+void Foam::dropletFiber::fiberPopulation::noteWeights()
+{
+    // The injectors are the same everywhere; the fibers held are not
+    bool weighted = false;
+    for (const auto& fiber : held_.fibers)
+    {
+        weighted = weighted || fiber.represents() != 1;
+    }
+    reduce(weighted, orOp<bool>());
+    for (const auto& injector : injectors_)
+    {
+        weighted = weighted || injector.spec().represents != 1;
+    }
+    held_.weighted = weighted;
+    if (weighted)
+    {
+        reportWeights();
+    }
+}
+
+
+void Foam::dropletFiber::fiberPopulation::reportWeights() const
+{
+    Info<< type() << " " << name() << ": weighted fibers: each computed fiber"
+        << " stands for the physical fibers it represents (the spray loses"
+        << " that many times its capture; docs/model.md sec. 9)" << nl;
+    for (const auto& injector : injectors_)
+    {
+        const ::dropletFiber::FiberInjectorSpec& s = injector.spec();
+        Info<< "    injector " << s.name.c_str() << ": " << s.rate
+            << " computed fibers/s, each represents " << s.represents
+            << ": " << s.rate*s.represents << " physical fibers/s, glass "
+            << s.massFlow() << " kg/s (" << 3600*s.massFlow() << " kg/h)"
+            << nl;
+    }
+    Info<< "    fibers held now: " << count() << " computed, representing "
+        << represented() << nl << endl;
 }
 
 
@@ -388,9 +430,20 @@ Foam::scalar Foam::dropletFiber::fiberPopulation::mass() const
     scalar m = 0;
     for (const auto& fiber : held_.fibers)
     {
-        m += fiber.totalMass();
+        m += fiber.represents()*fiber.totalMass();
     }
     return returnReduce(m, sumOp<scalar>());
+}
+
+
+Foam::scalar Foam::dropletFiber::fiberPopulation::represented() const
+{
+    scalar n = 0;
+    for (const auto& fiber : held_.fibers)
+    {
+        n += fiber.represents();
+    }
+    return returnReduce(n, sumOp<scalar>());
 }
 
 
@@ -437,18 +490,20 @@ Foam::dropletFiber::fiberPopulation::dispersionSums() const
         {
             continue;
         }
+        // Over the physical fibers: each computed one counts N times
+        const scalar n = fiber.represents();
         const Eigen::Vector3d c = fiber.centreOfMass();
-        sums[0] += 1;
+        sums[0] += n;
         for (int d = 0; d < 3; ++d)
         {
-            sums[1 + d] += c(d);
-            sums[4 + d] += c(d)*c(d);
+            sums[1 + d] += n*c(d);
+            sums[4 + d] += n*(c(d)*c(d));
         }
         const Eigen::Matrix3Xd& u = fiber.state().turbulentVelocity;
-        sums[7] += scalar(fiber.pointCount());
+        sums[7] += n*scalar(fiber.pointCount());
         for (int d = 0; d < 3 && u.cols(); ++d)
         {
-            sums[8 + d] += u.row(d).squaredNorm();
+            sums[8 + d] += n*u.row(d).squaredNorm();
         }
     }
     Pstream::listCombineGather(sums, plusEqOp<scalar>());

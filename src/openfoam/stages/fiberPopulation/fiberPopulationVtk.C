@@ -3,8 +3,9 @@
 -------------------------------------------------------------------------------
 Description
     The fibers as VTK polylines at write times: velocity, sigma (mass per
-    length), captured mass per point, fiberId, with turbulent air u'; per
-    segment tension, captured mass and hits. In parallel each processor
+    length), captured mass per point, fiberId, with turbulent air u', with
+    weighted fibers the physical fibers each represents; per segment
+    tension, captured mass and hits (one physical fiber's). In parallel each processor
     writes its piece and the master the .pvtp listing them.
 
 \*---------------------------------------------------------------------------*/
@@ -25,7 +26,11 @@ Foam::word pieceName(const Foam::label proci)
 
 
 //- The arrays of the fibers' pieces (names and components), for the .pvtp
-std::vector<::dropletFiber::VtkField> fiberPointFields(const bool turbulent)
+std::vector<::dropletFiber::VtkField> fiberPointFields
+(
+    const bool turbulent,
+    const bool weighted
+)
 {
     std::vector<::dropletFiber::VtkField> fields
     {
@@ -35,6 +40,10 @@ std::vector<::dropletFiber::VtkField> fiberPointFields(const bool turbulent)
     if (turbulent)
     {
         fields.push_back({"turbulentVelocity", 3, {}});
+    }
+    if (weighted)
+    {
+        fields.push_back({"represents", 1, {}});
     }
     return fields;
 }
@@ -91,6 +100,7 @@ void Foam::dropletFiber::fiberPopulation::writeHeldFibersVtk
     ::dropletFiber::VtkField segmentCaptured{"segmentCapturedMass", 1, {}};
     ::dropletFiber::VtkField segmentHits{"segmentHits", 1, {}};
     ::dropletFiber::VtkField turbulent{"turbulentVelocity", 3, {}};
+    ::dropletFiber::VtkField represents{"represents", 1, {}};
     for (std::size_t f = 0; f < held_.size(); ++f)
     {
         addTurbulentVelocity(held_.fibers[f], turbulent);
@@ -112,6 +122,7 @@ void Foam::dropletFiber::fiberPopulation::writeHeldFibersVtk
                 i < fiber.segmentCount() ? 0.5*segCaptured(i) : 0.0;
             captured.values.push_back(left + right);
             fiberId.values.push_back(double(held_.id[f]));
+            represents.values.push_back(fiber.represents());
         }
         for (Eigen::Index j = 0; j < fiber.segmentCount(); ++j)
         {
@@ -127,6 +138,10 @@ void Foam::dropletFiber::fiberPopulation::writeHeldFibersVtk
     if (withTurbulence)
     {
         pointFields.push_back(turbulent);
+    }
+    if (held_.weighted)
+    {
+        pointFields.push_back(represents);
     }
     ::dropletFiber::writePolylines
     (
@@ -167,7 +182,7 @@ void Foam::dropletFiber::fiberPopulation::writeVtk
         ::dropletFiber::writeParallelPolylines
         (
             dir/stem + ".pvtp", t, pieces,
-            fiberPointFields(turbulent), fiberCellFields()
+            fiberPointFields(turbulent, held_.weighted), fiberCellFields()
         );
         series.add(stem + ".pvtp", t);
     }
