@@ -130,8 +130,9 @@ void Fiber::setRepresents(double n)
 {
     if (!(n > 0.0) || !std::isfinite(n))
     {
-        throw std::invalid_argument("Fiber: represents (the physical fibers it stands for) must be finite and > 0, got "
-                                    + std::to_string(n));
+        throw std::invalid_argument(
+            "Fiber: represents (the physical fibers it stands for) must be finite and > 0, got "
+            + std::to_string(n));
     }
     state_.represents = n;
 }

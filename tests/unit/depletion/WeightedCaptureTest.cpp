@@ -81,7 +81,8 @@ TEST(WeightedCapture, NPhysicalFibersAreNIndependentInterceptors)
     EXPECT_NEAR(reportOne.massDemanded, (0.7 + 0.25) * s, 1e-15 * s);
     EXPECT_NEAR(reportMany.massDemanded, 0.7 * s, 1e-15 * s);
     const std::vector<double> cOne = one.removeFromParcels(weighted.grid, weighted.parcels, 1e-3, reportOne);
-    const std::vector<double> cMany = many.removeFromParcels(separate.grid, separate.parcels, 1e-3, reportMany);
+    const std::vector<double> cMany
+        = many.removeFromParcels(separate.grid, separate.parcels, 1e-3, reportMany);
     const double survivesA = std::pow(0.9, 7.0);
     EXPECT_NEAR(cOne[0], 1.0 - survivesA, 1e-14);
     EXPECT_NEAR(cOne[0], cMany[0], 1e-14);
