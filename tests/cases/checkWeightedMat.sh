@@ -17,7 +17,8 @@
 #   its state holds the weights, the table goes on with the same physical fibers,
 #   and the capture, once the parcels flying at the restart passed the mat, is the
 #   uninterrupted run's to 0.2 % (the case's cloud, a function object's, moves those
-#   parcels one step less at a restart: not to the bit).
+#   parcels one step less at a restart: not to the bit); the report reads the fibers'
+#   VTK with their weights as the binder table and the per-step table count them.
 #------------------------------------------------------------------------------
 set -euo pipefail
 mode=serial
@@ -93,6 +94,7 @@ restart)
         pimpleFoam > log.restart 2>&1
     )
     checkRun "$run"
+    "$here/../../bin/dropletFiberReport" "$run" > /dev/null
     "$PY" "$here/checkWeightedRestart.py" "$whole" "$run" 0.015
     ;;
 esac

@@ -50,4 +50,17 @@ cRestarted = capturedLate(after)
 check(abs(cRestarted / cWhole - 1) < 0.002,
       "captured from 12 ms after the restart on %.6g kg, without a stop %.6g kg (within 0.2 %%)"
       % (cRestarted, cWhole))
+# The report (dropletFiberReport.txt) from the fibers' VTK, each segment times its fiber's
+# array represents, against the binder table and the per-step table (C++ sums)
+report = open(os.path.join(restarted, "dropletFiberReport.txt")).read()
+binder = read_table(os.path.join(restarted, "postProcessing/dropletFiber", stop,
+                                 "binderDistribution.dat"))[-1]
+fromVtk = float(re.search(r"captured binder per length mean ([-+0-9.eE]+)", report).group(1))
+massFromVtk = float(re.search(r"fiber mass from sigma ([-+0-9.eE]+)", report).group(1))
+check(abs(fromVtk / binder["meanSigma"] - 1) < 1e-3,
+      "binder per length from the weighted VTK %.4g = binder table's %.4g" % (fromVtk, binder["meanSigma"]))
+check(abs(massFromVtk / after[-1]["fiberMass"] - 1) < 1e-6,
+      "fiber mass from the weighted VTK %.7g = the table's %.7g" % (massFromVtk, after[-1]["fiberMass"]))
+check(re.search(r"fibers\s+%d computed, representing %g physical" % (len(fibers), physical), report) is not None,
+      "the report says %d computed fibers represent %g" % (len(fibers), physical))
 finish()

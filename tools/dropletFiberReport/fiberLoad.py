@@ -4,7 +4,8 @@ the fiber length, and the captured binder per length.
 Each segment stands for its length with sigma the mean of its two end points (the
 trapezoidal rule: the sum of sigma times length is the fibers' mass, as the table's
 fiberMass), and for its captured binder per length its cell value
-segmentCapturedMass over its length.
+segmentCapturedMass over its length. Weighted fibers (point array `represents`, docs/model.md
+sec. 9): each segment stands for its length times the physical fibers its fiber represents.
 """
 import numpy as np
 
@@ -21,7 +22,10 @@ def fiber_load(fibers):
     None without segments or without sigma."""
     if fibers is None or len(fibers.segments) == 0 or "sigma" not in fibers.point_data:
         return None
-    lengths = fibers.segment_lengths()
+    segmentLengths = fibers.segment_lengths()
+    lengths = segmentLengths  # the physical fibers' length each segment stands for
+    if "represents" in fibers.point_data:
+        lengths = segmentLengths * fibers.segment_mean("represents")
     sigma = fibers.segment_mean("sigma")
     load = {"time": fibers.time, "segments": len(lengths), "length": float(lengths.sum()),
             "mass": float((sigma * lengths).sum()), "sigmaMin": float(sigma.min()),
@@ -33,7 +37,7 @@ def fiber_load(fibers):
     edges = np.linspace(low, high if high > low else low * (1 + 1e-9) + 1e-300, 31)
     load["histogram"] = np.histogram(sigma, bins=edges, weights=lengths)
     if "segmentCapturedMass" in fibers.cell_data:
-        binder = fibers.cell_data["segmentCapturedMass"] / lengths
+        binder = fibers.cell_data["segmentCapturedMass"] / segmentLengths
         load["binderMean"], load["binderCoV"] = _weighted(binder, lengths)
         load["bareFraction"] = float(lengths[binder <= 0].sum() / lengths.sum())
         load["binderHistogram"] = np.histogram(binder, bins=30, weights=lengths)

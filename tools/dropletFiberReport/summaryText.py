@@ -38,7 +38,11 @@ class Summary:
                 r.processors, "reconstructed" if caseOutputs.reconstructed(r.case) else "not reconstructed")
         self.line("dropletFiber report of %s (function object %s, %s) at t = %g s"
                   % (os.path.abspath(r.case), r.name, layout, last["Time"]))
-        self.line("  fibers                         %d" % last["fibers"])
+        if "fibersRepresented" in last:
+            self.line("  fibers                         %d computed, representing %.6g physical fibers"
+                      % (last["fibers"], last["fibersRepresented"]))
+        else:
+            self.line("  fibers                         %d" % last["fibers"])
         self.line("  parcels                        %d" % last["parcels"])
         self._balance()
         self._species()
