@@ -28,8 +28,8 @@ import re
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
-from foamfiles import read_table  # noqa: E402
 from checks import check, finish  # noqa: E402
+import fiberMats  # noqa: E402
 
 W, D, h = 0.02, 0.001, 0.001
 rF, rp = 5e-5, 2e-5
@@ -47,37 +47,6 @@ while args and args[0].startswith("--"):
     args = args[2:]
 
 
-def fibers(case):
-    number = r"([-+0-9.eE]+)"
-    point = r"\(" + r"\s+".join([number] * 3) + r"\)"
-    found = []
-    for line in open(os.path.join(case, "system/matFibers")):
-        m = re.search(r"points\s*\(\s*" + point + r"\s*" + point, line)
-        if m:
-            a = [float(v) for v in m.groups()[:3]]
-            b = [float(v) for v in m.groups()[3:]]
-            found.append((a, b))
-    return found
-
-
-def hat(u):
-    return max(0.0, 1.0 - abs(u))
-
-
-def laneMeanField(placed):
-    columns = int(round(W / h))
-    depth = [0.0] * (columns + 1)
-    for a, b in placed:
-        length = math.dist(a, b)
-        u = a[1] / h
-        for n in range(columns + 1):
-            dual = 0.5 if n in (0, columns) else 1.0
-            depth[n] += 2.0 * (rF + rp) * length / (h * D) * hat(u - n) / dual
-    lanes = [(0.25 * j + 0.125) * h for j in range(4 * columns)]
-    return sum(math.exp(-sum(depth[n] * hat(y / h - n) for n in range(columns + 1)))
-               for y in lanes) / len(lanes)
-
-
 def travelOf(case):
     text = open(os.path.join(case, "system/matTime")).read()
     return float(re.search(r"deltaT\s+([-+0-9.eE]+)", text).group(1)) / h
@@ -85,17 +54,11 @@ def travelOf(case):
 
 lines = []
 for case in args:
-    placed = fibers(case)
-    S = sum(2.0 * (rF + rp) * math.dist(a, b) for a, b in placed) / (W * D)
-    rows = read_table(os.path.join(case, "postProcessing/dropletFiber/0/dropletFiber.dat"))
-    start = max((r for r in rows if r["Time"] <= tMeasured + 1e-12), key=lambda r: r["Time"])
-    last = rows[-1]
-    sprayed = last["sprayedMass"] - start["sprayedMass"]
-    escaped = last["escapedMass"] - start["escapedMass"]
-    captured = sum(r["capturedStep"] for r in rows if r["Time"] > start["Time"] + 1e-12)
+    placed = fiberMats.mat(case, rF)
+    S = fiberMats.depth(placed, rp, W, D)
     expected = math.exp(-S)
-    byOutlet, byCapture = escaped / sprayed, 1.0 - captured / sprayed
-    lane = laneMeanField(placed)
+    byOutlet, byCapture = fiberMats.penetration(case, tMeasured)
+    lane = fiberMats.laneMeanField(placed, rp, W, D, h)
     travel = travelOf(case)
     lines.append((S, travel, byOutlet, byCapture, expected, lane))
     print("S %.4f (%d fibers), %.3g spacing per step: penetration %.5f (outlet) %.5f "

@@ -23,6 +23,8 @@ caseDir="$1"; work="$2"; tolerance="$3"; shift 3
 here="$(cd "${0%/*}" && pwd)"
 # shellcheck disable=SC1091
 . "$here/../../bin/functions.sh"
+# shellcheck disable=SC1091
+. "$here/lib/caseRun.sh"
 loadFoamEnvironment
 PY=/usr/bin/python3; [ -x "$PY" ] || PY=python3
 
@@ -43,14 +45,7 @@ for S in "${depths[@]}"; do
         cp -r "$caseDir" "$run"
         "$PY" "$run/makeMat.py" "$run" "$S" "$travel" 1
         "$run/Allrun" "${allrunArgs[@]}" > /dev/null
-        for log in "$run"/log.*; do
-            if grep -q -E "FOAM FATAL|FOAM exiting|Segmentation fault" "$log"; then
-                tail -25 "$log"
-                die "$log shows a fatal error"
-            fi
-        done
-        "$here/../../bin/checkFunctionObjectRan" "$run" \
-            || die "the run of $run went on without the function object"
+        checkRanClean "$run"
         cases+=("$run")
     done
 done

@@ -23,7 +23,6 @@ import statistics
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
-from foamfiles import read_table  # noqa: E402
 from checks import check, finish  # noqa: E402
 import fiberMats  # noqa: E402
 
@@ -38,16 +37,6 @@ while args and args[0].startswith("--"):
     options[args[0]] = float(args[1])
     args = args[2:]
 h, rp, tolerance = options["--spacing"], 0.5 * options["--dropletDiameter"], options["--tolerance"]
-
-
-def penetration(case):
-    rows = read_table(os.path.join(case, "postProcessing/dropletFiber/0/dropletFiber.dat"))
-    start = max((r for r in rows if r["Time"] <= tMeasured + 1e-12), key=lambda r: r["Time"])
-    last = rows[-1]
-    sprayed = last["sprayedMass"] - start["sprayedMass"]
-    escaped = last["escapedMass"] - start["escapedMass"]
-    captured = sum(r["capturedStep"] for r in rows if r["Time"] > start["Time"] + 1e-12)
-    return escaped / sprayed, 1.0 - captured / sprayed
 
 
 def drawSpread(count, radius, weight, draws=30):
@@ -68,7 +57,7 @@ for case in args:
     fibers = fiberMats.mat(case)
     S = fiberMats.depth(fibers, rp, W, D)
     weight = fibers[0][3]
-    byOutlet, byCapture = penetration(case)
+    byOutlet, byCapture = fiberMats.penetration(case, tMeasured)
     expected = math.exp(-S)
     spread = drawSpread(len(fibers), fibers[0][2], weight)
     nominal = float(re.search(r"S ([-+0-9.eE]+)", open(os.path.join(case, "system/matFibers")).readline()).group(1))

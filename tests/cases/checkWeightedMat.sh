@@ -30,6 +30,8 @@ caseDir="$1"; work="$2"; shift 2
 here="$(cd "${0%/*}" && pwd)"
 # shellcheck disable=SC1091
 . "$here/../../bin/functions.sh"
+# shellcheck disable=SC1091
+. "$here/lib/caseRun.sh"
 loadFoamEnvironment
 PY=/usr/bin/python3; [ -x "$PY" ] || PY=python3
 depths=("$@"); [ "${#depths[@]}" -gt 0 ] || depths=(1 2.302585092994046 4.6)
@@ -45,18 +47,6 @@ prepare() {
     echo "$run"
 }
 
-# finish RUN: no fatal error, the function object ran
-checkRun() {
-    for log in "$1"/log.*; do
-        if grep -q -E "FOAM FATAL|FOAM exiting|Segmentation fault" "$log"; then
-            tail -25 "$log"
-            die "$log shows a fatal error"
-        fi
-    done
-    "$here/../../bin/checkFunctionObjectRan" "$1" \
-        || die "the run of $1 went on without the function object"
-}
-
 rm -rf "$work"; mkdir -p "$work"
 table=postProcessing/dropletFiber/0/dropletFiber.dat
 case "$mode" in
@@ -66,7 +56,7 @@ serial)
         for weight in 5 1; do
             run=$(prepare "S${S:0:4}_weight$weight" "$S" "$weight")
             "$run/Allrun" > /dev/null
-            checkRun "$run"
+            checkRanClean "$run"
             cases+=("$run")
         done
     done
@@ -76,13 +66,13 @@ parallel)
     matOptions=(--fiberRadius 2e-6 --dropletDiameter 4e-5)
     serial=$(prepare serial "${depths[0]}" 5)
     parallel=$(prepare parallel "${depths[0]}" 5)
-    "$serial/Allrun" > /dev/null; checkRun "$serial"
-    "$parallel/Allrun" -parallel > /dev/null; checkRun "$parallel"
+    "$serial/Allrun" > /dev/null; checkRanClean "$serial"
+    "$parallel/Allrun" -parallel > /dev/null; checkRanClean "$parallel"
     "$PY" "$here/compareTables.py" "$serial/$table" "$parallel/$table" 1e-8
     ;;
 restart)
     whole=$(prepare whole "${depths[0]}" 5)
-    "$whole/Allrun" > /dev/null; checkRun "$whole"
+    "$whole/Allrun" > /dev/null; checkRanClean "$whole"
     run=$(prepare restarted "${depths[0]}" 5)
     (
         cd "$run"
@@ -93,7 +83,7 @@ restart)
         foamDictionary -entry endTime -set 0.03 system/controlDict > /dev/null
         pimpleFoam > log.restart 2>&1
     )
-    checkRun "$run"
+    checkRanClean "$run"
     "$here/../../bin/dropletFiberReport" "$run" > /dev/null
     "$PY" "$here/checkWeightedRestart.py" "$whole" "$run" 0.015
     ;;

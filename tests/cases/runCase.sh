@@ -15,19 +15,13 @@ caseDir="$1"; workDir="$2"; mode="$3"; shift 3
 here="$(cd "${0%/*}" && pwd)"
 # shellcheck disable=SC1091
 . "$here/../../bin/functions.sh"
+# shellcheck disable=SC1091
+. "$here/lib/caseRun.sh"
 loadFoamEnvironment
 
 rm -rf "$workDir"
 mkdir -p "$(dirname "$workDir")"
 cp -r "$caseDir" "$workDir"
-
-showLogs() {
-    for log in "$workDir"/log.*; do
-        [ -f "$log" ] || continue
-        echo "==== tail of $log"
-        tail -25 "$log"
-    done
-}
 
 args=()
 case "$mode" in
@@ -44,19 +38,10 @@ case "$mode" in
         ;;
 esac
 if ! "$workDir/Allrun" "${args[@]}"; then
-    showLogs
+    showLogs "$workDir"
     die "Allrun of $workDir failed"
 fi
-# RunFunctions do not stop on a failed application: look for its log's end
-for log in "$workDir"/log.*; do
-    if grep -q -E "FOAM FATAL|FOAM exiting|Segmentation fault" "$log"; then
-        showLogs
-        die "$log shows a fatal error"
-    fi
-done
-# OpenFOAM v1912 runs on, exit 0, without a function object it cannot load
-"$here/../../bin/checkFunctionObjectRan" "$workDir" \
-    || die "the run of $workDir went on without the function object"
+checkRanClean "$workDir"
 if [ "$#" -gt 0 ]; then
     "$@" "$workDir"
 fi

@@ -5,6 +5,10 @@ weight from system/matFibers, the mat's interception depth S and the lanes' mean
 - mat(case): list of (a, b, radius, represents) per fiber written.
 - depth(fibers, rp, W, D): S = sum N 2 (r_F + r_p) L / (W D) (docs/model.md sec. 7, P15;
   sec. 9: each fiber N times).
+- penetration(case, after): the measured penetration from the function object's table
+  over the steps after the time `after`: the parcel mass that left through the outlet
+  over the mass sprayed (escapedMass / sprayedMass, their increments), and 1 -
+  capturedStep / sprayedMass for the same steps.
 - laneMeanField(fibers, rp, W, D, h): the model's limit for small steps, the mean over
   the parcels' lanes (y = (j/4 + 1/8) mm) of exp(-S_I(y)), S_I the piecewise-linear
   interpolant across the flow of the nodes' depths, each fiber's strip 2 (r_F + r_p)
@@ -13,6 +17,8 @@ weight from system/matFibers, the mat's interception depth S and the lanes' mean
 import math
 import os
 import re
+
+from foamfiles import read_table
 
 NUMBER = r"([-+0-9.eE]+)"
 POINT = r"\(" + r"\s+".join([NUMBER] * 3) + r"\)"
@@ -35,6 +41,16 @@ def mat(case, defaultRadius=5e-5):
 
 def depth(fibers, rp, W, D):
     return sum(n * 2.0 * (rF + rp) * math.dist(a, b) for a, b, rF, n in fibers) / (W * D)
+
+
+def penetration(case, after):
+    rows = read_table(os.path.join(case, "postProcessing/dropletFiber/0/dropletFiber.dat"))
+    start = max((r for r in rows if r["Time"] <= after + 1e-12), key=lambda r: r["Time"])
+    last = rows[-1]
+    sprayed = last["sprayedMass"] - start["sprayedMass"]
+    escaped = last["escapedMass"] - start["escapedMass"]
+    captured = sum(r["capturedStep"] for r in rows if r["Time"] > start["Time"] + 1e-12)
+    return escaped / sprayed, 1.0 - captured / sprayed
 
 
 def hat(u):
