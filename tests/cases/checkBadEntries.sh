@@ -64,6 +64,18 @@ expectError air "{ U p; }" "Entry 'U' names field 'p', which is a volScalarField
 expectError air "{ rho U; }" "Entry 'rho' names field 'U', which is a volVectorField: 'rho' needs a volScalarField"
 expectError fibers/fixed/across/points "((0.05 0.01 0.005))" "Entry 'points' has 1 points"
 expectError fibers/fixed/across/hold glued "Entry 'hold' is 'glued'"
+# Weighted fibers: the physical fibers a computed one stands for, or an injector's glass
+# mass flow, and not both
+expectError fibers/fixed/across/represents 0 "Entry 'represents' is 0: allowed are finite values > 0"
+expectError fibers/injectors \
+    "{ spinner { position (0.01 0.04 0.005); direction (1 0 0); velocity (0 0 0); length 0.01; rate 10; represents -3; } }" \
+    "Entry 'represents' is -3: allowed are finite values > 0"
+expectError fibers/injectors \
+    "{ spinner { position (0.01 0.04 0.005); direction (1 0 0); velocity (0 0 0); length 0.01; rate 10; massFlowRate 0; } }" \
+    "Entry 'massFlowRate' is 0: allowed are finite values > 0"
+expectError fibers/injectors \
+    "{ spinner { position (0.01 0.04 0.005); direction (1 0 0); velocity (0 0 0); length 0.01; rate 10; represents 4; massFlowRate 1e-3; } }" \
+    "Injector 'spinner' has both 'represents' 4 and 'massFlowRate' 0.001: give one"
 # A cloud named twice would be gathered twice (parcels, their mass and the
 # captured mass doubled): stops, naming the entry, the cloud and what is allowed
 expectError clouds "(kinematicCloud kinematicCloud)" \
