@@ -294,6 +294,7 @@ void sortById(Foam::dropletFiber::heldFibers& held)
         [&held](std::size_t a, std::size_t b) { return held.id[a] < held.id[b]; }
     );
     Foam::dropletFiber::heldFibers sorted;
+    sorted.weighted = held.weighted;
     for (const std::size_t k : order)
     {
         sorted.fibers.push_back(std::move(held.fibers[k]));
