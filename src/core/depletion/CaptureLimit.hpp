@@ -75,6 +75,7 @@ struct SampleCapture
     std::array<std::size_t, 8> node{};       // global flat node indices
     std::array<double, 8> mass{};            // d_sc, kg; their sum is the sample's m_coll
     Eigen::Vector3d velocity{0.0, 0.0, 0.0}; // droplet velocity at the sample (eq. 7)
+    std::array<double, 8> shadow{};          // sigma of each part (P21, SelfShadow.hpp); 0: none
 };
 
 // A segment's eq. 9 sample by sample, each with its attribution.
@@ -89,6 +90,7 @@ struct NodeMass
 {
     std::size_t node = 0;
     double mass = 0.0;
+    double shadow = 0.0; // the part's sigma (P21)
 };
 
 // What limit() found on a block; sums add up across blocks.
@@ -104,8 +106,10 @@ struct CaptureLimitReport
 
 // P12 for one sample of mass sampleMass at a point whose cell corners (corners) have the
 // window sums cornerTotals (nQuantities per corner, as for DensityGrid::interpolated).
+// strip: the fiber's strip across the flow (stripAcrossFlow, P21); zero: no self-shadow.
 SampleCapture attributeSample(const DensityGrid& grid, const CornerWeights& corners,
-                              const double* cornerTotals, double sampleMass, const Eigen::Vector3d& velocity);
+                              const double* cornerTotals, double sampleMass, const Eigen::Vector3d& velocity,
+                              const Eigen::Vector3d& strip = Eigen::Vector3d::Zero());
 
 // P12 over the corners this grid owns (a block's part of attributeSample): massShare is
 // the sample's mass over the whole grid's interpolated mass sum, m_s / Sigma (Sigma: the
@@ -114,7 +118,8 @@ SampleCapture attributeSample(const DensityGrid& grid, const CornerWeights& corn
 // the blocks owning a sample's corners, these are attributeSample's demands (to round-off:
 // (m_s / Sigma) part instead of m_s (part / Sigma)); the whole grid gives all of them.
 SampleCapture attributeOwnedCorners(const DensityGrid& grid, const CornerWeights& corners, double massShare,
-                                    const Eigen::Vector3d& velocity);
+                                    const Eigen::Vector3d& velocity,
+                                    const Eigen::Vector3d& strip = Eigen::Vector3d::Zero());
 
 // Eq. 9 for the segment from a to b with every sample attributed (P12), on a grid that
 // owns every corner the samples read (serial runs; a block reads remote corners itself
@@ -156,7 +161,7 @@ public:
     // --- 1. demand (any node; a block sends the foreign part to the owners) -----------------
     void addDemand(const SampleCapture& sample);
     void addDemand(const SegmentCapture& segment);
-    void addDemand(std::size_t node, double mass);
+    void addDemand(std::size_t node, double mass, double shadow = 0.0);
     // The demand at nodes the grid does not own, moved out, in node order: each addDemand
     // call's part apart (the owner multiplies their survivals, P13), in the order added.
     std::vector<NodeMass> takeForeignDemand(const DensityGrid& grid);
@@ -248,18 +253,28 @@ private:
             + bricks_[0] * (static_cast<std::size_t>(j) + bricks_[1] * static_cast<std::size_t>(k));
     }
 
+    // One interceptor's part of a node's demand: d_sn and its self-shadow sigma (P21)
+    struct DemandPart
+    {
+        double mass = 0.0, shadow = 0.0;
+        bool operator<(const DemandPart& other) const
+        {
+            return mass < other.mass || (mass == other.mass && shadow < other.shadow);
+        }
+    };
     // Per node: the demand d_n and its parts d_sn, one per interceptor (addDemand call)
     struct NodeDemand
     {
         double total = 0.0;
-        std::vector<double> parts;
+        std::vector<DemandPart> parts;
     };
     // The parts in value order and their total (the same bits whatever the order added).
     static void sortParts(NodeDemand& entry);
     // removed_ from removedTerms_ (remove()'s r_pn), summed per node in value order.
     void sumRemovedTerms();
-    // x_n = -ln prod (1 - d_sn / s_n) (P13); infinity where a part is >= s_n
-    static double depthOf(const std::vector<double>& parts, double supply);
+    // x_n = sum of the parts' depths, a (1 + sigma) to second order (P13, P21); infinity
+    // where a part is >= s_n
+    static double depthOf(const std::vector<DemandPart>& parts, double supply);
     std::unordered_map<std::size_t, NodeDemand> demand_;
     std::unordered_map<std::size_t, double> granted_; // g_n
     std::unordered_map<std::size_t, double> depth_;   // x_n > 0, owned nodes
