@@ -417,7 +417,8 @@ void Foam::dropletFiber::gridBlocks::askCornerOwners
     const Eigen::Vector3d& point,
     const std::size_t sample,
     std::vector<std::vector<std::size_t>>& askedFor,
-    const scalar* share
+    const scalar* share,
+    const label shareCount
 )
 {
     label asked[8];
@@ -434,9 +435,9 @@ void Foam::dropletFiber::gridBlocks::askCornerOwners
         {
             outgoing_[owner].append(point[d]);
         }
-        if (share)
+        for (label i = 0; share && i < shareCount; ++i)
         {
-            outgoing_[owner].append(*share);
+            outgoing_[owner].append(share[i]);
         }
         askedFor[owner].push_back(sample);
     }

@@ -20,6 +20,13 @@ Description
 #include <algorithm>
 #include <unordered_map>
 
+namespace
+{
+// A request for a sample's demand: its point, m_s / Sigma and its strip across
+// the flow (P21: each owner forms its own corners' self-shadow from them)
+constexpr Foam::label requestSize = 7;
+}
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 void Foam::dropletFiber::gridBlocks::attributeDemand
@@ -27,6 +34,7 @@ void Foam::dropletFiber::gridBlocks::attributeDemand
     const ::dropletFiber::DensityGrid& grid,
     const std::vector<Eigen::Vector3d>& points,
     const std::vector<double>& massShares,
+    const std::vector<Eigen::Vector3d>& strips,
     ::dropletFiber::CaptureLimit& limit,
     std::vector<::dropletFiber::SampleCapture>& local,
     std::vector<std::vector<std::size_t>>& askedFor
@@ -44,13 +52,18 @@ void Foam::dropletFiber::gridBlocks::attributeDemand
         local[p] =
             ::dropletFiber::attributeOwnedCorners
             (
-                grid, corners, massShares[p], Eigen::Vector3d::Zero()
+                grid, corners, massShares[p], Eigen::Vector3d::Zero(),
+                strips[p]
             );
         limit.addDemand(local[p]);
         if (Pstream::parRun())
         {
-            const scalar share = massShares[p];
-            askCornerOwners(corners, points[p], p, askedFor, &share);
+            const scalar share[requestSize - 3] =
+                {massShares[p], strips[p].x(), strips[p].y(), strips[p].z()};
+            askCornerOwners
+            (
+                corners, points[p], p, askedFor, share, requestSize - 3
+            );
         }
     }
 }
@@ -61,6 +74,7 @@ std::vector<double> Foam::dropletFiber::gridBlocks::grantCapture
     ::dropletFiber::DensityGrid& grid,
     const std::vector<Eigen::Vector3d>& points,
     const std::vector<double>& massShares,
+    const std::vector<Eigen::Vector3d>& strips,
     const std::vector<::dropletFiber::Parcel>& parcels,
     const double dt,
     ::dropletFiber::CaptureLimit& limit,
@@ -83,7 +97,7 @@ std::vector<double> Foam::dropletFiber::gridBlocks::grantCapture
         outgoing_[proci].clear();
     }
     // P12: the demand at this block's corners, the rest asked of the owners
-    attributeDemand(grid, points, massShares, limit, local, askedFor);
+    attributeDemand(grid, points, massShares, strips, limit, local, askedFor);
     List<List<scalar>> requests(outgoing_.size());
     if (Pstream::parRun())
     {
@@ -91,15 +105,16 @@ std::vector<double> Foam::dropletFiber::gridBlocks::grantCapture
         forAll(requests, proci)
         {
             const List<scalar>& in = requests[proci];
-            for (label i = 0; i + 4 <= in.size(); i += 4)
+            for (label i = 0; i + requestSize <= in.size(); i += requestSize)
             {
                 const Eigen::Vector3d point(in[i], in[i + 1], in[i + 2]);
+                const Eigen::Vector3d strip(in[i + 4], in[i + 5], in[i + 6]);
                 remote[proci].push_back
                 (
                     ::dropletFiber::attributeOwnedCorners
                     (
                         grid, ::dropletFiber::multilinearWeights(spec_, point),
-                        in[i + 3], Eigen::Vector3d::Zero()
+                        in[i + 3], Eigen::Vector3d::Zero(), strip
                     )
                 );
                 limit.addDemand(remote[proci].back());
@@ -144,7 +159,8 @@ std::vector<double> Foam::dropletFiber::gridBlocks::grantedMasses
             const List<scalar>& in = requests[proci];
             for (std::size_t i = 0; i < grantRemote_[proci].size(); ++i)
             {
-                const Eigen::Vector3d point(in[4*i], in[4*i + 1], in[4*i + 2]);
+                const label at = requestSize*label(i);
+                const Eigen::Vector3d point(in[at], in[at + 1], in[at + 2]);
                 const auto corners = ::dropletFiber::multilinearWeights(spec_, point);
                 std::array<double, 8> answer{};
                 grantedSlots(limit, grantRemote_[proci][i], corners, answer);

@@ -307,6 +307,7 @@ std::vector<double> Foam::dropletFiber::couplingGrid::grantCapture
 (
     const std::vector<Eigen::Vector3d>& points,
     const std::vector<double>& shares,
+    const std::vector<Eigen::Vector3d>& strips,
     const std::vector<::dropletFiber::Parcel>& parcels,
     const scalar dt,
     ::dropletFiber::CaptureLimit& limit,
@@ -317,7 +318,7 @@ std::vector<double> Foam::dropletFiber::couplingGrid::grantCapture
 {
     return blocks_->grantCapture
     (
-        *grid_, points, shares, parcels, dt, limit, report, captured,
+        *grid_, points, shares, strips, parcels, dt, limit, report, captured,
         statistics
     );
 }

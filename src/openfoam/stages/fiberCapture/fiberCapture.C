@@ -217,7 +217,7 @@ void Foam::dropletFiber::fiberCapture::read
         const std::vector<double> granted =
             limitCapture
             (
-                grid, parcels, fields, points, massSums, sampleMasses,
+                grid, held, parcels, fields, points, massSums, sampleMasses,
                 samplesPerSegment, dt, capture, statistics
             );
         countHits
