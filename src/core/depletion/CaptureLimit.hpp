@@ -1,5 +1,5 @@
 // CaptureLimit: depletion of the spray by the fibers, the mass the fibers capture taken
-// from the parcels that carried it (docs/model.md sec. 7, eqs. P12-P15, P18). Per time step,
+// from the parcels that carried it (docs/model.md sec. 7, eqs. P12-P15, P18, P21). Per time step,
 // after the step's deposit is committed (DensityGrid::commitStep) and eq. 9 evaluated:
 //
 //  1. Demand (P12). A collision sample reads rho by multilinear interpolation of its cell's
@@ -13,6 +13,9 @@
 //         x_n = -ln prod_s (1 - d_sn / s_n)   (sum_s d_sn / s_n = d_n / s_n for thin fibers;
 //                                              0 where s_n = 0), or "saturated" where one
 //                                              sample alone sweeps more than the node holds
+//     A sample given its fiber's strip (attributeSample's strip) adds a (1 + sigma) instead of
+//     -ln(1 - a), to second order: the fiber's self-shadow (P21, SelfShadow.hpp), so that
+//     the lanes crossing a fiber thick against the spacing lose its strip.
 //  3. Removal, per parcel (P14). Parcel p, which deposited w_pn F_p of its mass on node n
 //     (the deposit's weight times the part of the step inside the box), crosses the depth
 //     X_p = F_p sum_n w_pn x_n over the unsaturated nodes and loses its share on the

@@ -40,7 +40,8 @@ double massMatrix(int i, int j, int nodes)
 }
 } // namespace
 
-std::array<double, 8> selfShadow(const GridSpec& spec, const CornerWeights& corners, const Eigen::Vector3d& strip)
+std::array<double, 8> selfShadow(const GridSpec& spec, const CornerWeights& corners,
+                                 const Eigen::Vector3d& strip)
 {
     std::array<double, 8> sigma{};
     int rank = 0; // the bit of an active direction in the corner index (multilinearWeights)
@@ -79,7 +80,8 @@ std::array<double, 8> selfShadow(const GridSpec& spec, const CornerWeights& corn
             for (int other = 0; other < 2; ++other)
             {
                 sum += weight[static_cast<std::size_t>(other)]
-                    * massMatrix(index[static_cast<std::size_t>(side)], index[static_cast<std::size_t>(other)], n)
+                    * massMatrix(index[static_cast<std::size_t>(side)],
+                                 index[static_cast<std::size_t>(other)], n)
                     / dualWidth(index[static_cast<std::size_t>(other)], n);
             }
             mean[static_cast<std::size_t>(side)] = sum / dualWidth(index[static_cast<std::size_t>(side)], n);

@@ -109,7 +109,8 @@ TEST(SelfShadow, MeanOverTheFibersPositionIsAQuarterOfTheStripOverTheSpacing)
         const std::array<double, 8> sigma = selfShadow(spec, corners, Eigen::Vector3d(c, 0.0, 0.0));
         for (int i = 0; i < corners.count; ++i)
         {
-            mean += corners.weight[static_cast<std::size_t>(i)] * sigma[static_cast<std::size_t>(i)] / positions;
+            mean += corners.weight[static_cast<std::size_t>(i)] * sigma[static_cast<std::size_t>(i)]
+                / positions;
         }
     }
     EXPECT_NEAR(mean, c / (4.0 * h), 1e-7);
