@@ -4,15 +4,16 @@
 // of the 1 mm spacing, against 0.002 in DenseMatTest), at random in a slab 6 spacings thick
 // across a spray 20 spacings wide, 1/8 ... 1 spacing per step.
 //
-// What the model gives there: as the step shrinks the penetration tends to the lanes' mean
-// field, the mean over the parcels' lanes of exp(-S_I(x)), S_I the piecewise-linear
-// interpolant across the flow of the nodes' depths (each fiber's strip spread over its two
-// node columns by the hat weights of its x): computed here from the fibers' positions alone.
-// That limit is above exp(-S) (P15), by ~ exp(S c / 4h) for strips of width c: each fiber,
-// smeared over its columns, shadows itself (a lane crossing its depth f keeps exp(-f), not
-// 1 - f). At larger steps P13's product per step adds depth and hides part of it, so the
-// error against exp(-S) grows as the step shrinks. The target of the issue (within 3 % of
-// exp(-S) at every travel) is the disabled test below: an open gap.
+// What the model gives there: the mean over the parcels' lanes of exp(-S_I(x)), S_I the
+// piecewise-linear interpolant across the flow of the nodes' depths (each fiber's strip spread
+// over its two node columns by the hat weights of its x), the lanes' field, computed from the
+// fibers' positions alone (LanesField.hpp). Without the self-shadow it is above exp(-S) (P15)
+// by ~ exp(S c / 4h) for strips of width c: each fiber, smeared over its columns, shadows
+// itself (a lane crossing its depth f keeps exp(-f), not 1 - f), P20. With it (P21) each
+// column's depth is scaled so that the lanes lose the fiber's strip, whatever the step: the
+// model is that mat's shadowed lanes' field at every step, and exp(-S) but for the mat's
+// clustering at the grid's scale. The target of the issue: within 3 % of exp(-S) at every
+// travel per step.
 #include "LanesField.hpp"
 #include "StraightSpray.hpp"
 
