@@ -417,8 +417,8 @@ void Foam::dropletFiber::gridBlocks::askCornerOwners
     const Eigen::Vector3d& point,
     const std::size_t sample,
     std::vector<std::vector<std::size_t>>& askedFor,
-    const scalar* share,
-    const label shareCount
+    const scalar* extra,
+    const label nExtra
 )
 {
     label asked[8];
@@ -435,9 +435,9 @@ void Foam::dropletFiber::gridBlocks::askCornerOwners
         {
             outgoing_[owner].append(point[d]);
         }
-        for (label i = 0; share && i < shareCount; ++i)
+        for (label e = 0; e < nExtra; ++e)
         {
-            outgoing_[owner].append(share[i]);
+            outgoing_[owner].append(extra[e]);
         }
         askedFor[owner].push_back(sample);
     }
