@@ -14,13 +14,16 @@ through the outlet over the mass sprayed, escapedMass / sprayedMass (their incre
 and 1 - capturedStep / sprayedMass for the same steps (the two differ by the change of
 the airborne mass, zero in a steady stream). Checked: both within TOL of exp(-S).
 
-And, the diagnosis of the gap (docs/model.md sec. 7, thick fibers): the lanes' mean
-field, the model's own limit for small steps, computed here from the fibers' positions:
-the mean over the parcels' lanes (y = (j/4 + 1/8) mm) of exp(-S_I(y)), S_I the
-piecewise-linear interpolant across the flow of the nodes' depths, each fiber's strip
-2 (r_F + r_p) spread over its two node columns by the hat weights of its y. The
-measured penetration must not exceed it by more than 0.1 % (P13's product per step
-only adds depth to it).
+And the model's own value for this mat (docs/model.md sec. 7, thick fibers, P21): the
+lanes' field, computed here from the fibers' positions: the mean over the parcels' lanes
+(y = (j/4 + 1/8) mm) of exp(-S_I(y)), S_I the piecewise-linear interpolant across the
+flow of the nodes' depths, each fiber's strip 2 (r_F + r_p) spread over its two node
+columns by the hat weights of its y (phi_n) and scaled by its self-shadow, 1 + <f>_n / 2
+(<f>_n the mean over column n's hat of the fiber's own lane depth f = sum_m phi_m hat_m,
+integrated numerically here). It holds the mat's clustering at the grid's scale, which
+exp(-S) does not. Checked: the measured penetration within 1 % of it at every step (the
+depths are the lanes' whatever the step). Printed beside it: the lanes' field without
+the self-shadow (P20's excess).
 """
 import math
 import os
@@ -58,23 +61,24 @@ for case in args:
     S = fiberMats.depth(placed, rp, W, D)
     expected = math.exp(-S)
     byOutlet, byCapture = fiberMats.penetration(case, tMeasured)
-    lane = fiberMats.laneMeanField(placed, rp, W, D, h)
+    lane, unshadowed = fiberMats.laneFields(placed, rp, W, D, h)
     travel = travelOf(case)
-    lines.append((S, travel, byOutlet, byCapture, expected, lane))
+    lines.append((S, travel, byOutlet, byCapture, expected, lane, unshadowed))
     print("S %.4f (%d fibers), %.3g spacing per step: penetration %.5f (outlet) %.5f "
-          "(captured) against exp(-S) %.5f: %+.2f %% %+.2f %%; lanes' mean field %.5f (%+.2f %%)"
+          "(captured) against exp(-S) %.5f: %+.2f %% %+.2f %%; lanes' field %.5f (%+.2f %%), "
+          "without the self-shadow %.5f (%+.2f %%)"
           % (S, len(placed), travel, byOutlet, byCapture, expected,
              100 * (byOutlet / expected - 1), 100 * (byCapture / expected - 1),
-             lane, 100 * (lane / expected - 1)))
+             lane, 100 * (lane / expected - 1), unshadowed, 100 * (unshadowed / expected - 1)))
     check(abs(byOutlet / expected - 1) < tolerance and abs(byCapture / expected - 1) < tolerance,
           "S %.3f, %.3g spacing per step: within %.3g %% of exp(-S)"
           % (S, travel, 100 * tolerance))
-    check(byOutlet < lane * (1 + 1e-3),
-          "S %.3f, %.3g spacing per step: at most the lanes' mean field" % (S, travel))
+    check(abs(byOutlet / lane - 1) < 0.01,
+          "S %.3f, %.3g spacing per step: within 1 %% of the mat's lanes' field" % (S, travel))
 
 if csv:
     with open(csv, "w") as out:
-        out.write("S,travel,outlet,captured,expMinusS,laneMeanField\n")
+        out.write("S,travel,outlet,captured,expMinusS,lanesField,lanesFieldUnshadowed\n")
         for line in lines:
             out.write(",".join("%.10g" % v for v in line) + "\n")
 finish()

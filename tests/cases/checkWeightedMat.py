@@ -12,7 +12,7 @@ last 10 ms); checked:
 - each within TOL of exp(-S) (P15: independently placed fibers, straight paths);
 - the two of a pair the same within their sampling error: 3 sqrt(s_w^2 + s_1^2), s the
   spread over 30 other draws of such a mat of the model's lanes' mean field
-  (fiberMats.laneMeanField, computed here from the positions, not by the library):
+  (fiberMats.laneFields, computed here from the positions, not by the library):
   a mat of M positions scatters more than one of M N.
 """
 import math
@@ -48,7 +48,7 @@ def drawSpread(count, radius, weight, draws=30):
         for _ in range(count):
             x, y = 0.004 + 0.006 * rng.random(), W * rng.random()
             fibers.append(([x, y, 0.0], [x, y, D], radius, weight))
-        fields.append(fiberMats.laneMeanField(fibers, rp, W, D, h))
+        fields.append(fiberMats.laneFields(fibers, rp, W, D, h)[0])
     return statistics.stdev(fields)
 
 
@@ -63,9 +63,9 @@ for case in args:
     nominal = float(re.search(r"S ([-+0-9.eE]+)", open(os.path.join(case, "system/matFibers")).readline()).group(1))
     measured.setdefault(round(nominal, 6), []).append((weight, byOutlet, spread, S))
     print("S %.4f, %d fibers of weight %g: penetration %.5f (outlet) %.5f (captured) against "
-          "exp(-S) %.5f: %+.2f %%; lanes' mean field of this draw %.5f, over draws +- %.5f"
+          "exp(-S) %.5f: %+.2f %%; lanes' field of this draw %.5f, over draws +- %.5f"
           % (S, len(fibers), weight, byOutlet, byCapture, expected, 100 * (byOutlet / expected - 1),
-             fiberMats.laneMeanField(fibers, rp, W, D, h), spread))
+             fiberMats.laneFields(fibers, rp, W, D, h)[0], spread))
     check(abs(byOutlet / expected - 1) < tolerance and abs(byCapture / expected - 1) < tolerance,
           "S %.3f, weight %g: within %.3g %% of exp(-S)" % (S, weight, 100 * tolerance))
 

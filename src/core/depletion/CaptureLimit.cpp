@@ -1,4 +1,5 @@
 #include "depletion/CaptureLimit.hpp"
+#include "depletion/SelfShadow.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -19,7 +20,8 @@ CaptureLimitReport& CaptureLimitReport::operator+=(const CaptureLimitReport& oth
 }
 
 SampleCapture attributeSample(const DensityGrid& grid, const CornerWeights& corners,
-                              const double* cornerTotals, double sampleMass, const Eigen::Vector3d& velocity)
+                              const double* cornerTotals, double sampleMass, const Eigen::Vector3d& velocity,
+                              const Eigen::Vector3d& strip)
 {
     SampleCapture capture;
     capture.velocity = velocity;
@@ -30,6 +32,7 @@ SampleCapture attributeSample(const DensityGrid& grid, const CornerWeights& corn
     {
         return capture;
     }
+    const std::array<double, 8> sigma = selfShadow(grid.spec(), corners, strip);
     for (int c = 0; c < corners.count; ++c)
     {
         const auto u = static_cast<std::size_t>(c);
@@ -38,13 +41,14 @@ SampleCapture attributeSample(const DensityGrid& grid, const CornerWeights& corn
             const auto n = static_cast<std::size_t>(capture.count++);
             capture.node[n] = corners.node[u];
             capture.mass[n] = sampleMass * (parts[u] / sum);
+            capture.shadow[n] = sigma[u];
         }
     }
     return capture;
 }
 
 SampleCapture attributeOwnedCorners(const DensityGrid& grid, const CornerWeights& corners, double massShare,
-                                    const Eigen::Vector3d& velocity)
+                                    const Eigen::Vector3d& velocity, const Eigen::Vector3d& strip)
 {
     SampleCapture capture;
     capture.velocity = velocity;
@@ -64,6 +68,7 @@ SampleCapture attributeOwnedCorners(const DensityGrid& grid, const CornerWeights
     }
     std::array<double, 8> parts{};
     grid.densityParts(corners, totals.data(), parts.data());
+    const std::array<double, 8> sigma = selfShadow(grid.spec(), corners, strip);
     for (int c = 0; c < corners.count; ++c)
     {
         const auto u = static_cast<std::size_t>(c);
@@ -72,6 +77,7 @@ SampleCapture attributeOwnedCorners(const DensityGrid& grid, const CornerWeights
             const auto n = static_cast<std::size_t>(capture.count++);
             capture.node[n] = corners.node[u];
             capture.mass[n] = massShare * parts[u];
+            capture.shadow[n] = sigma[u];
         }
     }
     return capture;
@@ -111,8 +117,13 @@ SegmentCapture segmentCapture(const DensityGrid& grid, const Eigen::Vector3d& a,
     {
         if (masses[s] > 0.0)
         {
+            // P21: the strip eq. 9 swept, across the droplets' velocity relative to the fiber
+            const double meanRadius
+                = options.radiusAverage == RadiusAverage::Mass ? fields[s].rMeanMass : fields[s].rMeanNumber;
+            const Eigen::Vector3d strip = stripAcrossFlow(2.0 * (fiberRadius + meanRadius), b - a,
+                                                          fields[s].velocity - segmentVelocity);
             result.samples.push_back(
-                attributeSample(grid, corners[s], totals[s].data(), masses[s], fields[s].velocity));
+                attributeSample(grid, corners[s], totals[s].data(), masses[s], fields[s].velocity, strip));
         }
     }
     return result;
@@ -136,8 +147,8 @@ void CaptureLimit::addDemand(const SampleCapture& sample, double interceptors)
 {
     for (int c = 0; c < sample.count; ++c)
     {
-        addDemand(sample.node[static_cast<std::size_t>(c)], sample.mass[static_cast<std::size_t>(c)],
-                  interceptors);
+        const auto u = static_cast<std::size_t>(c);
+        addDemand(sample.node[u], sample.mass[u], sample.shadow[u], interceptors);
     }
 }
 
@@ -149,7 +160,7 @@ void CaptureLimit::addDemand(const SegmentCapture& segment, double interceptors)
     }
 }
 
-void CaptureLimit::addDemand(std::size_t node, double mass, double interceptors)
+void CaptureLimit::addDemand(std::size_t node, double mass, double shadow, double interceptors)
 {
     if (!(mass >= 0.0))
     {
@@ -163,7 +174,7 @@ void CaptureLimit::addDemand(std::size_t node, double mass, double interceptors)
     }
     NodeDemand& entry = demand_[node];
     entry.total += interceptors * mass;
-    entry.parts.emplace_back(mass, interceptors);
+    entry.parts.push_back(DemandPart{mass, shadow, interceptors});
 }
 
 std::vector<NodeMass> CaptureLimit::takeForeignDemand(const DensityGrid& grid)
@@ -177,9 +188,9 @@ std::vector<NodeMass> CaptureLimit::takeForeignDemand(const DensityGrid& grid)
             continue;
         }
         // Each interceptor apart (P13 multiplies their survivals), in the order added
-        for (const auto& [mass, interceptors] : entry->second.parts)
+        for (const DemandPart& part : entry->second.parts)
         {
-            foreign.push_back(NodeMass{entry->first, mass, interceptors});
+            foreign.push_back(NodeMass{entry->first, part.mass, part.shadow, part.interceptors});
         }
         entry = demand_.erase(entry);
     }
@@ -188,19 +199,20 @@ std::vector<NodeMass> CaptureLimit::takeForeignDemand(const DensityGrid& grid)
     return foreign;
 }
 
-double CaptureLimit::depthOf(const std::vector<std::pair<double, double>>& parts, double supply)
+double CaptureLimit::depthOf(const std::vector<DemandPart>& parts, double supply)
 {
-    double logSurvival = 0.0;
-    for (const auto& [part, interceptors] : parts)
+    double depth = 0.0;
+    for (const DemandPart& part : parts)
     {
-        if (part >= supply)
+        if (part.mass >= supply)
         {
             return std::numeric_limits<double>::infinity(); // one interceptor takes all
         }
-        // N physical fibers asking the same part independently: (1 - part / s_n)^N (P40)
-        logSurvival += interceptors * std::log1p(-part / supply);
+        // N physical fibers asking the same part independently, each shadowing itself:
+        // N times one fiber's depth (P40)
+        depth += part.interceptors * shadowedDepth(part.mass / supply, part.shadow);
     }
-    return -logSurvival;
+    return depth;
 }
 
 void CaptureLimit::sortParts(NodeDemand& entry)
@@ -210,9 +222,9 @@ void CaptureLimit::sortParts(NodeDemand& entry)
     // order, their sum and product are the same bits on every run
     std::sort(entry.parts.begin(), entry.parts.end());
     entry.total = 0.0;
-    for (const auto& [part, interceptors] : entry.parts)
+    for (const DemandPart& part : entry.parts)
     {
-        entry.total += interceptors * part;
+        entry.total += part.interceptors * part.mass;
     }
 }
 

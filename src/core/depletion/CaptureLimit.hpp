@@ -1,5 +1,5 @@
 // CaptureLimit: depletion of the spray by the fibers, the mass the fibers capture taken
-// from the parcels that carried it (docs/model.md sec. 7, eqs. P12-P15, P18). Per time step,
+// from the parcels that carried it (docs/model.md sec. 7, eqs. P12-P15, P18, P21). Per time step,
 // after the step's deposit is committed (DensityGrid::commitStep) and eq. 9 evaluated:
 //
 //  1. Demand (P12). A collision sample reads rho by multilinear interpolation of its cell's
@@ -13,6 +13,9 @@
 //         x_n = -ln prod_s (1 - d_sn / s_n)   (sum_s d_sn / s_n = d_n / s_n for thin fibers;
 //                                              0 where s_n = 0), or "saturated" where one
 //                                              sample alone sweeps more than the node holds
+//     A sample given its fiber's strip (attributeSample's strip) adds a (1 + sigma) instead of
+//     -ln(1 - a), to second order: the fiber's self-shadow (P21, SelfShadow.hpp), so that
+//     the lanes crossing a fiber thick against the spacing lose its strip.
 //  3. Removal, per parcel (P14). Parcel p, which deposited w_pn F_p of its mass on node n
 //     (the deposit's weight times the part of the step inside the box), crosses the depth
 //     X_p = F_p sum_n w_pn x_n over the unsaturated nodes and loses its share on the
@@ -75,6 +78,7 @@ struct SampleCapture
     std::array<std::size_t, 8> node{};       // global flat node indices
     std::array<double, 8> mass{};            // d_sc, kg; their sum is the sample's m_coll
     Eigen::Vector3d velocity{0.0, 0.0, 0.0}; // droplet velocity at the sample (eq. 7)
+    std::array<double, 8> shadow{};          // sigma of each part (P21, SelfShadow.hpp); 0: none
 };
 
 // A segment's eq. 9 sample by sample, each with its attribution.
@@ -90,7 +94,8 @@ struct NodeMass
 {
     std::size_t node = 0;
     double mass = 0.0;
-    double interceptors = 1.0;
+    double shadow = 0.0;       // the part's sigma (P21)
+    double interceptors = 1.0; // the physical fibers asking it (P40)
 };
 
 // What limit() found on a block; sums add up across blocks.
@@ -106,8 +111,10 @@ struct CaptureLimitReport
 
 // P12 for one sample of mass sampleMass at a point whose cell corners (corners) have the
 // window sums cornerTotals (nQuantities per corner, as for DensityGrid::interpolated).
+// strip: the fiber's strip across the flow (stripAcrossFlow, P21); zero: no self-shadow.
 SampleCapture attributeSample(const DensityGrid& grid, const CornerWeights& corners,
-                              const double* cornerTotals, double sampleMass, const Eigen::Vector3d& velocity);
+                              const double* cornerTotals, double sampleMass, const Eigen::Vector3d& velocity,
+                              const Eigen::Vector3d& strip = Eigen::Vector3d::Zero());
 
 // P12 over the corners this grid owns (a block's part of attributeSample): massShare is
 // the sample's mass over the whole grid's interpolated mass sum, m_s / Sigma (Sigma: the
@@ -116,7 +123,8 @@ SampleCapture attributeSample(const DensityGrid& grid, const CornerWeights& corn
 // the blocks owning a sample's corners, these are attributeSample's demands (to round-off:
 // (m_s / Sigma) part instead of m_s (part / Sigma)); the whole grid gives all of them.
 SampleCapture attributeOwnedCorners(const DensityGrid& grid, const CornerWeights& corners, double massShare,
-                                    const Eigen::Vector3d& velocity);
+                                    const Eigen::Vector3d& velocity,
+                                    const Eigen::Vector3d& strip = Eigen::Vector3d::Zero());
 
 // Eq. 9 for the segment from a to b with every sample attributed (P12), on a grid that
 // owns every corner the samples read (serial runs; a block reads remote corners itself
@@ -156,12 +164,13 @@ public:
     void clear();
 
     // --- 1. demand (any node; a block sends the foreign part to the owners) -----------------
-    // interceptors: the physical fibers the sample's fiber stands for (N, weighted fibers,
-    // docs/model.md sec. 9), each asking the sample's mass independently: the node's demand
-    // grows by N times it and its survival by the factor (1 - d_sn / s_n)^N (P40).
+    // shadow: each part's self-shadow sigma (P21, SelfShadow.hpp); interceptors: the
+    // physical fibers the sample's fiber stands for (N, weighted fibers, docs/model.md
+    // sec. 9), each asking the sample's part independently: the node's demand grows by N
+    // times it and its depth by N times one fiber's (P40).
     void addDemand(const SampleCapture& sample, double interceptors = 1.0);
     void addDemand(const SegmentCapture& segment, double interceptors = 1.0);
-    void addDemand(std::size_t node, double mass, double interceptors = 1.0);
+    void addDemand(std::size_t node, double mass, double shadow = 0.0, double interceptors = 1.0);
     // The demand at nodes the grid does not own, moved out, in node order: each addDemand
     // call's part apart (the owner multiplies their survivals, P13), in the order added.
     std::vector<NodeMass> takeForeignDemand(const DensityGrid& grid);
@@ -253,19 +262,33 @@ private:
             + bricks_[0] * (static_cast<std::size_t>(j) + bricks_[1] * static_cast<std::size_t>(k));
     }
 
-    // Per node: the demand d_n and its parts d_sn, one per addDemand call, each with the
-    // physical fibers asking it (mass, interceptors)
+    // One interceptor's part of a node's demand: d_sn, its self-shadow sigma (P21) and the
+    // physical fibers asking it (P40)
+    struct DemandPart
+    {
+        double mass = 0.0, shadow = 0.0, interceptors = 1.0;
+        bool operator<(const DemandPart& other) const
+        {
+            if (mass != other.mass)
+                return mass < other.mass;
+            if (shadow != other.shadow)
+                return shadow < other.shadow;
+            return interceptors < other.interceptors;
+        }
+    };
+    // Per node: the demand d_n and its parts d_sn, one per interceptor (addDemand call)
     struct NodeDemand
     {
         double total = 0.0;
-        std::vector<std::pair<double, double>> parts;
+        std::vector<DemandPart> parts;
     };
     // The parts in value order and their total (the same bits whatever the order added).
     static void sortParts(NodeDemand& entry);
     // removed_ from removedTerms_ (remove()'s r_pn), summed per node in value order.
     void sumRemovedTerms();
-    // x_n = -ln prod (1 - d_sn / s_n)^N_s (P13, P40); infinity where a part is >= s_n
-    static double depthOf(const std::vector<std::pair<double, double>>& parts, double supply);
+    // x_n = sum of the parts' depths, N a (1 + sigma) to second order (P13, P21, P40);
+    // infinity where a part is >= s_n
+    static double depthOf(const std::vector<DemandPart>& parts, double supply);
     std::unordered_map<std::size_t, NodeDemand> demand_;
     std::unordered_map<std::size_t, double> granted_; // g_n
     std::unordered_map<std::size_t, double> depth_;   // x_n > 0, owned nodes

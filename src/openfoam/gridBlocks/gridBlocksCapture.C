@@ -20,6 +20,14 @@ Description
 #include <algorithm>
 #include <unordered_map>
 
+namespace
+{
+// A request for a sample's demand: its point, m_s / Sigma and its strip across
+// the flow (P21: each owner forms its own corners' self-shadow from them); with
+// weighted fibers one value more, the physical fibers behind it (P40)
+constexpr Foam::label requestSize = 7;
+}
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 void Foam::dropletFiber::gridBlocks::attributeDemand
@@ -27,6 +35,7 @@ void Foam::dropletFiber::gridBlocks::attributeDemand
     const ::dropletFiber::DensityGrid& grid,
     const std::vector<Eigen::Vector3d>& points,
     const std::vector<double>& massShares,
+    const std::vector<Eigen::Vector3d>& strips,
     ::dropletFiber::CaptureLimit& limit,
     std::vector<::dropletFiber::SampleCapture>& local,
     std::vector<std::vector<std::size_t>>& askedFor
@@ -44,14 +53,19 @@ void Foam::dropletFiber::gridBlocks::attributeDemand
         local[p] =
             ::dropletFiber::attributeOwnedCorners
             (
-                grid, corners, massShares[p], Eigen::Vector3d::Zero()
+                grid, corners, massShares[p], Eigen::Vector3d::Zero(),
+                strips[p]
             );
         const scalar interceptors =
             grantInterceptors_.empty() ? 1 : grantInterceptors_[p];
         limit.addDemand(local[p], interceptors);
         if (Pstream::parRun())
         {
-            const scalar extra[2] = {massShares[p], interceptors};
+            const scalar extra[requestSize - 3 + 1] =
+            {
+                massShares[p], strips[p].x(), strips[p].y(), strips[p].z(),
+                interceptors
+            };
             askCornerOwners
             (
                 corners, points[p], p, askedFor, extra, grantRequestSize_ - 3
@@ -67,6 +81,7 @@ std::vector<double> Foam::dropletFiber::gridBlocks::grantCapture
     const std::vector<Eigen::Vector3d>& points,
     const std::vector<double>& massShares,
     const std::vector<double>* interceptors,
+    const std::vector<Eigen::Vector3d>& strips,
     const std::vector<::dropletFiber::Parcel>& parcels,
     const double dt,
     ::dropletFiber::CaptureLimit& limit,
@@ -83,7 +98,7 @@ std::vector<double> Foam::dropletFiber::gridBlocks::grantCapture
     {
         grantInterceptors_ = *interceptors;
     }
-    grantRequestSize_ = interceptors ? 5 : 4;
+    grantRequestSize_ = interceptors ? requestSize + 1 : requestSize;
     grantRemoteInterceptors_.assign(outgoing_.size(), {});
     // Built in the members that realiseCapture (discrete hits,
     // gridBlocksHits.C) reads after: no copy, in either collision mode
@@ -97,7 +112,7 @@ std::vector<double> Foam::dropletFiber::gridBlocks::grantCapture
         outgoing_[proci].clear();
     }
     // P12: the demand at this block's corners, the rest asked of the owners
-    attributeDemand(grid, points, massShares, limit, local, askedFor);
+    attributeDemand(grid, points, massShares, strips, limit, local, askedFor);
     List<List<scalar>> requests(outgoing_.size());
     if (Pstream::parRun())
     {
@@ -109,16 +124,17 @@ std::vector<double> Foam::dropletFiber::gridBlocks::grantCapture
             for (label i = 0; i + size <= in.size(); i += size)
             {
                 const Eigen::Vector3d point(in[i], in[i + 1], in[i + 2]);
+                const Eigen::Vector3d strip(in[i + 4], in[i + 5], in[i + 6]);
                 remote[proci].push_back
                 (
                     ::dropletFiber::attributeOwnedCorners
                     (
                         grid, ::dropletFiber::multilinearWeights(spec_, point),
-                        in[i + 3], Eigen::Vector3d::Zero()
+                        in[i + 3], Eigen::Vector3d::Zero(), strip
                     )
                 );
-                const scalar interceptors = size > 4 ? in[i + 4] : 1;
-                if (size > 4)
+                const scalar interceptors = size > requestSize ? in[i + requestSize] : 1;
+                if (size > requestSize)
                 {
                     grantRemoteInterceptors_[proci].push_back(interceptors);
                 }
@@ -165,10 +181,8 @@ std::vector<double> Foam::dropletFiber::gridBlocks::grantedMasses
             const std::size_t size = std::size_t(grantRequestSize_);
             for (std::size_t i = 0; i < grantRemote_[proci].size(); ++i)
             {
-                const Eigen::Vector3d point
-                (
-                    in[size*i], in[size*i + 1], in[size*i + 2]
-                );
+                const label at = label(size*i);
+                const Eigen::Vector3d point(in[at], in[at + 1], in[at + 2]);
                 const auto corners = ::dropletFiber::multilinearWeights(spec_, point);
                 std::array<double, 8> answer{};
                 grantedSlots(limit, grantRemote_[proci][i], corners, answer);

@@ -9,10 +9,12 @@ weight from system/matFibers, the mat's interception depth S and the lanes' mean
   over the steps after the time `after`: the parcel mass that left through the outlet
   over the mass sprayed (escapedMass / sprayedMass, their increments), and 1 -
   capturedStep / sprayedMass for the same steps.
-- laneMeanField(fibers, rp, W, D, h): the model's limit for small steps, the mean over
-  the parcels' lanes (y = (j/4 + 1/8) mm) of exp(-S_I(y)), S_I the piecewise-linear
-  interpolant across the flow of the nodes' depths, each fiber's strip 2 (r_F + r_p)
-  (times N) spread over its two node columns by the hat weights of its y.
+- laneFields(fibers, rp, W, D, h): the model's own value for the mat, (with, without the
+  self-shadow of P21): the mean over the parcels' lanes (y = (j/4 + 1/8) mm) of
+  exp(-S_I(y)), S_I the piecewise-linear interpolant across the flow of the nodes'
+  depths, each fiber's strip 2 (r_F + r_p) (times N) spread over its two node columns
+  by the hat weights of its y. It holds the mat's clustering at the grid's scale, which
+  exp(-S) does not.
 """
 import math
 import os
@@ -57,14 +59,39 @@ def hat(u):
     return max(0.0, 1.0 - abs(u))
 
 
-def laneMeanField(fibers, rp, W, D, h):
+def hatMean(n, phi, columns, pieces=200):
+    """The mean over node n's hat (within the duct) of f = sum_m phi[m] hat_m."""
+    lo, hi = max(0, n - 1), min(columns, n + 1)
+    weighted = weights = 0.0
+    for k in range(pieces):
+        y = lo + (hi - lo) * (k + 0.5) / pieces
+        f = sum(value * hat(y - m) for m, value in phi.items())
+        weighted += hat(y - n) * f
+        weights += hat(y - n)
+    return weighted / weights
+
+
+def laneFields(fibers, rp, W, D, h):
+    """(shadowed, unshadowed) lanes' fields of the mat: each fiber's strip over its two node
+    columns (phi_n, by the hat weights of its y), scaled by its self-shadow 1 + <f>_n / 2
+    (<f>_n the mean over column n's hat of the fiber's own lane depth f = sum_m phi_m hat_m,
+    docs/model.md sec. 7, P21), times the physical fibers it stands for (sec. 9)."""
     columns = int(round(W / h))
-    nodeDepth = [0.0] * (columns + 1)
+    plain = [0.0] * (columns + 1)
+    shadowed = [0.0] * (columns + 1)
     for a, b, rF, n in fibers:
         u = a[1] / h
-        for c in range(columns + 1):
+        lower = min(int(math.floor(u)), columns - 1)
+        phi = {}
+        for c in (lower, lower + 1):
             dual = 0.5 if c in (0, columns) else 1.0
-            nodeDepth[c] += n * 2.0 * (rF + rp) * math.dist(a, b) / (h * D) * hat(u - c) / dual
-    lanes = [(0.25 * j + 0.125) * 1e-3 for j in range(int(round(4 * W / 1e-3)))]
-    return sum(math.exp(-sum(nodeDepth[c] * hat(y / h - c) for c in range(columns + 1)))
-               for y in lanes) / len(lanes)
+            phi[c] = 2.0 * (rF + rp) * math.dist(a, b) / (h * D) * hat(u - c) / dual
+        for c, value in phi.items():
+            plain[c] += n * value
+            shadowed[c] += n * value * (1.0 + 0.5 * hatMean(c, phi, columns))
+    lanes = [(0.25 * j + 0.125) * 1e-3 / h for j in range(int(round(4 * W / 1e-3)))]
+
+    def field(depth):
+        return sum(math.exp(-sum(depth[c] * hat(y - c) for c in range(columns + 1)))
+                   for y in lanes) / len(lanes)
+    return field(shadowed), field(plain)

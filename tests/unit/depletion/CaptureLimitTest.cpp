@@ -328,7 +328,7 @@ TEST(CaptureLimit, IndependentInterceptorsMultiplyTheirSurvivals)
     ASSERT_EQ(sent.size(), 2u);
     for (const NodeMass& part : sent)
     {
-        owner.addDemand(part.node, part.mass);
+        owner.addDemand(part.node, part.mass, part.shadow);
     }
     owner.limit(grid);
     EXPECT_EQ(owner.opticalDepth(nodeA), limit.opticalDepth(nodeA));
@@ -363,7 +363,7 @@ TEST(CaptureLimit, BlocksGivePartsThatAddUpToTheWholeGrids)
         {
             if (blocks[b]->owns(entry.node))
             {
-                blockLimits[b].addDemand(entry.node, entry.mass);
+                blockLimits[b].addDemand(entry.node, entry.mass, entry.shadow);
             }
         }
     }

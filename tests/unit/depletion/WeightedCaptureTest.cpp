@@ -1,5 +1,6 @@
 // Weighted fibers in depletion (docs/model.md sec. 9, P40-P41): a demand part asked by N
-// physical fibers (CaptureLimit::addDemand's interceptors) must act as N independent
+// physical fibers (CaptureLimit::addDemand's interceptors; here parts without a strip, so
+// P13's depth, no self-shadow) must act as N independent
 // interceptors, i.e. as N parts of the same mass added one by one (P13's product), and
 // not as one fiber N times as thick (N d_sn / s_n in one factor) nor as N times one
 // fiber's removal. The discrete hits' realised removal (P31) must follow the same weights.
@@ -66,8 +67,8 @@ TEST(WeightedCapture, NPhysicalFibersAreNIndependentInterceptors)
     ThreeNodes weighted, separate;
     const double s = weighted.s;
     CaptureLimit one, many;
-    one.addDemand(weighted.nodeA, 0.1 * s, 7.0);
-    one.addDemand(weighted.nodeC, 0.1 * s, 2.5);
+    one.addDemand(weighted.nodeA, 0.1 * s, 0.0, 7.0);
+    one.addDemand(weighted.nodeC, 0.1 * s, 0.0, 2.5);
     for (int k = 0; k < 7; ++k)
     {
         many.addDemand(separate.nodeA, 0.1 * s);
@@ -104,7 +105,7 @@ TEST(WeightedCapture, OneFiberSweepingTheWholeNodeSaturatesItWhateverItsWeight)
 {
     ThreeNodes nodes;
     CaptureLimit limit;
-    limit.addDemand(nodes.nodeB, 1.2 * nodes.s, 1e5);
+    limit.addDemand(nodes.nodeB, 1.2 * nodes.s, 0.0, 1e5);
     CaptureLimitReport report = limit.limit(nodes.grid);
     EXPECT_TRUE(std::isinf(limit.opticalDepth(nodes.nodeB)));
     const std::vector<double> c = limit.removeFromParcels(nodes.grid, nodes.parcels, 1e-3, report);
@@ -117,9 +118,9 @@ TEST(WeightedCapture, OneFiberSweepingTheWholeNodeSaturatesItWhateverItsWeight)
 TEST(WeightedCapture, BadInterceptorsAreRefused)
 {
     CaptureLimit limit;
-    EXPECT_THROW(limit.addDemand(3, 1.0, 0.0), std::invalid_argument);
-    EXPECT_THROW(limit.addDemand(3, 1.0, -2.0), std::invalid_argument);
-    EXPECT_THROW(limit.addDemand(3, 1.0, std::nan("")), std::invalid_argument);
+    EXPECT_THROW(limit.addDemand(3, 1.0, 0.0, 0.0), std::invalid_argument);
+    EXPECT_THROW(limit.addDemand(3, 1.0, 0.0, -2.0), std::invalid_argument);
+    EXPECT_THROW(limit.addDemand(3, 1.0, 0.0, std::nan("")), std::invalid_argument);
 }
 
 TEST(WeightedCapture, RealisedHitsOfAWeightedFiberAreRemovedNTimes)

@@ -308,6 +308,7 @@ std::vector<double> Foam::dropletFiber::couplingGrid::grantCapture
     const std::vector<Eigen::Vector3d>& points,
     const std::vector<double>& shares,
     const std::vector<double>* interceptors,
+    const std::vector<Eigen::Vector3d>& strips,
     const std::vector<::dropletFiber::Parcel>& parcels,
     const scalar dt,
     ::dropletFiber::CaptureLimit& limit,
@@ -318,8 +319,8 @@ std::vector<double> Foam::dropletFiber::couplingGrid::grantCapture
 {
     return blocks_->grantCapture
     (
-        *grid_, points, shares, interceptors, parcels, dt, limit, report,
-        captured, statistics
+        *grid_, points, shares, interceptors, strips, parcels, dt, limit,
+        report, captured, statistics
     );
 }
 

@@ -22,6 +22,7 @@ Description
 
 #include "fiberCapture.H"
 #include "PstreamReduceOps.H"
+#include "depletion/SelfShadow.hpp"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -68,8 +69,9 @@ Foam::dropletFiber::fiberCapture::limitCapture
     const std::vector<double> granted =
         grid.grantCapture
         (
-            points, shares, held.weighted ? &interceptors : nullptr, parcels,
-            dt, captureLimit_, report, capturedFraction_, statistics
+            points, shares, held.weighted ? &interceptors : nullptr,
+            stripsAcrossFlow(held, fields, samplesPerSegment), parcels, dt,
+            captureLimit_, report, capturedFraction_, statistics
         );
     step_ = depletionSummary();
     step_.demanded = demanded;
@@ -120,6 +122,53 @@ std::vector<double> Foam::dropletFiber::fiberCapture::samplesInterceptors
         }
     }
     return interceptors;
+}
+
+
+std::vector<Eigen::Vector3d>
+Foam::dropletFiber::fiberCapture::stripsAcrossFlow
+(
+    const heldFibers& held,
+    const std::vector<::dropletFiber::DropletFieldValue>& fields,
+    const std::vector<int>& samplesPerSegment
+) const
+{
+    // Per sample, in collisionMasses' order: the strip 2 (r_F + r_p) of eq. 9,
+    // r_p its mean radius, across the segment and the relative velocity
+    std::vector<Eigen::Vector3d> strips(fields.size(), Eigen::Vector3d::Zero());
+    std::size_t next = 0;
+    std::size_t segment = 0;
+    for (const ::dropletFiber::Fiber& fiber : held.fibers)
+    {
+        const Eigen::Matrix3Xd& x = fiber.positions();
+        const Eigen::Matrix3Xd& v = fiber.velocities();
+        for (Eigen::Index j = 0; j < fiber.segmentCount(); ++j)
+        {
+            const Eigen::Vector3d segmentVelocity = 0.5*(v.col(j) + v.col(j + 1));
+            const Eigen::Vector3d piece = x.col(j + 1) - x.col(j);
+            for (int s = 0; s < samplesPerSegment[segment]; ++s, ++next)
+            {
+                const ::dropletFiber::DropletFieldValue& field = fields[next];
+                if (!field.inside || !(field.rho > 0))
+                {
+                    continue;
+                }
+                const scalar meanRadius =
+                    collision_.radiusAverage
+                 == ::dropletFiber::RadiusAverage::Mass
+                  ? field.rMeanMass
+                  : field.rMeanNumber;
+                strips[next] =
+                    ::dropletFiber::stripAcrossFlow
+                    (
+                        2*(fiber.material().radius + meanRadius), piece,
+                        field.velocity - segmentVelocity
+                    );
+            }
+            ++segment;
+        }
+    }
+    return strips;
 }
 
 
