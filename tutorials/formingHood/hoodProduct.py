@@ -175,7 +175,7 @@ def main():
     t = d["Time"]
     end = t[-1]
     if end < start + width:  # a short run: its last third
-        start = t[0] + 2 * (end - t[0]) / 3
+        start = round(t[0] + 2 * (end - t[0]) / 3, 3)
         width = (end - start) / 2
     y = resin_fraction(case)
     glass = glass_flow(log)
@@ -239,7 +239,7 @@ def main():
             for stage in ("cpuDeposit", "cpuCollision", "cpuFibers", "parcels", "nodeWeights",
                           "collisionSamples", "fiberPoints") if p[stage + "Mean"].sum() > 0))
 
-    distances = np.arange(0.0, 0.8001, 0.05)
+    distances = np.arange(0.0, 0.4501, 0.05)  # to the spinner's axis (s = 0.42 m)
     profile, times = axis_profile(case, start, distances)
     header = "Droplet mass density rho (kg/m3) along the nozzles' axes (mean of 8 nozzles, times %s)" \
         % " ".join("%g" % x for x in times)
