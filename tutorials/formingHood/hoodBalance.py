@@ -5,7 +5,10 @@ through the walls and, counted as leaving the "system", through the outlet) and 
 
 The cloud does not know of the droplets the fibers took (depletion), so its own
 report closes as introduced - escaped - phase change - in system = captured:
-the difference is the check. Usage: hoodBalance.py CASE LOG [TOLERANCE]
+the difference is the check. Without depletion (Allrun -noDepletion: the log says
+that the spray keeps every droplet) the fibers' capture is not taken from the spray:
+sprayed = airborne + evaporated + walls + outlet, the captured printed beside it.
+Usage: hoodBalance.py CASE LOG [TOLERANCE]
 (relative to the mass sprayed; default 1e-9). Exit 1 when it does not close.
 """
 import glob
@@ -69,24 +72,32 @@ def captured_total(case, time):
 def main():
     case, log = sys.argv[1], sys.argv[2]
     tolerance = float(sys.argv[3]) if len(sys.argv) > 3 else 1e-9
-    r = last_cloud_report(log if os.path.isabs(log) else os.path.join(case, log))
+    log = log if os.path.isabs(log) else os.path.join(case, log)
+    r = last_cloud_report(log)
     captured = captured_total(case, r["time"])
+    depletion = "the spray keeps every droplet" not in open(log).read()
     walls = r["escaped"].get("walls", 0.0)
     out = sum(v for k, v in r["escaped"].items() if k != "walls")
-    rest = r["introduced"] - r["inSystem"] - r["evaporated"] - walls - out - captured
+    rest = r["introduced"] - r["inSystem"] - r["evaporated"] - walls - out \
+        - (captured if depletion else 0.0)
     sprayed = r["introduced"]
     print("Binder balance at t = %s s (kg, and share of the binder sprayed):" % r["time"])
     for name, value in [("sprayed", sprayed), ("airborne", r["inSystem"]),
                         ("evaporated (water)", r["evaporated"]), ("on the hood walls", walls),
-                        ("through the outlet", out), ("captured by the fibers", captured)]:
+                        ("through the outlet", out)] + (
+                            [("captured by the fibers", captured)] if depletion else []):
         print("    %-24s %.6e  %8.4f %%" % (name, value, 100 * value / sprayed if sprayed else 0))
     relative = abs(rest) / sprayed if sprayed else 0.0
     print("    %-24s %.3e  (relative %.2e, allowed %.0e)" % ("not accounted for", rest, relative,
                                                           tolerance))
+    if not depletion:
+        print("    %-24s %.6e  (depletion off: not taken from the spray)"
+              % ("captured by the fibers", captured))
     if relative > tolerance:
         print("hoodBalance: the balance does not close")
         return 1
-    print("Balance closed: sprayed = airborne + evaporated + walls + outlet + captured")
+    print("Balance closed: sprayed = airborne + evaporated + walls + outlet"
+          + (" + captured" if depletion else " (depletion off)"))
     return 0
 
 
