@@ -16,6 +16,7 @@ CaptureLimitReport& CaptureLimitReport::operator+=(const CaptureLimitReport& oth
     nodesLimited += other.nodesLimited;
     massDemanded += other.massDemanded;
     massGranted += other.massGranted;
+    excessDemanded += other.excessDemanded;
     return *this;
 }
 
@@ -263,6 +264,7 @@ CaptureLimitReport CaptureLimit::limit(const DensityGrid& grid)
         report.massDemanded += entry.total;
         report.nodesDemanded += entry.total > 0.0 ? 1 : 0;
         report.nodesLimited += entry.total > supply ? 1 : 0;
+        report.excessDemanded += entry.total > supply ? entry.total - supply : 0.0;
         if (depth > 0.0)
         {
             depth_[node] = depth;

@@ -105,6 +105,7 @@ struct CaptureLimitReport
     std::int64_t nodesLimited = 0;  // of which demand > the window's mass per step (x_n > 1)
     double massDemanded = 0.0;      // sum d_n (eq. 9 without the limit), kg
     double massGranted = 0.0;       // sum R_n: captured, and removed from the spray, kg
+    double excessDemanded = 0.0;    // sum of d_n - s_n over the limited nodes, kg
 
     CaptureLimitReport& operator+=(const CaptureLimitReport& other);
 };

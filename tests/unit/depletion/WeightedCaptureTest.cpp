@@ -108,6 +108,8 @@ TEST(WeightedCapture, OneFiberSweepingTheWholeNodeSaturatesItWhateverItsWeight)
     limit.addDemand(nodes.nodeB, 1.2 * nodes.s, 0.0, 1e5);
     CaptureLimitReport report = limit.limit(nodes.grid);
     EXPECT_TRUE(std::isinf(limit.opticalDepth(nodes.nodeB)));
+    EXPECT_EQ(report.nodesLimited, 1);
+    EXPECT_NEAR(report.excessDemanded, (1.2e5 - 1.0) * nodes.s, 1e-10 * nodes.s);
     const std::vector<double> c = limit.removeFromParcels(nodes.grid, nodes.parcels, 1e-3, report);
     EXPECT_EQ(c[1], 1.0);
     // The node gives what it holds, s, to 1e5 fibers asking 1.2 s each

@@ -93,11 +93,9 @@ Foam::dropletFiber::fiberCapture::limitCapture
             ++segment;
         }
     }
-    // The demand where the limit bound (its granted part is the supply)
-    if (report.nodesLimited > 0)
-    {
-        step_.limitedDemand = report.massDemanded - report.massGranted;
-    }
+    // What eq. 9 asked beyond the mean step's mass at the nodes where the
+    // limit bound
+    step_.limitedDemand = report.excessDemanded;
     return granted;
 }
 
@@ -181,12 +179,12 @@ void Foam::dropletFiber::fiberCapture::logLimitOnce()
     loggedLimit_ = true;
     Info<< type() << " " << name() << ": at time " << time_.timeName()
         << " the fibers asked more droplet mass of "
-        << step_.nodesLimited << " grid nodes than this step's"
-        << " parcels brought there (eq. 9 asked "
-        << step_.limitedDemand << " kg more than they hold): their"
-        << " capture is limited to what the nodes hold (docs/model.md sec. 7;"
-        << " a large time step, a thin spray or fibers thicker than the grid"
-        << " spacing). Logged once." << nl << endl;
+        << step_.nodesLimited << " grid nodes than the parcels bring there"
+        << " in a step (eq. 9 asked " << step_.limitedDemand
+        << " kg more than the window's mean step holds there): their capture"
+        << " is limited to what the nodes hold (docs/model.md sec. 7; a large"
+        << " time step, a thin spray, fibers thicker than the grid spacing or"
+        << " fibers each standing for many). Logged once." << nl << endl;
 }
 
 
