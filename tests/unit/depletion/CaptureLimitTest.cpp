@@ -317,7 +317,7 @@ TEST(CaptureLimit, IndependentInterceptorsMultiplyTheirSurvivals)
     EXPECT_NEAR(report.massGranted, (0.75 + 1.0 - std::pow(1.0 - 1e-3, 1000) + 1.0) * s, 1e-13 * s);
     EXPECT_NEAR(limit.grantedRatio(nodeA), 0.75, 1e-15);
     EXPECT_NEAR(limit.grantedRatio(nodeC), 1.0 / 1.8, 1e-15);
-    EXPECT_EQ(report.nodesLimited, 1); // C: 1.8 s > s
+    EXPECT_EQ(report.nodesLimited, 1);                      // C: 1.8 s > s
     EXPECT_NEAR(report.excessDemanded, 0.8 * s, 1e-15 * s); // what C asked beyond s
     // A block that sends the parts to the owner (takeForeignDemand) keeps them apart.
     CaptureLimit sender, owner;
