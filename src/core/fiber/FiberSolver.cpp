@@ -120,6 +120,8 @@ void FiberSolver::advanceSpan(Fiber& fiber, std::size_t fiberIndex, double h, do
     {
         if (result.loose)
             ++report.looseConvergences;
+        if (reaction_ != nullptr)
+            implicitStep_.addDragImpulse(drag_, *reaction_, firstPoint);
         if (settings_.projectVelocitiesAfterSubStep)
             projectVelocities(fiber);
         ++acceptedSubSteps;
@@ -200,7 +202,8 @@ void FiberSolver::addDiagnostics(const std::vector<Fiber>& fibers, StepReport& r
 }
 
 StepReport FiberSolver::step(std::vector<Fiber>& fibers, double dt, const AirSample& air,
-                             const CaptureSources* capture, const std::vector<std::size_t>* fiberNumbers)
+                             const CaptureSources* capture, const std::vector<std::size_t>* fiberNumbers,
+                             DragReaction* reaction)
 {
     if (!(dt > 0.0))
         throw std::invalid_argument("FiberSolver::step: dt must be > 0");
@@ -224,6 +227,9 @@ StepReport FiberSolver::step(std::vector<Fiber>& fibers, double dt, const AirSam
 
     const AirSampleLayout layout = airSampleLayout(fibers);
     const AirSample* airPointer = airForDrag(layout, air);
+    if (reaction != nullptr)
+        reaction->reset(layout.pointCount);
+    reaction_ = airPointer != nullptr ? reaction : nullptr;
     for (std::size_t f = 0; f < fibers.size(); ++f)
     {
         if (fibers[f].immobile())
@@ -233,6 +239,7 @@ StepReport FiberSolver::step(std::vector<Fiber>& fibers, double dt, const AirSam
         ++report.fibersAdvanced;
     }
 
+    reaction_ = nullptr;
     addDiagnostics(fibers, report);
     return report;
 }

@@ -42,9 +42,13 @@ public:
     // a fiber cannot be advanced even at the smallest allowed sub-step.
     // fiberNumbers: nullptr, or the number of each fiber in the messages (a caller that
     // steps a subset of its fibers names them by their place in the whole list).
+    // reaction: nullptr, or where the drag over the step goes, per point of the air
+    // sample (DragReaction.hpp; reset here): the impulse of the accepted sub-steps'
+    // drag at their converged iterates, which is what changed the fibers' momentum.
     StepReport step(std::vector<Fiber>& fibers, double dt, const AirSample& air,
                     const CaptureSources* capture = nullptr,
-                    const std::vector<std::size_t>* fiberNumbers = nullptr);
+                    const std::vector<std::size_t>* fiberNumbers = nullptr,
+                    DragReaction* reaction = nullptr);
 
 private:
     // The sample the drag uses (nullptr: no drag); checks it fits the fibers' layout.
@@ -62,6 +66,8 @@ private:
 
     FiberSolverSettings settings_;
     ImplicitFiberStep implicitStep_;
+    // Where the step's drag goes (nullptr: nowhere), during step() only.
+    DragReaction* reaction_ = nullptr;
 
     // Work storage reused between sub-steps and fibers (resized only when the point
     // count changes).

@@ -654,6 +654,29 @@ double ImplicitFiberStep::maxSegmentRotation() const
     return largest;
 }
 
+void ImplicitFiberStep::addDragImpulse(const PointDrag& drag, DragReaction& reaction,
+                                       Eigen::Index firstPoint) const
+{
+    if (drag.airVelocity == nullptr)
+        return;
+    const double h = h_;
+    for (Eigen::Index i = 0; i < n_; ++i)
+    {
+        const double cn = cn_(i), ct = ct_(i);
+        // The force of addDragForce, written alike so that it gives the same bits
+        Eigen::Index hi, lo;
+        tangentStencil(i, n_, hi, lo);
+        const Eigen::Vector3d chord = xTheta_.col(hi) - xTheta_.col(lo);
+        const double chordLength = chord.norm();
+        const Eigen::Vector3d t = chord / chordLength;
+        const Eigen::Vector3d w = drag.airVelocity->col(i) - vTheta_.col(i);
+        const double wt = t.dot(w);
+        const Eigen::Vector3d force = cn * w + (ct - cn) * wt * t;
+        reaction.impulse.col(firstPoint + i) += h * force;
+        reaction.coefficientTime(firstPoint + i) += h * isotropicDragCoefficient(cn, ct);
+    }
+}
+
 void ImplicitFiberStep::accept(Fiber& fiber) const
 {
     FiberState& state = fiber.mutableState();

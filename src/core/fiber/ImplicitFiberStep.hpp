@@ -32,6 +32,7 @@
 #pragma once
 
 #include "fiber/BandedLU.hpp"
+#include "fiber/DragReaction.hpp"
 #include "fiber/BendingJoints.hpp"
 #include "fiber/Fiber.hpp"
 #include "fiber/FiberSolverSettings.hpp"
@@ -64,6 +65,12 @@ public:
 
     // Advances fiber by h when it converges; leaves it untouched otherwise.
     SubStepResult advance(Fiber& fiber, double h, const PointDrag& drag, const FiberSolverSettings& settings);
+
+    // The drag of the sub-step advance() last took, at its converged iterate (the
+    // force its equations balanced), times h, added to reaction's columns firstPoint
+    // on; a held point's too, at its prescribed velocity (its support takes it, the
+    // air feels it all the same).
+    void addDragImpulse(const PointDrag& drag, DragReaction& reaction, Eigen::Index firstPoint) const;
 
 private:
     // Per sub-step: geometry, scales, constant terms, first iterate, constant Jacobian.

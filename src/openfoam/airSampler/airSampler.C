@@ -421,10 +421,13 @@ void Foam::dropletFiber::airSampler::askOtherProcessors
             UIPstream is(proci, questions);
             const List<point> theirs(is);
             List<scalar> answer(width*theirs.size(), Zero);
+            labelList& cells = answeredCells_[proci];
+            cells.setSize(theirs.size());
             forAll(theirs, j)
             {
                 const label celli =
                     findCell(theirs[j], -1, -1, boxes.myBox());
+                cells[j] = celli;
                 if (celli >= 0)
                 {
                     tetIndices hint;
@@ -457,6 +460,8 @@ void Foam::dropletFiber::airSampler::askOtherProcessors
             if (v[5] == 0 && a[5] > 0)
             {
                 std::copy(a, a + width, v);
+                answeringProcessor_[asked[proci][j]] = proci;
+                answerIndex_[asked[proci][j]] = j;
             }
         }
     }
@@ -494,6 +499,15 @@ void Foam::dropletFiber::airSampler::askOtherProcessors
     List<scalar> values(width*n, Zero);
     cellHint_.setSize(n, -1);
     tetHint_.setSize(n);
+    answeringProcessor_.setSize(n);
+    answeringProcessor_ = -1;
+    answerIndex_.setSize(n);
+    answerIndex_ = -1;
+    answeredCells_.setSize(Pstream::nProcs());
+    for (labelList& cells : answeredCells_)
+    {
+        cells.clear();
+    }
     label previousPointCell = -1;
     for (label i = 0; i < n; ++i)
     {
@@ -591,6 +605,84 @@ Foam::label Foam::dropletFiber::airSampler::firstNonFinite
         return label(i);
     }
     return -1;
+}
+
+
+void Foam::dropletFiber::airSampler::spreadToCells
+(
+    const Eigen::Matrix3Xd& force,
+    const Eigen::VectorXd& coefficient,
+    vectorField& cellForce,
+    scalarField& cellCoefficient,
+    vector& outside,
+    parallelStatistics& statistics
+) const
+{
+    if (force.cols() != cellHint_.size())
+    {
+        FatalErrorInFunction
+            << "the reaction has " << force.cols() << " points, the last"
+            << " sample " << cellHint_.size() << abort(FatalError);
+    }
+    // Per point handed on: its place in the question, force (3), coefficient
+    constexpr label perPoint = 5;
+    List<DynamicList<scalar>> handed(Pstream::nProcs());
+    for (label i = 0; i < force.cols(); ++i)
+    {
+        const vector f(force(0, i), force(1, i), force(2, i));
+        if (cellHint_[i] >= 0)
+        {
+            cellForce[cellHint_[i]] += f;
+            cellCoefficient[cellHint_[i]] += coefficient(i);
+        }
+        else if (answeringProcessor_[i] >= 0)
+        {
+            DynamicList<scalar>& to = handed[answeringProcessor_[i]];
+            to.append(scalar(answerIndex_[i]));
+            to.append(f.x());
+            to.append(f.y());
+            to.append(f.z());
+            to.append(coefficient(i));
+        }
+        else
+        {
+            outside += f;
+        }
+    }
+    if (!Pstream::parRun())
+    {
+        return;
+    }
+    PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
+    forAll(handed, proci)
+    {
+        if (handed[proci].size())
+        {
+            UOPstream os(proci, buffers);
+            os << handed[proci];
+            statistics.countSent
+            (
+                handed[proci].byteSize(), parallelStatistics::traffic::fibers
+            );
+        }
+    }
+    labelList recvSizes;
+    buffers.finishedSends(recvSizes);
+    forAll(recvSizes, proci)
+    {
+        if (!recvSizes[proci])
+        {
+            continue;
+        }
+        UIPstream is(proci, buffers);
+        const List<scalar> theirs(is);
+        for (label k = 0; k < theirs.size(); k += perPoint)
+        {
+            const label celli = answeredCells_[proci][label(theirs[k])];
+            cellForce[celli] += vector(theirs[k+1], theirs[k+2], theirs[k+3]);
+            cellCoefficient[celli] += theirs[k+4];
+        }
+    }
 }
 
 

@@ -81,13 +81,15 @@ Foam::functionObjects::dropletFiberCollision::dropletFiberCollision
     population_(*this, mesh_),
     capture_(*this, mesh_),
     motion_(*this, mesh_),
+    reaction_(*this, mesh_),
     restart_(*this, mesh_),
-    stateParts_(4)
+    stateParts_(5)
 {
     stateParts_.set(0, &population_);
     stateParts_.set(1, &capture_);
     stateParts_.set(2, &spray_);
     stateParts_.set(3, &grid_);
+    stateParts_.set(4, &reaction_);
     read(dict);
     // The table's columns per liquid species; the state's totals of them
     if (capture_.depletion())
@@ -199,7 +201,8 @@ void Foam::functionObjects::dropletFiberCollision::advanceFibers
 {
     const ::dropletFiber::StepReport report = motion_.advance
     (
-        population_.fibers(), population_.boxes(), dt, capture, statistics_
+        population_.fibers(), population_.boxes(), dt, capture, statistics_,
+        reaction_
     );
     step.capturedStep =
         capture_.countCaptured(population_.fibers(), capture);
@@ -227,6 +230,7 @@ bool Foam::functionObjects::dropletFiberCollision::read(const dictionary& dict)
     const dropletFiber::gridSettings grid =
         dropletFiber::readGridSettings(dict.subOrEmptyDict("grid"), mesh_);
     motion_.read(dict);
+    reaction_.readCoupling(dict.subOrEmptyDict("fibers"));
     if (running)
     {
         grid_.checkUnchanged(grid, dict.subOrEmptyDict("grid"));

@@ -85,6 +85,7 @@ void Foam::functionObjects::dropletFiberCollision::reportSettings()
     motion_.reportAir(Info);
     grid_.reportMemory(Info, population_.pointsHere());
     motion_.report(Info, population_.injectorCount(), population_.count());
+    reaction_.report(Info);
     output_.report(Info);
     Info<< endl;
 }

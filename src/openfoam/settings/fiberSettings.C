@@ -33,7 +33,9 @@ const wordList fibersKeys
     // read by readFiberTurbulence (turbulenceSettings.H)
     "turbulence",
     // read by the function object (fiberOwnership::holderRule)
-    "holders"
+    "holders",
+    // read by airReaction: the fibers' drag on the air
+    "coupled", "couplingWarning"
 };
 
 //- The entries of an injector besides the material: read by readFiberInjectors

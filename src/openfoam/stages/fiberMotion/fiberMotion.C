@@ -143,7 +143,8 @@ std::string Foam::dropletFiber::fiberMotion::stepFibers
     const scalar dt,
     const ::dropletFiber::AirSample& air,
     const ::dropletFiber::CaptureSources& capture,
-    ::dropletFiber::StepReport& report
+    ::dropletFiber::StepReport& report,
+    const bool reaction
 )
 {
     // The solver's messages name the fibers by their ids
@@ -151,7 +152,11 @@ std::string Foam::dropletFiber::fiberMotion::stepFibers
     std::string failure;
     try
     {
-        report = solver_->step(held.fibers, dt, air, &capture, &ids);
+        report = solver_->step
+        (
+            held.fibers, dt, air, &capture, &ids,
+            reaction ? &dragReaction_ : nullptr
+        );
     }
     catch (const std::exception& e)
     {
@@ -189,7 +194,8 @@ Foam::dropletFiber::fiberMotion::advanceFibers
     const processorBoxes& boxes,
     const scalar dt,
     ::dropletFiber::CaptureSources& capture,
-    parallelStatistics& statistics
+    parallelStatistics& statistics,
+    airReaction& reaction
 )
 {
     // With turbulent air the fluctuation u' of every point is advanced
@@ -215,7 +221,11 @@ Foam::dropletFiber::fiberMotion::advanceFibers
     statistics.timed
     (
         stage::fibers,
-        [&]() { failure = stepFibers(held, dt, air, capture, report); }
+        [&]()
+        {
+            failure =
+                stepFibers(held, dt, air, capture, report, reaction.wanted());
+        }
     );
     std::size_t points = 0;
     for (const ::dropletFiber::Fiber& fiber : held.fibers)
@@ -227,6 +237,18 @@ Foam::dropletFiber::fiberMotion::advanceFibers
     // A fiber that cannot be advanced even at the smallest sub-step stops
     // the run with the reason (the results written so far stay)
     stopIfStepFailed(failure);
+    if (reaction.wanted())
+    {
+        reaction.startStep();
+        const bool sampled =
+            returnReduce(label(air.pointCount()), sumOp<label>()) > 0;
+        handMovingDrag(held, sampled, dt, reaction, statistics);
+        if (reaction.coupled())
+        {
+            handImmobileDrag(held, boxes, reaction, statistics);
+        }
+        reaction.finishStep(air_->velocity(), air_->referenceDensity());
+    }
 
     // The figures the table and the log report, over all fibers
     report.maxSegmentLengthError =
@@ -254,6 +276,7 @@ Foam::dropletFiber::fiberMotion::fiberMotion
 void Foam::dropletFiber::fiberMotion::read(const dictionary& dict)
 {
     air_.reset(new airSampler(mesh_, dict.subOrEmptyDict("air")));
+    immobileAir_.reset(new airSampler(mesh_, dict.subOrEmptyDict("air")));
     solverSettings_ =
         readFiberSolverSettings(dict.subOrEmptyDict("fibers"), time_);
     solver_.reset(new ::dropletFiber::FiberSolver(solverSettings_));
@@ -267,13 +290,18 @@ void Foam::dropletFiber::fiberMotion::read(const dictionary& dict)
     const processorBoxes& boxes,
     const scalar dt,
     ::dropletFiber::CaptureSources& capture,
-    parallelStatistics& statistics
+    parallelStatistics& statistics,
+    airReaction& reaction
 )
 {
     return coreCall
     (
         "advancing the fibers",
-        [&]() { return advanceFibers(held, boxes, dt, capture, statistics); }
+        [&]()
+        {
+            return
+                advanceFibers(held, boxes, dt, capture, statistics, reaction);
+        }
     );
 }
 

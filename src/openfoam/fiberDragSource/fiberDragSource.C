@@ -1,0 +1,225 @@
+/*---------------------------------------------------------------------------*\
+  dropletFiber: stochastic droplet-fiber coupling for OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "fiberDragSource.H"
+#include "fvMatrices.H"
+#include "fvmSup.H"
+#include "IOdictionary.H"
+#include "dictionaryKeys.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace fv
+{
+    defineTypeNameAndDebug(fiberDragSource, 0);
+    addToRunTimeSelectionTable(option, fiberDragSource, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::fv::fiberDragSource::readDensity(const dictionary& dict)
+{
+    rho_ = -1;
+    rhoOrigin_ = "not given";
+    const bool given = dict.found("rho");
+    if (given)
+    {
+        ITstream& is = dict.lookup("rho");
+        const token tok(is);
+        if (tok.isNumber())
+        {
+            rho_ = tok.number();
+            rhoOrigin_ = "given";
+            if (!(rho_ > 0) || !std::isfinite(rho_))
+            {
+                FatalIOErrorInFunction(dict)
+                    << "fvOption " << name_ << ": entry 'rho' is " << rho_
+                    << ": allowed are a density > 0 [kg/m3] or"
+                    << " transportProperties." << exit(FatalIOError);
+            }
+            return;
+        }
+        if (!tok.isWord() || tok.wordToken() != "transportProperties")
+        {
+            FatalIOErrorInFunction(dict)
+                << "fvOption " << name_ << ": entry 'rho' is " << tok
+                << ": allowed are a density > 0 [kg/m3] or"
+                << " transportProperties." << exit(FatalIOError);
+        }
+    }
+    // transportProperties, read when an incompressible solver needs it
+    // (compressible solvers have none and need none)
+    const auto* tp = mesh_.findObject<IOdictionary>("transportProperties");
+    for (const word key : {"rho", "rhoInf"})
+    {
+        if (tp && tp->found(key))
+        {
+            rho_ = dimensionedScalar(key, dimDensity, *tp).value();
+            rhoOrigin_ = "transportProperties " + key;
+            return;
+        }
+    }
+    rhoOrigin_ =
+        given
+      ? "transportProperties, which has no rho or rhoInf"
+      : "not given, and transportProperties has no rho or rhoInf";
+}
+
+
+const Foam::volVectorField& Foam::fv::fiberDragSource::force() const
+{
+    const auto* F = mesh_.findObject<volVectorField>(forceName_);
+    if (!F || !mesh_.foundObject<volScalarField>(coefficientName_))
+    {
+        FatalErrorInFunction
+            << "fvOption " << name_ << " (fiberDragSource): the fields "
+            << forceName_ << " and " << coefficientName_ << " are not there."
+            << nl << "    The function object dropletFiberCollision makes"
+            << " them when its fibers.coupled is true: list it in"
+            << " system/controlDict with coupled true in its fibers"
+            << " dictionary." << exit(FatalError);
+    }
+    return *F;
+}
+
+
+const Foam::volScalarField& Foam::fv::fiberDragSource::coefficient() const
+{
+    force();
+    return mesh_.lookupObject<volScalarField>(coefficientName_);
+}
+
+
+void Foam::fv::fiberDragSource::addForce
+(
+    fvMatrix<vector>& eqn,
+    const dimensionedScalar& divisor
+)
+{
+    const volVectorField& U = eqn.psi();
+    const volVectorField& F = force();
+    eqn += F()/divisor;
+    if (semiImplicit_)
+    {
+        const volScalarField& K = coefficient();
+        eqn += K()*U()/divisor;
+        eqn -= fvm::Sp(K()/divisor, U);
+    }
+    velocityAtAssembly_ = U.primitiveField();
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::fv::fiberDragSource::fiberDragSource
+(
+    const word& name,
+    const word& modelType,
+    const dictionary& dict,
+    const fvMesh& mesh
+)
+:
+    option(name, modelType, dict, mesh),
+    semiImplicit_(true),
+    rho_(-1)
+{
+    read(dict);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::fv::fiberDragSource::addSup
+(
+    fvMatrix<vector>& eqn,
+    const label fieldi
+)
+{
+    if (!(rho_ > 0))
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "fvOption " << name_ << " (fiberDragSource): the momentum"
+            << " equation is kinematic (an incompressible solver): it needs"
+            << " the air's density, and 'rho' is " << rhoOrigin_.c_str()
+            << "." << nl << "    Give rho as a value [kg/m3]."
+            << exit(FatalIOError);
+    }
+    addForce(eqn, dimensionedScalar("rho", dimDensity, rho_));
+}
+
+
+void Foam::fv::fiberDragSource::addSup
+(
+    const volScalarField& rho,
+    fvMatrix<vector>& eqn,
+    const label fieldi
+)
+{
+    addForce(eqn, dimensionedScalar("one", dimless, 1.0));
+}
+
+
+void Foam::fv::fiberDragSource::correct(volVectorField& U)
+{
+    if (!mesh_.time().writeTime() || !log)
+    {
+        return;
+    }
+    const volVectorField& F = force();
+    vectorField applied(F.primitiveField());
+    if (semiImplicit_ && velocityAtAssembly_.size() == U.size())
+    {
+        applied +=
+            coefficient().primitiveField()
+           *(velocityAtAssembly_ - U.primitiveField());
+    }
+    const vector total = gSum(applied*mesh_.V());
+    const vector explicitPart = gSum(F.primitiveField()*mesh_.V());
+    Info<< "fvOption " << name_ << " (fiberDragSource): the fibers' drag on"
+        << " the air " << total << " N (the function object's "
+        << explicitPart << " N)" << endl;
+}
+
+
+bool Foam::fv::fiberDragSource::read(const dictionary& dict)
+{
+    option::read(dict);
+    dropletFiber::checkKeys
+    (
+        coeffs_,
+        {
+            "type", "libs", "active", "log", "fields", "rho", "semiImplicit",
+            "force", "coefficient", modelType_ + "Coeffs"
+        }
+    );
+    fieldNames_ = coeffs_.lookupOrDefault<wordList>("fields", wordList({"U"}));
+    if (fieldNames_.size() != 1)
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "fvOption " << name_ << ": entry 'fields' is " << fieldNames_
+            << ": allowed is one velocity field, e.g. (U)."
+            << exit(FatalIOError);
+    }
+    applied_.setSize(1, false);
+    forceName_ = coeffs_.lookupOrDefault<word>("force", "fiberDragForce");
+    coefficientName_ =
+        coeffs_.lookupOrDefault<word>("coefficient", "fiberDragCoeff");
+    semiImplicit_ = coeffs_.lookupOrDefault<bool>("semiImplicit", true);
+    readDensity(coeffs_);
+    Info<< "    fiberDragSource " << name_ << ": the fields " << forceName_
+        << ", " << coefficientName_ << " on " << fieldNames_[0]
+        << (semiImplicit_ ? ", semi-implicit" : ", explicit")
+        << "; density for kinematic solvers " << rhoOrigin_.c_str()
+        << (rho_ > 0 ? string(" " + Foam::name(rho_)) : string()).c_str()
+        << endl;
+    return true;
+}
+
+
+// ************************************************************************* //
