@@ -76,6 +76,37 @@ expectError fibers/injectors \
 expectError fibers/injectors \
     "{ spinner { position (0.01 0.04 0.005); direction (1 0 0); velocity (0 0 0); length 0.01; rate 10; represents 4; massFlowRate 1e-3; } }" \
     "Injector 'spinner' has both 'represents' 4 and 'massFlowRate' 0.001: give one"
+# The fibers' drag on the air: its switch and the one-way warning's level
+expectError fibers/coupled maybe "Entry 'coupled' is 'maybe': allowed are true or false"
+expectError fibers/couplingWarning 0 "Entry 'couplingWarning' is 0: allowed are finite values > 0"
+# The fvOption that applies it (constant/fvOptions): a bad density, an unknown entry,
+# two fields; listed without the function object's fields (coupled false): stops at
+# its first step, saying how to get them
+expectFvOptionError() {
+    local entries="$1" pattern="$2" kind="$3"
+    cp system/controlDict.good system/controlDict
+    foamDictionary system/controlDict -entry endTime -set 0.004 > /dev/null
+    printf 'FoamFile { version 2.0; format ascii; class dictionary; object fvOptions; }\n%s\n' \
+        "fiberDrag { type fiberDragSource; libs (\"libdropletFiber.so\"); $entries }" > constant/fvOptions
+    freshStart
+    pimpleFoam > log.fvOption 2>&1
+    local status=$?
+    rm -f constant/fvOptions
+    if [ "$status" -ne 0 ] && grep -q "FOAM FATAL $kind" log.fvOption \
+        && grep -q -E -- "$pattern" log.fvOption; then
+        checksPassed=$((checksPassed + 1))
+        echo "ok: fvOption { $entries } -> $(grep -m1 -E -- "$pattern" log.fvOption)"
+    else
+        checksFailed=$((checksFailed + 1))
+        echo "FAILED: fvOption { $entries } (exit $status); log:"
+        grep -A4 "FOAM FATAL" log.fvOption || tail -5 log.fvOption
+    fi
+}
+expectFvOptionError "rho -1.2;" "fvOption fiberDrag: entry 'rho' is -1.2: allowed are a density > 0" "IO ERROR"
+expectFvOptionError "semiImplicitt true;" "Entry 'semiImplicitt' in dictionary '[^']*fiberDrag' is not known: did you mean 'semiImplicit'\\?" "IO ERROR"
+expectFvOptionError "fields (U p);" "fvOption fiberDrag: entry 'fields' is 2\\(U p\\): allowed is one velocity field" "IO ERROR"
+expectFvOptionError "" "the fields fiberDragForce and fiberDragCoeff are not there" "ERROR"
+
 # A cloud named twice would be gathered twice (parcels, their mass and the
 # captured mass doubled): stops, naming the entry, the cloud and what is allowed
 expectError clouds "(kinematicCloud kinematicCloud)" \

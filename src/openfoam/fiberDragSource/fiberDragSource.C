@@ -127,7 +127,8 @@ Foam::fv::fiberDragSource::fiberDragSource
 :
     option(name, modelType, dict, mesh),
     semiImplicit_(true),
-    rho_(-1)
+    rho_(-1),
+    loggedTimeIndex_(-1)
 {
     read(dict);
 }
@@ -167,10 +168,14 @@ void Foam::fv::fiberDragSource::addSup
 
 void Foam::fv::fiberDragSource::correct(volVectorField& U)
 {
-    if (!mesh_.time().writeTime() || !log)
+    // Once per write time: at the first velocity update of the step (the
+    // momentum predictor's, where the solver has one)
+    const label timeIndex = mesh_.time().timeIndex();
+    if (!mesh_.time().writeTime() || !log || timeIndex == loggedTimeIndex_)
     {
         return;
     }
+    loggedTimeIndex_ = timeIndex;
     const volVectorField& F = force();
     vectorField applied(F.primitiveField());
     if (semiImplicit_ && velocityAtAssembly_.size() == U.size())
@@ -182,7 +187,8 @@ void Foam::fv::fiberDragSource::correct(volVectorField& U)
     const vector total = gSum(applied*mesh_.V());
     const vector explicitPart = gSum(F.primitiveField()*mesh_.V());
     Info<< "fvOption " << name_ << " (fiberDragSource): the fibers' drag on"
-        << " the air " << total << " N (the function object's "
+        << " the air in this step's first velocity update " << total
+        << " N (explicit part, the function object's of the step before: "
         << explicitPart << " N)" << endl;
 }
 
