@@ -9,7 +9,11 @@
 // advancing u' (TurbulentAir) against the fiber step without it, and of the step with it
 // (which moves the fibers otherwise: its Newton iterations differ, so the ratio of the
 // two steps is not the cost of u' alone).
+// Then the drag handed to the air (two-way coupling, docs/model.md sec. 10): the step
+// with its DragReaction recorded against the same step without (the same fibers, the
+// same motion: the difference is the recording alone), interleaved.
 #include "BenchFibers.hpp"
+#include "fiber/DragReaction.hpp"
 #include "fiber/FiberSolver.hpp"
 #include "fiber/TurbulentAir.hpp"
 
@@ -57,6 +61,33 @@ void turbulenceCost(int fibersN, int pointsN, const FiberSolverSettings& setting
     const double scale = 1e9 / steps / static_cast<double>(n);
     std::printf("%7d %7d %14.1f %14.1f %14.1f %9.3f\n", fibersN, pointsN, scale * fluctuation,
                 scale * withoutU, scale * withU, withU / withoutU);
+}
+
+// Seconds per point per step of the fiber step without and with its drag recorded.
+void reactionCost(int fibersN, int pointsN, const FiberSolverSettings& settings, double dt)
+{
+    std::vector<Fiber> plain = bench::makeFibers(fibersN, pointsN), recorded = plain;
+    const AirSample air = uniformAir(plain, Eigen::Vector3d(0.5, 0.2, 0.0), 1.2, 1.8e-5);
+    const Eigen::Index n = air.pointCount();
+    FiberSolver solver(settings);
+    DragReaction reaction;
+    const int steps = static_cast<int>(std::max(3L, 200000L / n));
+    double without = 0.0, with = 0.0;
+    for (int step = 0; step <= steps; ++step) // step 0: warm-up, not timed
+    {
+        const auto t0 = std::chrono::steady_clock::now();
+        solver.step(plain, dt, air);
+        const auto t1 = std::chrono::steady_clock::now();
+        solver.step(recorded, dt, air, nullptr, nullptr, &reaction);
+        const auto t2 = std::chrono::steady_clock::now();
+        if (step == 0)
+            continue;
+        without += std::chrono::duration<double>(t1 - t0).count();
+        with += std::chrono::duration<double>(t2 - t1).count();
+    }
+    const double scale = 1e9 / steps / static_cast<double>(n);
+    std::printf("%7d %7d %14.1f %14.1f %14.1f %9.3f\n", fibersN, pointsN, scale * without, scale * with,
+                scale * (with - without), with / without);
 }
 
 } // namespace
@@ -127,5 +158,13 @@ int main()
     for (const int fibersN : {10, 100})
         for (const int pointsN : {20, 200})
             turbulenceCost(fibersN, pointsN, settings, dt);
+
+    std::printf("\ndrag handed to the air: ns per point per step of the step without and with its "
+                "DragReaction, the difference and the ratio\n");
+    std::printf("%7s %7s %14s %14s %14s %9s\n", "fibers", "points", "step", "with reaction", "reaction",
+                "ratio");
+    for (const int fibersN : {10, 100})
+        for (const int pointsN : {20, 200})
+            reactionCost(fibersN, pointsN, settings, dt);
     return 0;
 }

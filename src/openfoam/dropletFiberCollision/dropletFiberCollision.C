@@ -101,6 +101,10 @@ Foam::functionObjects::dropletFiberCollision::dropletFiberCollision
     // dictionary
     const bool restored =
         restart_.readStateOnEveryProcessor(stateParts_, grid_.settings());
+    if (!restored)
+    {
+        reaction_.startWithoutState();
+    }
     grid_.warnBoxOutsideMesh();
     population_.start(restored, restart_.stateProcessors(), statistics_);
     spray_.applyRemovalBeforeFirstStep();

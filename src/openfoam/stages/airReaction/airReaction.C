@@ -22,7 +22,8 @@ namespace
 const Foam::word forceName("fiberDragForce");
 const Foam::word coefficientName("fiberDragCoeff");
 
-//- Whether constant/fvOptions (or system/fvOptions) lists a fiberDragSource
+//- Whether constant/fvOptions (or system/fvOptions) lists an active
+//  fiberDragSource
 bool fvOptionListed(const Foam::fvMesh& mesh)
 {
     const auto* options = mesh.findObject<Foam::fv::options>("fvOptions");
@@ -33,7 +34,7 @@ bool fvOptionListed(const Foam::fvMesh& mesh)
     const Foam::fv::optionList& list = *options;
     for (const Foam::fv::option& o : list)
     {
-        if (o.type() == "fiberDragSource")
+        if (o.type() == "fiberDragSource" && o.active())
         {
             return true;
         }
@@ -282,6 +283,21 @@ void Foam::dropletFiber::airReaction::report(Ostream& os) const
         << " for the fvOption fiberDragSource, which is "
         << (fvOptionListed(mesh_) ? "listed" : "NOT listed: the air feels nothing")
         << (readAtStart_ ? "; read at the start time" : "") << nl;
+}
+
+
+void Foam::dropletFiber::airReaction::startWithoutState()
+{
+    if (!readAtStart_)
+    {
+        return;
+    }
+    *force_ == dimensionedVector(force_->dimensions(), Zero);
+    *coefficient_ == dimensionedScalar(coefficient_->dimensions(), Zero);
+    readAtStart_ = false;
+    Info<< type() << " " << name() << ": the fields " << forceName << " and "
+        << coefficientName << " of time " << time_.timeName() << " are not"
+        << " used (no restart state read: the fibers start afresh)" << nl;
 }
 
 
