@@ -234,7 +234,7 @@ bool Foam::functionObjects::dropletFiberCollision::read(const dictionary& dict)
     const dropletFiber::gridSettings grid =
         dropletFiber::readGridSettings(dict.subOrEmptyDict("grid"), mesh_);
     motion_.read(dict);
-    reaction_.readCoupling(dict.subOrEmptyDict("fibers"));
+    reaction_.readCoupling(dict);
     if (running)
     {
         grid_.checkUnchanged(grid, dict.subOrEmptyDict("grid"));

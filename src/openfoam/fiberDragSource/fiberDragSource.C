@@ -68,7 +68,7 @@ void Foam::fv::fiberDragSource::readDensity(const dictionary& dict)
     rhoOrigin_ =
         given
       ? "transportProperties, which has no rho or rhoInf"
-      : "not given, and transportProperties has no rho or rhoInf";
+      : "none (compressible solvers use their own density field)";
 }
 
 
@@ -147,7 +147,9 @@ void Foam::fv::fiberDragSource::addSup
         FatalIOErrorInFunction(coeffs_)
             << "fvOption " << name_ << " (fiberDragSource): the momentum"
             << " equation is kinematic (an incompressible solver): it needs"
-            << " the air's density, and 'rho' is " << rhoOrigin_.c_str()
+            << " the air's density, and 'rho' is "
+            << (dict_.found("rho") ? rhoOrigin_.c_str() : "not given, and"
+                " there is no transportProperties rho or rhoInf")
             << "." << nl << "    Give rho as a value [kg/m3]."
             << exit(FatalIOError);
     }

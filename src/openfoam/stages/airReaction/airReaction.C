@@ -92,7 +92,6 @@ void Foam::dropletFiber::airReaction::startTable()
         return;
     }
     writeToFile_ = true;
-    writePrecision_ = 12;
     filePtr_ = createFile("fiberDrag");
     OFstream& os = file();
     writeHeader
@@ -165,11 +164,12 @@ Foam::dropletFiber::airReaction::airReaction
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::dropletFiber::airReaction::readCoupling
-(
-    const dictionary& fibersDict
-)
+void Foam::dropletFiber::airReaction::readCoupling(const dictionary& dict)
 {
+    // The table's digits: the function object's writePrecision, as its other
+    // tables (default 10)
+    writePrecision_ = dict.lookupOrDefault<label>("writePrecision", 10);
+    const dictionary& fibersDict = dict.subOrEmptyDict("fibers");
     coupled_ = getSwitch(fibersDict, "coupled", false);
     warningFraction_ = getPositive(fibersDict, "couplingWarning", 0.1);
     if (coupled_)
