@@ -2,7 +2,8 @@
 """The gas the veil entrains: the vertical gas velocity across the hood through the
 veil (y = 1.0 m) and below it (y = 0.6 m), from the sets function object veilAir
 (postProcessing/veilAir/<time>/<set>_U.xy, x and U along z = 0), averaged over the
-write times from FROM s on; with a second case (the same run one-way, or two-way)
+write times from FROM s on (the last write time when the run ended before FROM, as
+Allrun -short does); with a second case (the same run one-way, or two-way)
 both, and their difference: what the fibers' drag does to the gas.
 
 Figures per line: the mean downward speed -U_y in the veil's ring, 0.10 m <= |x| <=
@@ -21,19 +22,27 @@ SETS = (("throughVeil", "y = 1.0 m"), ("belowVeil", "y = 0.6 m"))
 BANDS = (("axis", 0.0, 0.05), ("veil ring", 0.10, 0.25), ("outside", 0.30, 0.45))
 
 
-def profiles(case, name, start):
-    """x and the mean of U_y over the write times >= start (None: no files)."""
-    files = []
+def write_times(case, name):
+    """(time, file) of every write time with the set's file, in time order."""
+    found = []
     for folder in glob.glob(os.path.join(case, "postProcessing", "veilAir", "*")):
         try:
             t = float(os.path.basename(folder))
         except ValueError:
             continue
         path = os.path.join(folder, name + "_U.xy")
-        if t >= start - 1e-9 and os.path.isfile(path):
-            files.append(path)
-    if not files:
+        if os.path.isfile(path):
+            found.append((t, path))
+    return sorted(found)
+
+
+def profiles(case, name, start):
+    """x and the mean of U_y over the write times >= start, else the last one
+    (None: no files)."""
+    found = write_times(case, name)
+    if not found:
         return None, None
+    files = [f for t, f in found if t >= start - 1e-9] or [found[-1][1]]
     data = [np.loadtxt(f) for f in files]
     return data[0][:, 0], np.mean([d[:, 2] for d in data], axis=0)
 
@@ -59,7 +68,7 @@ def main():
         for case in args:
             x, uy = profiles(case, name, start)
             if x is None:
-                print("%s: no veilAir files of %s from %g s" % (case, name, start))
+                print("%s: no veilAir files of %s" % (case, name))
                 return 1
             means.append(band_means(x, uy))
             print("%-14s %-10s %s" % (where, os.path.basename(os.path.abspath(case))[:10],
