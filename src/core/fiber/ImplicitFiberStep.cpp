@@ -294,6 +294,21 @@ void ImplicitFiberStep::addBendingForce()
     }
 }
 
+ImplicitFiberStep::PointDragForce ImplicitFiberStep::dragForceAt(Eigen::Index i, const PointDrag& drag) const
+{
+    PointDragForce f;
+    Eigen::Index hi, lo;
+    tangentStencil(i, n_, hi, lo);
+    const Eigen::Vector3d chord = xTheta_.col(hi) - xTheta_.col(lo);
+    f.chordLength = chord.norm();
+    f.tangent = chord / f.chordLength;
+    f.relativeAir = drag.airVelocity->col(i) - vTheta_.col(i);
+    f.wt = f.tangent.dot(f.relativeAir);
+    const double cn = cn_(i), ct = ct_(i);
+    f.force = cn * f.relativeAir + (ct - cn) * f.wt * f.tangent;
+    return f;
+}
+
 template <bool withSizes>
 void ImplicitFiberStep::addDragForce(const PointDrag& drag)
 {
@@ -306,14 +321,11 @@ void ImplicitFiberStep::addDragForce(const PointDrag& drag)
         const double cn = cn_(i), ct = ct_(i);
         if (cn == 0.0 && ct == 0.0)
             continue;
-        Eigen::Index hi, lo;
-        tangentStencil(i, n, hi, lo);
-        const Eigen::Vector3d chord = xTheta_.col(hi) - xTheta_.col(lo);
-        const double chordLength = chord.norm();
-        const Eigen::Vector3d t = chord / chordLength;
-        const Eigen::Vector3d w = drag.airVelocity->col(i) - vTheta_.col(i);
-        const double wt = t.dot(w);
-        const Eigen::Vector3d force = cn * w + (ct - cn) * wt * t;
+        PointDragForce f = dragForceAt(i, drag);
+        const Eigen::Vector3d& t = f.tangent;
+        const Eigen::Vector3d& w = f.relativeAir;
+        const Eigen::Vector3d& force = f.force;
+        const double chordLength = f.chordLength, wt = f.wt;
         residual_.col(i) -= h * force;
         if (withSizes)
         {
@@ -662,18 +674,9 @@ void ImplicitFiberStep::addDragImpulse(const PointDrag& drag, DragReaction& reac
     const double h = h_;
     for (Eigen::Index i = 0; i < n_; ++i)
     {
-        const double cn = cn_(i), ct = ct_(i);
-        // The force of addDragForce, written alike so that it gives the same bits
-        Eigen::Index hi, lo;
-        tangentStencil(i, n_, hi, lo);
-        const Eigen::Vector3d chord = xTheta_.col(hi) - xTheta_.col(lo);
-        const double chordLength = chord.norm();
-        const Eigen::Vector3d t = chord / chordLength;
-        const Eigen::Vector3d w = drag.airVelocity->col(i) - vTheta_.col(i);
-        const double wt = t.dot(w);
-        const Eigen::Vector3d force = cn * w + (ct - cn) * wt * t;
-        reaction.impulse.col(firstPoint + i) += h * force;
-        reaction.coefficientTime(firstPoint + i) += h * isotropicDragCoefficient(cn, ct);
+        // The force of addDragForce (the same function: the same bits)
+        reaction.impulse.col(firstPoint + i) += h * dragForceAt(i, drag).force;
+        reaction.coefficientTime(firstPoint + i) += h * isotropicDragCoefficient(cn_(i), ct_(i));
     }
 }
 

@@ -99,6 +99,15 @@ private:
     // The converged iterate into the fiber.
     void accept(Fiber& fiber) const;
 
+    // The drag P3 on point i at (x_theta, v_theta) (nodal resistances cn_, ct_) and
+    // the terms the Jacobian reuses.
+    struct PointDragForce
+    {
+        Eigen::Vector3d force, tangent, relativeAir;
+        double chordLength = 0.0, wt = 0.0;
+    };
+    PointDragForce dragForceAt(Eigen::Index i, const PointDrag& drag) const;
+
     // Residual rows at (y_, lambda_) into rhs_ (scaled as the Jacobian's rows) and
     // the largest relative constraint error; withSizes: also the size of each point
     // row's terms and their round-off (magnitude_, noise_) for residualSmall().
