@@ -43,6 +43,8 @@ READERS = (
     "src/openfoam/stages/fiberMotion/fiberMotion.C",
     "src/openfoam/stages/couplingOutput/couplingOutput.C",
     "src/openfoam/stages/couplingRestart/couplingRestart.C",
+    "src/openfoam/stages/airReaction/airReaction.C",
+    "src/openfoam/fiberDragSource/fiberDragSource.C",
 )
 CHECKED_READ = re.compile(
     r"\b(?:getPositive|getNonNegative|getCheckedScalar|getLabelInRange|getSwitch"
@@ -98,6 +100,7 @@ KEY_LISTS = {
     "injectorKeys": [INJECTOR],
     "fixedFiberKeys": [FIXED],
     "turbulenceKeys": ["fibers.turbulence"],
+    "fiberDragSourceKeys": ["fiberDragSource"],
 }
 NAMED_LIST = re.compile(r"wordList\s+(\w*Keys)\s*\{([^}]*)\}"
                         r"|checkKeys\s*\(\s*(\w+)\s*,\s*\{([^}]*)\}")

@@ -21,6 +21,22 @@ namespace fv
 }
 
 
+// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- The entries of the fvOption's dictionary (docs/reference.md): its own and
+//  OpenFOAM's of every fvOption
+const Foam::wordList fiberDragSourceKeys
+{
+    "type", "libs", "active", "log", "fields", "rho", "semiImplicit", "force",
+    "coefficient"
+};
+
+} // End anonymous namespace
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 void Foam::fv::fiberDragSource::readDensity(const dictionary& dict)
@@ -198,14 +214,7 @@ void Foam::fv::fiberDragSource::correct(volVectorField& U)
 bool Foam::fv::fiberDragSource::read(const dictionary& dict)
 {
     option::read(dict);
-    dropletFiber::checkKeys
-    (
-        coeffs_,
-        {
-            "type", "libs", "active", "log", "fields", "rho", "semiImplicit",
-            "force", "coefficient", modelType_ + "Coeffs"
-        }
-    );
+    dropletFiber::checkKeys(coeffs_, fiberDragSourceKeys);
     fieldNames_ = coeffs_.lookupOrDefault<wordList>("fields", wordList({"U"}));
     if (fieldNames_.size() != 1)
     {
