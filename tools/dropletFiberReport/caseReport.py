@@ -24,7 +24,8 @@ class CaseReport:
             raise MissingOutput("%s has no rows: the run stopped before the function object's "
                                 "first step" % self._table_path())
         self.siblings = {}
-        for sibling in ("fiberDispersion.dat", "parallelStatistics.dat", "binderDistribution.dat"):
+        for sibling in ("fiberDispersion.dat", "parallelStatistics.dat", "binderDistribution.dat",
+                        "laydown.dat"):
             table = caseOutputs.read_table(case, self.name, sibling)
             if table is not None and table.rows:
                 self.siblings[sibling] = table

@@ -180,6 +180,49 @@ def _binder_distribution(ax, r):
     ax.legend(fontsize=8)
 
 
+def _laid(r):
+    """Across, along [m] and the glass and binder [kg] each laid row stands for."""
+    t = r.siblings["laydown.dat"]
+    n = np.array(t.column("represents"))
+    return (np.array(t.column("across")), np.array(t.column("along")),
+            n * np.array(t.column("glassMass")), n * np.array(t.column("binderMass")))
+
+
+def _mat_map(ax, r):
+    """The mat on the belt (laydown.dat): the glass area weight laid, in the belt's frame."""
+    across, along, glass, binder = _laid(r)
+    counts, xe, ye = np.histogram2d(across, along, bins=30, weights=glass)
+    area = (xe[1] - xe[0]) * (ye[1] - ye[0])
+    mesh = ax.pcolormesh(xe, ye, 1000 * counts.T / area, cmap="viridis")
+    plt.colorbar(mesh, ax=ax, label="glass area weight [g/m²]")
+    ax.set_xlabel("across the belt [m]")
+    ax.set_ylabel("along the belt [m]")
+    total = glass.sum() + binder.sum()
+    ax.set_title("The mat (laydown.dat): %d fibers laid, glass %.3g kg, binder %.3g kg, LOI %.2f %%"
+                 % (len(glass), glass.sum(), binder.sum(), 100 * binder.sum() / total if total else 0),
+                 fontsize=10)
+
+
+def _mat_profile(ax, r):
+    """Across the belt: glass and binder area weight over everything laid, and the
+    glass's coefficient of variation across the width."""
+    across, along, glass, binder = _laid(r)
+    span = max(along.max() - along.min(), 1e-12)
+    edges = np.linspace(across.min(), across.max() + 1e-12, 21)
+    width = edges[1] - edges[0]
+    g, _ = np.histogram(across, bins=edges, weights=glass)
+    b, _ = np.histogram(across, bins=edges, weights=binder)
+    centres = 0.5 * (edges[1:] + edges[:-1])
+    g = 1000 * g / (width * span)
+    ax.plot(centres, g, "o-", label="glass")
+    ax.plot(centres, 1000 * b / (width * span), "s-", label="binder")
+    cov = g.std() / g.mean() if g.mean() > 0 else 0
+    ax.set_xlabel("across the belt [m]")
+    ax.set_ylabel("area weight [g/m²], all laid")
+    ax.set_title("Across the width: CoV of the glass %.3f (20 bins, all rows)" % cov, fontsize=10)
+    ax.legend(fontsize=8)
+
+
 def write_png(r, path, planar, points):
     """Every panel the case has data for, three to a row."""
     panels = [_binder_over_time, _balance, _counts, ("view", 0, 1)]
@@ -189,6 +232,8 @@ def write_png(r, path, planar, points):
         panels.append("dispersion")
     if "binderDistribution.dat" in r.siblings:
         panels.append(_binder_distribution)
+    if "laydown.dat" in r.siblings:
+        panels += [_mat_map, _mat_profile]
     rows = (len(panels) + 2) // 3
     fig, axes = plt.subplots(rows, 3, figsize=(19, 6 * rows), squeeze=False)
     fig.subplots_adjust(left=0.05, right=0.95, bottom=0.06, top=1 - 0.8 / (6 * rows), wspace=0.5, hspace=0.45)

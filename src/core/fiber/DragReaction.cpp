@@ -30,9 +30,8 @@ void addImmobileFiberReaction(const Fiber& fiber, const AirSample& air, Eigen::I
         const Eigen::Vector3d w = air.velocity.col(firstAir + i);
         const double wt = t.dot(w);
         const double normalSpeed = (w - wt * t).norm();
-        const DragCoefficients c = dragCoefficientsOfFiber(drag, air.density(firstAir + i),
-                                                           air.viscosity(firstAir + i), radius,
-                                                           logarithm, normalSpeed);
+        const DragCoefficients c = dragCoefficientsOfFiber(
+            drag, air.density(firstAir + i), air.viscosity(firstAir + i), radius, logarithm, normalSpeed);
         const double cn = nodal(i) * c.normal, ct = nodal(i) * c.tangential;
         reaction.impulse.col(firstPoint + i) += dt * (cn * w + (ct - cn) * wt * t);
         reaction.coefficientTime(firstPoint + i) += dt * isotropicDragCoefficient(cn, ct);

@@ -47,8 +47,7 @@ public:
     // drag at their converged iterates, which is what changed the fibers' momentum.
     StepReport step(std::vector<Fiber>& fibers, double dt, const AirSample& air,
                     const CaptureSources* capture = nullptr,
-                    const std::vector<std::size_t>* fiberNumbers = nullptr,
-                    DragReaction* reaction = nullptr);
+                    const std::vector<std::size_t>* fiberNumbers = nullptr, DragReaction* reaction = nullptr);
 
 private:
     // The sample the drag uses (nullptr: no drag); checks it fits the fibers' layout.

@@ -468,6 +468,52 @@ void Foam::dropletFiber::airSampler::askOtherProcessors
 }
 
 
+void Foam::dropletFiber::airSampler::forgetAnswers(const label n) const
+{
+    answeringProcessor_.setSize(n);
+    answeringProcessor_ = -1;
+    answerIndex_.setSize(n);
+    answerIndex_ = -1;
+    answeredCells_.setSize(Pstream::nProcs());
+    for (labelList& cells : answeredCells_)
+    {
+        cells.clear();
+    }
+}
+
+
+::dropletFiber::AirSample Foam::dropletFiber::airSampler::airOfValues
+(
+    const List<scalar>& values,
+    const label n
+) const
+{
+    const scalar rhoRef = referenceDensity();
+    const scalar muRef = referenceViscosity();
+    ::dropletFiber::AirSample air;
+    air.velocity.resize(3, n);
+    air.density.resize(n);
+    air.viscosity.resize(n);
+    for (label i = 0; i < n; ++i)
+    {
+        const scalar* v = &values[width*i];
+        if (v[5] > 0)
+        {
+            air.velocity.col(i) = Eigen::Vector3d(v[0], v[1], v[2]);
+            air.density(i) = v[3];
+            air.viscosity(i) = v[4];
+        }
+        else
+        {
+            air.velocity.col(i).setZero();
+            air.density(i) = rhoRef;
+            air.viscosity(i) = muRef;
+        }
+    }
+    return air;
+}
+
+
 ::dropletFiber::AirSample Foam::dropletFiber::airSampler::sample
 (
     const Eigen::Matrix3Xd& points,
@@ -499,15 +545,7 @@ void Foam::dropletFiber::airSampler::askOtherProcessors
     List<scalar> values(width*n, Zero);
     cellHint_.setSize(n, -1);
     tetHint_.setSize(n);
-    answeringProcessor_.setSize(n);
-    answeringProcessor_ = -1;
-    answerIndex_.setSize(n);
-    answerIndex_ = -1;
-    answeredCells_.setSize(Pstream::nProcs());
-    for (labelList& cells : answeredCells_)
-    {
-        cells.clear();
-    }
+    forgetAnswers(n);
     label previousPointCell = -1;
     for (label i = 0; i < n; ++i)
     {
@@ -539,29 +577,7 @@ void Foam::dropletFiber::airSampler::askOtherProcessors
         }
     }
 
-    const scalar rhoRef = referenceDensity();
-    const scalar muRef = referenceViscosity();
-    ::dropletFiber::AirSample air;
-    air.velocity.resize(3, n);
-    air.density.resize(n);
-    air.viscosity.resize(n);
-    for (label i = 0; i < n; ++i)
-    {
-        const scalar* v = &values[width*i];
-        if (v[5] > 0)
-        {
-            air.velocity.col(i) = Eigen::Vector3d(v[0], v[1], v[2]);
-            air.density(i) = v[3];
-            air.viscosity(i) = v[4];
-        }
-        else
-        {
-            air.velocity.col(i).setZero();
-            air.density(i) = rhoRef;
-            air.viscosity(i) = muRef;
-        }
-    }
-    return air;
+    return airOfValues(values, n);
 }
 
 

@@ -82,14 +82,16 @@ Foam::functionObjects::dropletFiberCollision::dropletFiberCollision
     capture_(*this, mesh_),
     motion_(*this, mesh_),
     reaction_(*this, mesh_),
+    laydown_(*this, mesh_),
     restart_(*this, mesh_),
-    stateParts_(5)
+    stateParts_(6)
 {
     stateParts_.set(0, &population_);
     stateParts_.set(1, &capture_);
     stateParts_.set(2, &spray_);
     stateParts_.set(3, &grid_);
     stateParts_.set(4, &reaction_);
+    stateParts_.set(5, &laydown_);
     read(dict);
     // The table's columns per liquid species; the state's totals of them
     if (capture_.depletion())
@@ -235,6 +237,11 @@ bool Foam::functionObjects::dropletFiberCollision::read(const dictionary& dict)
         dropletFiber::readGridSettings(dict.subOrEmptyDict("grid"), mesh_);
     motion_.read(dict);
     reaction_.readCoupling(dict);
+    laydown_.read(dict, running);
+    if (laydown_.on())
+    {
+        population_.countBinderRemoved();
+    }
     if (running)
     {
         grid_.checkUnchanged(grid, dict.subOrEmptyDict("grid"));
@@ -293,6 +300,7 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
     // 6. fibers that left removed, the others to the processor holding them
     clock.update();
     advanceFibers(capture, dt, step);
+    laydown_.layDown(population_.fibers());
     population_.removeLostAndPassOn(statistics_);
     step.fiberTime += scalar(clock.elapsed());
     grid_.rebalance(parcels, dt, statistics_);

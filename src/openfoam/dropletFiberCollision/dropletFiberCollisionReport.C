@@ -66,8 +66,19 @@ void Foam::functionObjects::dropletFiberCollision::writeAtWriteTime
     output_.reportConservation
     (
         grid_.totals(), population_.totals(), capture_.captured(),
-        step.fiberMass
+        step.fiberMass,
+        laydown_.on() ? laydown_.totals().glass + laydown_.totals().binder : -1
     );
+    if (laydown_.on())
+    {
+        const scalar binderInAir = population_.binderSums().values[2];
+        laydown_.reportAtWrite
+        (
+            step.fiberMass - binderInAir, binderInAir,
+            population_.totals().massAdded, population_.totals().massRemoved,
+            population_.totals().binderRemoved, capture_.captured()
+        );
+    }
     capture_.reportBinderBalance();
     statistics_.reportBalance(Info, type() + " " + name(), time_.timeName());
     spray_.reportCloudBalance(capture_.step().airborne, capture_.captured());
@@ -86,6 +97,7 @@ void Foam::functionObjects::dropletFiberCollision::reportSettings()
     grid_.reportMemory(Info, population_.pointsHere());
     motion_.report(Info, population_.injectorCount(), population_.count());
     reaction_.report(Info);
+    laydown_.report(Info);
     output_.report(Info);
     Info<< endl;
 }

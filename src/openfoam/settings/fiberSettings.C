@@ -35,7 +35,9 @@ const wordList fibersKeys
     // read by the function object (fiberOwnership::holderRule)
     "holders",
     // read by airReaction: the fibers' drag on the air
-    "coupled", "couplingWarning"
+    "coupled", "couplingWarning",
+    // read by fiberLaydown: the belt the fibers are laid on
+    "laydown"
 };
 
 //- The entries of an injector besides the material: read by readFiberInjectors

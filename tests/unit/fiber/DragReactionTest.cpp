@@ -25,10 +25,12 @@ TEST(DragReaction, ImpulseIsTheFibersMomentumChange)
 {
     // A bent fiber in a sheared, fast air: many sub-steps, tension, bending
     std::vector<Fiber> fibers;
-    fibers.emplace_back(offsetPoints(10, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(),
-                                     0.01, [](double s) { return 2e-3 * std::sin(300.0 * s); }),
+    fibers.emplace_back(offsetPoints(10, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(),
+                                     Eigen::Vector3d::UnitY(), 0.01,
+                                     [](double s) { return 2e-3 * std::sin(300.0 * s); }),
                         glassFiber());
-    fibers.emplace_back(straightPoints(6, Eigen::Vector3d(0, 0.01, 0), Eigen::Vector3d(1, 1, 0), 0.005), glassFiber());
+    fibers.emplace_back(straightPoints(6, Eigen::Vector3d(0, 0.01, 0), Eigen::Vector3d(1, 1, 0), 0.005),
+                        glassFiber());
     const std::vector<Eigen::Vector3d> gravities{Eigen::Vector3d::Zero(), Eigen::Vector3d(0, -9.81, 0)};
     for (const Eigen::Vector3d& gravity : gravities)
     {
@@ -59,8 +61,8 @@ TEST(DragReaction, ImpulseIsTheFibersMomentumChange)
             const Eigen::Vector3d expected = after - before - mass * gravity * dt;
             const Eigen::Vector3d recorded = sum(reaction.impulse);
             EXPECT_GT(recorded.norm(), 1e-12);
-            EXPECT_LT((recorded - expected).norm(), 1e-8 * recorded.norm()) << recorded.transpose() << " vs "
-                                                                             << expected.transpose();
+            EXPECT_LT((recorded - expected).norm(), 1e-8 * recorded.norm())
+                << recorded.transpose() << " vs " << expected.transpose();
             EXPECT_TRUE((reaction.coefficientTime.array() > 0.0).all());
         }
     }
@@ -98,7 +100,8 @@ TEST(DragReaction, ImmobileFiberAcrossAStreamFeelsTheSlenderBodyDrag)
 TEST(DragReaction, NoDragModelNoReaction)
 {
     std::vector<Fiber> fibers;
-    fibers.emplace_back(straightPoints(4, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), 0.01), glassFiber());
+    fibers.emplace_back(straightPoints(4, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), 0.01),
+                        glassFiber());
     FiberSolver solver;
     DragReaction reaction;
     solver.step(fibers, 1e-3, AirSample(), nullptr, nullptr, &reaction);

@@ -149,12 +149,13 @@ void Foam::dropletFiber::couplingOutput::reportConservation
     const depositTotals& deposit,
     const fiberTotals& fibers,
     const scalar captured,
-    const scalar mass
+    const scalar mass,
+    const scalar laid
 ) const
 {
     const scalar balance =
         fibers.massAdded + captured
-      - fibers.massRemoved - mass;
+      - fibers.massRemoved - max(laid, scalar(0)) - mass;
     Info<< type() << " " << name() << " conservation at time "
         << time_.timeName() << ", summed over all steps so far:" << nl
         << "    parcel mass " << deposit.parcelMass << " kg = on grid "
@@ -164,8 +165,12 @@ void Foam::dropletFiber::couplingOutput::reportConservation
         << " kg)" << nl
         << "    fiber mass " << mass << " kg = added "
         << fibers.massAdded << " + captured " << captured
-        << " - removed " << fibers.massRemoved
-        << " (balance " << balance << " kg)" << nl
+        << " - removed " << fibers.massRemoved;
+    if (laid >= 0)
+    {
+        Info<< " - laid " << laid;
+    }
+    Info<< " (balance " << balance << " kg)" << nl
         << "    parcel-steps with the influence radius capped at rMaxCap: "
         << deposit.parcelsCapped << nl << endl;
 }

@@ -123,6 +123,7 @@ void Foam::dropletFiber::fiberPopulation::removeLostFibers()
     // added to it (a serial run adds them one after another, as always)
     const boundBox& box = mesh_.bounds();
     scalar massRemoved = Pstream::master() ? totals_.massRemoved : 0;
+    scalar binderRemoved = Pstream::master() ? totals_.binderRemoved : 0;
     label removed = 0;
     held_.keepIf
     (
@@ -138,11 +139,13 @@ void Foam::dropletFiber::fiberPopulation::removeLostFibers()
                 }
             }
             massRemoved += fiber.represents()*fiber.totalMass();
+            binderRemoved += fiber.represents()*fiber.totalCapturedMass();
             ++removed;
             return false;
         }
     );
     totals_.massRemoved = returnReduce(massRemoved, sumOp<scalar>());
+    totals_.binderRemoved = returnReduce(binderRemoved, sumOp<scalar>());
     totals_.removed += returnReduce(removed, sumOp<label>());
 }
 

@@ -168,6 +168,10 @@ void Foam::dropletFiber::fiberPopulation::writeState
     totals.add("fiberMassAdded", totals_.massAdded);
     totals.add("fiberMassRemoved", totals_.massRemoved);
     totals.add("fibersRemoved", totals_.removed);
+    if (totals_.countBinderRemoved)
+    {
+        totals.add("fiberBinderRemoved", totals_.binderRemoved);
+    }
 }
 
 
@@ -197,6 +201,10 @@ void Foam::dropletFiber::fiberPopulation::readState
     totals_.massAdded = nonNegative("fiberMassAdded");
     totals_.massRemoved = nonNegative("fiberMassRemoved");
     totals_.removed = requiredCount(totals, "fibersRemoved");
+    // States written without a belt have none: the binder lost before is
+    // then unknown and taken as 0 (the binder balance says so)
+    totals_.binderRemoved =
+        totals.found("fiberBinderRemoved") ? nonNegative("fiberBinderRemoved") : 0;
 }
 
 

@@ -1,0 +1,72 @@
+// MatMap: the primary mat on the belt as a map of square cells across x along the belt
+// (docs/model.md sec. 11): per cell the glass and binder laid there and the physical
+// fibers, each laid fiber counted `represents` times in the cell of its centre's foot.
+// Figures per cell: glass and binder area weight (kg/m^2), LOI = binder / (glass +
+// binder), fibers per m^2, and the orientation order <cos 2 theta> (glass-weighted,
+// theta the angle of a fiber's projection on the belt to the belt's motion: 1 all along
+// the belt, -1 all across, 0 random in the plane).
+// Cells are kept where something was laid (sparse); the across origin is acrossMin (the
+// belt's edge), along from 0. Sums add up exactly in laying order, so a map rebuilt from
+// the same fibers in the same order is the same to the bit.
+#pragma once
+
+#include "laydown/Belt.hpp"
+
+#include <map>
+#include <utility>
+#include <vector>
+
+namespace dropletFiber
+{
+
+struct MatCell
+{
+    double glass = 0.0;          // kg
+    double binder = 0.0;         // kg
+    double fibers = 0.0;         // physical fibers
+    double orientationSum = 0.0; // sum of glass x cos 2 theta
+};
+
+class MatMap
+{
+public:
+    // Cells of size `cell` [m] from across = acrossMin; throws unless cell > 0.
+    MatMap(double cell, double acrossMin, double acrossMax);
+
+    double cell() const { return cell_; }
+    double acrossMin() const { return acrossMin_; }
+    double acrossMax() const { return acrossMax_; }
+    // The columns across the belt's width [acrossMin, acrossMax].
+    long widthColumns() const;
+
+    void add(const LaidFiber& fiber);
+
+    // (column, row) -> cell, in order.
+    using Cells = std::map<std::pair<long, long>, MatCell>;
+    const Cells& cells() const { return cells_; }
+    // Restores a cell (restart).
+    void setCell(long column, long row, const MatCell& value) { cells_[{column, row}] = value; }
+
+    // Totals over all cells.
+    MatCell total() const;
+
+    // The glass area weight [kg/m^2] per column of the belt's width, over the rows
+    // [rowFrom, rowTo] (inclusive), and its coefficient of variation across the width
+    // (population standard deviation / mean; 0 when the mean is 0).
+    std::vector<double> acrossProfile(long rowFrom, long rowTo) const;
+    static double variation(const std::vector<double>& profile);
+
+    long column(double across) const;
+    long row(double along) const;
+
+private:
+    double cell_;
+    double acrossMin_, acrossMax_;
+    Cells cells_;
+};
+
+// cos 2 theta of an orientation (across, along, normal components): of its projection
+// on the belt; 0 for a fiber standing normal to the belt.
+double orientationOrder(const Eigen::Vector3d& orientation);
+
+} // namespace dropletFiber

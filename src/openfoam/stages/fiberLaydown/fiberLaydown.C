@@ -1,0 +1,361 @@
+/*---------------------------------------------------------------------------*\
+  dropletFiber: stochastic droplet-fiber coupling for OpenFOAM
+-------------------------------------------------------------------------------
+Description
+    The belt's settings and the laying of the fibers that reached it.
+\*---------------------------------------------------------------------------*/
+
+#include "fiberLaydown.H"
+#include "dictionaryChecks.H"
+#include "dictionaryKeys.H"
+#include "fiberStateIO.H"
+#include "OStringStream.H"
+#include "PstreamReduceOps.H"
+
+#include <algorithm>
+#include <cmath>
+
+// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- The entries of fibers.laydown (docs/reference.md)
+const Foam::wordList laydownKeys
+{
+    "patch", "point", "normal", "width", "velocity", "cell"
+};
+
+//- Values per laid fiber in the exchange
+constexpr Foam::label laidWidth = 14;
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::dropletFiber::fiberLaydown::beltFromPatch
+(
+    const dictionary& dict,
+    scalar& acrossMin,
+    scalar& acrossMax
+)
+{
+    const word patchName = dict.get<word>("patch");
+    const label patchi = mesh_.boundaryMesh().findPatchID(patchName);
+    if (patchi < 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'patch' names patch '" << patchName << "', which does"
+            << " not exist: allowed are the mesh's patches "
+            << mesh_.boundaryMesh().names() << exit(FatalIOError);
+    }
+    const polyPatch& pp = mesh_.boundaryMesh()[patchi];
+    const scalar area = gSum(mag(pp.faceAreas()));
+    if (!(area > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'patch' names patch '" << patchName << "', which has"
+            << " no faces: the belt needs a planar patch with faces."
+            << exit(FatalIOError);
+    }
+    const vector areaSum = gSum(pp.faceAreas());
+    belt_.point = toEigen(gSum(pp.faceCentres()*mag(pp.faceAreas()))/area);
+    belt_.normal = toEigen(areaSum/mag(areaSum));
+    // Planar: every face centre on the mean plane, to 1e-6 of the patch's size
+    scalar offPlane = 0;
+    for (const point& c : pp.faceCentres())
+    {
+        offPlane =
+            max(offPlane, mag(toEigen(c).dot(belt_.normal) - belt_.point.dot(belt_.normal)));
+    }
+    offPlane = returnReduce(offPlane, maxOp<scalar>());
+    const scalar size = Foam::sqrt(area);
+    if (offPlane > 1e-6*size)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'patch' names patch '" << patchName << "', which is not"
+            << " planar: its faces lie up to " << offPlane << " m off their"
+            << " mean plane (allowed: 1e-6 of its size " << size << " m)."
+            << nl << "    Give the belt as point, normal and width instead."
+            << exit(FatalIOError);
+    }
+    // The width: the patch's points across the belt
+    const Eigen::Vector3d across = belt_.acrossDirection();
+    acrossMin = GREAT;
+    acrossMax = -GREAT;
+    for (const point& p : pp.localPoints())
+    {
+        const scalar a = (toEigen(p) - belt_.point).dot(across);
+        acrossMin = min(acrossMin, a);
+        acrossMax = max(acrossMax, a);
+    }
+    reduce(acrossMin, minOp<scalar>());
+    reduce(acrossMax, maxOp<scalar>());
+}
+
+
+void Foam::dropletFiber::fiberLaydown::beltFromPlane
+(
+    const dictionary& dict,
+    scalar& acrossMin,
+    scalar& acrossMax
+)
+{
+    const vector normal = dict.get<vector>("normal");
+    if (!(mag(normal) > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'normal' is " << normal << ": allowed are non-zero"
+            << " vectors (out of the air, through the belt)."
+            << exit(FatalIOError);
+    }
+    belt_.point = toEigen(dict.get<vector>("point"));
+    belt_.normal = toEigen(normal/mag(normal));
+    const scalar width = getPositive(dict, "width");
+    acrossMin = -0.5*width;
+    acrossMax = 0.5*width;
+}
+
+
+std::vector<::dropletFiber::LaidFiber>
+Foam::dropletFiber::fiberLaydown::gathered
+(
+    const std::vector<::dropletFiber::LaidFiber>& here
+)
+{
+    List<List<scalar>> all(Pstream::nProcs());
+    List<scalar>& mine = all[Pstream::myProcNo()];
+    mine.setSize(laidWidth*label(here.size()));
+    label k = 0;
+    for (const ::dropletFiber::LaidFiber& f : here)
+    {
+        const scalar values[laidWidth] =
+        {
+            f.time, f.across, f.along, f.orientation.x(), f.orientation.y(),
+            f.orientation.z(), f.length, f.glassMass, f.binderMass,
+            f.represents, f.bareFraction, f.sigmaVariation, scalar(f.id), 0.0
+        };
+        for (const scalar v : values)
+        {
+            mine[k++] = v;
+        }
+    }
+    if (Pstream::parRun())
+    {
+        Pstream::gatherList(all);
+        Pstream::scatterList(all);
+    }
+    std::vector<::dropletFiber::LaidFiber> laid;
+    for (const List<scalar>& values : all)
+    {
+        for (label i = 0; i + laidWidth <= values.size(); i += laidWidth)
+        {
+            const scalar* v = &values[i];
+            ::dropletFiber::LaidFiber f;
+            f.time = v[0];
+            f.across = v[1];
+            f.along = v[2];
+            f.orientation = Eigen::Vector3d(v[3], v[4], v[5]);
+            f.length = v[6];
+            f.glassMass = v[7];
+            f.binderMass = v[8];
+            f.represents = v[9];
+            f.bareFraction = v[10];
+            f.sigmaVariation = v[11];
+            f.id = long(std::llround(v[12]));
+            laid.push_back(f);
+        }
+    }
+    // In birth order whatever the decomposition: the map's sums the same bits
+    std::stable_sort
+    (
+        laid.begin(), laid.end(),
+        [](const ::dropletFiber::LaidFiber& a, const ::dropletFiber::LaidFiber& b)
+        {
+            return a.id < b.id;
+        }
+    );
+    return laid;
+}
+
+
+std::pair<long, long> Foam::dropletFiber::fiberLaydown::completeRows() const
+{
+    if (totals_.firstTime < 0 || map_->cells().empty())
+    {
+        return {1, 0};
+    }
+    const scalar V = belt_.speed();
+    const scalar cell = map_->cell();
+    if (!(V > 0))
+    {
+        // At rest: the whole deposit is the mat
+        return {map_->cells().begin()->first.second, map_->cells().rbegin()->first.second};
+    }
+    // A row is complete once the whole laying zone [footMin, footMax] has passed over it
+    // since the first fiber: along from V t_first - footMin + (footMax - footMin) to
+    // V t - footMax
+    const scalar from =
+        V*totals_.firstTime - totals_.footMin + (totals_.footMax - totals_.footMin);
+    const scalar to = V*time_.value() - totals_.footMax;
+    return {long(std::ceil(from/cell - 1e-9)), long(std::floor(to/cell + 1e-9)) - 1};
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::dropletFiber::fiberLaydown::fiberLaydown
+(
+    const functionObject& owner,
+    const fvMesh& mesh
+)
+:
+    couplingStage(owner, mesh),
+    writeFile(mesh, owner.name(), "laydown", false),
+    on_(false)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::dropletFiber::fiberLaydown::read
+(
+    const dictionary& dict,
+    const bool running
+)
+{
+    writePrecision_ = dict.lookupOrDefault<label>("writePrecision", 10);
+    // A copy (subOrEmptyDict returns one), alive while ld points into it
+    const dictionary fibersDict = dict.subOrEmptyDict("fibers");
+    const dictionary* ld = fibersDict.findDict("laydown");
+    if (running)
+    {
+        OStringStream was, now;
+        was << settings_;
+        if (ld)
+        {
+            now << *ld;
+        }
+        if (was.str() != now.str())
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry 'fibers.laydown' was edited during the run: the mat"
+                << " laid so far is on the belt in force." << nl
+                << "    Start a new run for it; the results written so far"
+                << " are kept." << exit(FatalIOError);
+        }
+        return;
+    }
+    on_ = ld != nullptr;
+    if (!on_)
+    {
+        return;
+    }
+    settings_ = *ld;
+    checkKeys(*ld, laydownKeys);
+    const scalar cell = getPositive(*ld, "cell");
+    const bool plane = ld->found("point") || ld->found("normal");
+    if (ld->found("patch") == plane)
+    {
+        FatalIOErrorInFunction(*ld)
+            << "Entry 'laydown' needs the belt as 'patch', or as 'point',"
+            << " 'normal' and 'width'"
+            << (plane ? ", not both." : ".") << exit(FatalIOError);
+    }
+    if (!plane && ld->found("width"))
+    {
+        FatalIOErrorInFunction(*ld)
+            << "Entry 'width' is for a belt given as point and normal: with"
+            << " 'patch' the belt's width is the patch's extent across it."
+            << exit(FatalIOError);
+    }
+    belt_.velocity = toEigen(ld->lookupOrDefault<vector>("velocity", Zero));
+    scalar acrossMin = 0, acrossMax = 0;
+    if (plane)
+    {
+        beltFromPlane(*ld, acrossMin, acrossMax);
+    }
+    else
+    {
+        beltFromPatch(*ld, acrossMin, acrossMax);
+    }
+    const scalar offPlane = mag(belt_.velocity.dot(belt_.normal));
+    if (offPlane > 1e-9*max(1.0, belt_.velocity.norm()))
+    {
+        FatalIOErrorInFunction(*ld)
+            << "Entry 'velocity' is " << ld->get<vector>("velocity")
+            << ", which leaves the belt's plane (normal "
+            << toFoam(belt_.normal) << ") at " << offPlane << " m/s:"
+            << " allowed are velocities in the plane." << exit(FatalIOError);
+    }
+    map_.reset(new ::dropletFiber::MatMap(cell, acrossMin, acrossMax));
+    const fileName dir =
+        baseFileDir()/name()/time_.timeName(time_.startTime().value());
+    series_.reset(new ::dropletFiber::SeriesFile(dir/"mat.vti.series"));
+    if (Pstream::master())
+    {
+        series_->load(time_.value() + 0.5*time_.deltaTValue());
+    }
+}
+
+
+void Foam::dropletFiber::fiberLaydown::layDown(heldFibers& held)
+{
+    if (!on_)
+    {
+        return;
+    }
+    std::vector<::dropletFiber::LaidFiber> here;
+    const scalar t = time_.value();
+    held.keepIf
+    (
+        [&](std::size_t f)
+        {
+            const ::dropletFiber::Fiber& fiber = held.fibers[f];
+            if (!::dropletFiber::reachesBelt(fiber, belt_))
+            {
+                return true;
+            }
+            here.push_back(::dropletFiber::layFiber(fiber, belt_, t, held.id[f]));
+            return false;
+        }
+    );
+    const std::vector<::dropletFiber::LaidFiber> laid = gathered(here);
+    for (const ::dropletFiber::LaidFiber& f : laid)
+    {
+        map_->add(f);
+        totals_.computed += 1;
+        totals_.physical += f.represents;
+        totals_.glass += f.represents*f.glassMass;
+        totals_.binder += f.represents*f.binderMass;
+        if (totals_.firstTime < 0)
+        {
+            totals_.firstTime = f.time;
+        }
+        // The foot along the motion in the fixed frame: V t - along
+        const scalar foot = belt_.speed()*f.time - f.along;
+        totals_.footMin = min(totals_.footMin, foot);
+        totals_.footMax = max(totals_.footMax, foot);
+    }
+    writeRows(laid);
+}
+
+
+void Foam::dropletFiber::fiberLaydown::report(Ostream& os) const
+{
+    os  << "    laydown: ";
+    if (!on_)
+    {
+        os  << "none (fibers leave through the mesh's bounding box)" << nl;
+        return;
+    }
+    os  << "belt through " << toFoam(belt_.point) << ", normal "
+        << toFoam(belt_.normal) << ", velocity "
+        << toFoam(belt_.velocity) << " m/s, across "
+        << map_->acrossMin() << " to " << map_->acrossMax() << " m, map cells "
+        << map_->cell() << " m" << nl;
+}
+
+
+// ************************************************************************* //

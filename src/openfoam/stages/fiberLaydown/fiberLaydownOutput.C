@@ -1,0 +1,188 @@
+/*---------------------------------------------------------------------------*\
+  dropletFiber: stochastic droplet-fiber coupling for OpenFOAM
+-------------------------------------------------------------------------------
+Description
+    The laid fibers' table, the mat's map as VTK image data and the log's
+    mat and balances at write times.
+\*---------------------------------------------------------------------------*/
+
+#include "fiberLaydown.H"
+#include "OSspecific.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::dropletFiber::fiberLaydown::startTable()
+{
+    if (filePtr_.valid() || !Pstream::master())
+    {
+        return;
+    }
+    writeToFile_ = true;
+    filePtr_ = createFile("laydown");
+    OFstream& os = file();
+    writeHeader
+    (
+        os,
+        "Fibers laid on the belt, one row each (one physical fiber's figures;"
+        " represents: how many were laid with it). across, along [m] in the"
+        " belt's frame; orientation: unit end-to-end (across, along, normal);"
+        " masses in kg"
+    );
+    writeCommented(os, "Time");
+    const char* columns[] =
+    {
+        "id", "across", "along", "orientation_across", "orientation_along",
+        "orientation_normal", "length", "glassMass", "binderMass",
+        "represents", "bareFraction", "sigmaCoV"
+    };
+    for (const char* column : columns)
+    {
+        writeTabbed(os, column);
+    }
+    os  << endl;
+}
+
+
+void Foam::dropletFiber::fiberLaydown::writeRows
+(
+    const std::vector<::dropletFiber::LaidFiber>& laid
+)
+{
+    if (!Pstream::master() || laid.empty())
+    {
+        return;
+    }
+    startTable();
+    OFstream& os = file();
+    for (const ::dropletFiber::LaidFiber& f : laid)
+    {
+        os  << f.time << tab << label(f.id);
+        const scalar values[] =
+        {
+            f.across, f.along, f.orientation.x(), f.orientation.y(),
+            f.orientation.z(), f.length, f.glassMass, f.binderMass,
+            f.represents, f.bareFraction, f.sigmaVariation
+        };
+        for (const scalar v : values)
+        {
+            os  << tab << v;
+        }
+        os  << nl;
+    }
+    os.flush();
+}
+
+
+void Foam::dropletFiber::fiberLaydown::writeMapVtk() const
+{
+    const auto& cells = map_->cells();
+    if (!Pstream::master() || cells.empty())
+    {
+        return;
+    }
+    long c0 = 0, c1 = map_->widthColumns() - 1;
+    long r0 = cells.begin()->first.second, r1 = r0;
+    for (const auto& entry : cells)
+    {
+        c0 = std::min(c0, entry.first.first);
+        c1 = std::max(c1, entry.first.first);
+        r0 = std::min(r0, entry.first.second);
+        r1 = std::max(r1, entry.first.second);
+    }
+    const int nx = int(c1 - c0 + 1), ny = int(r1 - r0 + 1);
+    const scalar h = map_->cell(), area = h*h;
+    std::vector<::dropletFiber::VtkField> fields
+    {
+        {"areaWeight", 1, {}}, {"binderAreaWeight", 1, {}}, {"LOI", 1, {}},
+        {"fibersPerArea", 1, {}}, {"orientationOrder", 1, {}}
+    };
+    for (auto& f : fields)
+    {
+        f.values.assign(std::size_t(nx)*std::size_t(ny), 0.0);
+    }
+    for (const auto& [key, c] : cells)
+    {
+        const std::size_t k =
+            std::size_t(key.second - r0)*std::size_t(nx) + std::size_t(key.first - c0);
+        fields[0].values[k] = 1000*c.glass/area;     // g/m2
+        fields[1].values[k] = 1000*c.binder/area;    // g/m2
+        fields[2].values[k] =
+            c.glass + c.binder > 0 ? 100*c.binder/(c.glass + c.binder) : 0;
+        fields[3].values[k] = c.fibers/area;
+        fields[4].values[k] = c.glass > 0 ? c.orientationSum/c.glass : 0;
+    }
+    const fileName dir =
+        baseFileDir()/name()/time_.timeName(time_.startTime().value());
+    mkDir(dir);
+    const word file = "mat_" + time_.timeName() + ".vti";
+    // x across, y along the belt, at the cells' centres
+    ::dropletFiber::writeImageData
+    (
+        dir/file, time_.value(),
+        Eigen::Vector3d(map_->acrossMin() + (c0 + 0.5)*h, (r0 + 0.5)*h, 0),
+        Eigen::Vector3d(h, h, h), {nx, ny, 1}, fields
+    );
+    series_->add(file, time_.value());
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::dropletFiber::fiberLaydown::reportAtWrite
+(
+    const scalar glassInAir,
+    const scalar binderInAir,
+    const scalar glassInjected,
+    const scalar massLost,
+    const scalar binderLost,
+    const scalar captured
+)
+{
+    if (!on_)
+    {
+        return;
+    }
+    coreCall("writing the mat's map", [this]() { writeMapVtk(); });
+    const laidTotals& t = totals_;
+    Info<< type() << " " << name() << " laydown at time " << time_.timeName()
+        << ": " << t.computed << " computed fibers laid (" << t.physical
+        << " physical), glass " << t.glass << " kg, binder " << t.binder
+        << " kg: LOI "
+        << (t.glass + t.binder > 0 ? 100*t.binder/(t.glass + t.binder) : 0)
+        << " %" << nl;
+    const std::pair<long, long> rows = completeRows();
+    if (rows.first <= rows.second)
+    {
+        const std::vector<double> profile =
+            map_->acrossProfile(rows.first, rows.second);
+        double mean = 0;
+        for (double v : profile)
+        {
+            mean += v;
+        }
+        mean /= std::max<std::size_t>(profile.size(), 1);
+        Info<< "    mat (rows " << rows.first << " to " << rows.second
+            << ", along " << rows.first*map_->cell() << " to "
+            << (rows.second + 1)*map_->cell() << " m, " << profile.size()
+            << " columns across): glass area weight " << 1000*mean
+            << " g/m2, across-width CoV "
+            << ::dropletFiber::MatMap::variation(profile) << nl;
+    }
+    else
+    {
+        Info<< "    mat: no complete row yet (the belt has not carried a row"
+            << " across the whole laying zone)" << nl;
+    }
+    const scalar glassLost = massLost - binderLost;
+    Info<< "    glass: injected " << glassInjected << " kg = in the air "
+        << glassInAir << " + laid " << t.glass << " + lost " << glassLost
+        << " (balance " << glassInjected - glassInAir - t.glass - glassLost
+        << " kg)" << nl
+        << "    binder: captured " << captured << " kg = on airborne fibers "
+        << binderInAir << " + laid " << t.binder << " + on lost fibers "
+        << binderLost << " (balance "
+        << captured - binderInAir - t.binder - binderLost << " kg)" << nl;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,132 @@
+/*---------------------------------------------------------------------------*\
+  dropletFiber: stochastic droplet-fiber coupling for OpenFOAM
+-------------------------------------------------------------------------------
+Description
+    The mat's part of the restart state: the map's cells and the totals
+    laid, the same on every processor.
+\*---------------------------------------------------------------------------*/
+
+#include "fiberLaydown.H"
+#include "dictionaryChecks.H"
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::dropletFiber::fiberLaydown::writeState
+(
+    const fileName&,
+    dictionary& state,
+    dictionary&
+)
+{
+    if (!on_)
+    {
+        return;
+    }
+    const auto& cells = map_->cells();
+    labelList columns(cells.size()), rows(cells.size());
+    scalarList glass(cells.size()), binder(cells.size());
+    scalarList fibers(cells.size()), orientation(cells.size());
+    label k = 0;
+    for (const auto& [key, c] : cells)
+    {
+        columns[k] = label(key.first);
+        rows[k] = label(key.second);
+        glass[k] = c.glass;
+        binder[k] = c.binder;
+        fibers[k] = c.fibers;
+        orientation[k] = c.orientationSum;
+        ++k;
+    }
+    dictionary mat;
+    mat.add("computed", totals_.computed);
+    mat.add("physical", totals_.physical);
+    mat.add("glass", totals_.glass);
+    mat.add("binder", totals_.binder);
+    mat.add("firstTime", totals_.firstTime);
+    mat.add("footMin", totals_.footMin);
+    mat.add("footMax", totals_.footMax);
+    mat.add("cell", map_->cell());
+    mat.add("columns", columns);
+    mat.add("rows", rows);
+    mat.add("cellGlass", glass);
+    mat.add("cellBinder", binder);
+    mat.add("cellFibers", fibers);
+    mat.add("cellOrientation", orientation);
+    state.add("laydown", mat);
+}
+
+
+void Foam::dropletFiber::fiberLaydown::readState
+(
+    const dictionary& state,
+    const fileName& path
+)
+{
+    const dictionary* mat = state.findDict("laydown");
+    if (!on_)
+    {
+        if (mat)
+        {
+            WarningInFunction
+                << type() << " " << name() << ": the restart state " << path
+                << " holds a mat, but fibers.laydown is not given: fibers"
+                << " are no longer laid, the mat is not continued." << endl;
+        }
+        return;
+    }
+    if (!mat)
+    {
+        Info<< type() << " " << name() << ": the restart state " << path
+            << " has no mat (the run restarted from laid none): the mat"
+            << " starts empty" << nl;
+        return;
+    }
+    const scalar cell = mat->get<scalar>("cell");
+    if (cell != map_->cell())
+    {
+        FatalIOErrorInFunction(*mat)
+            << "The restart state " << path << " has a mat of cells " << cell
+            << " m, fibers.laydown.cell is " << map_->cell() << " m: the map"
+            << " cannot continue on other cells." << nl
+            << "    Restart with cell " << cell << ", or set 'restart fresh;'."
+            << exit(FatalIOError);
+    }
+    totals_.computed = mat->get<label>("computed");
+    totals_.physical = mat->get<scalar>("physical");
+    totals_.glass = mat->get<scalar>("glass");
+    totals_.binder = mat->get<scalar>("binder");
+    totals_.firstTime = mat->get<scalar>("firstTime");
+    totals_.footMin = mat->get<scalar>("footMin");
+    totals_.footMax = mat->get<scalar>("footMax");
+    const labelList columns = mat->get<labelList>("columns");
+    const labelList rows = mat->get<labelList>("rows");
+    const scalarList glass = mat->get<scalarList>("cellGlass");
+    const scalarList binder = mat->get<scalarList>("cellBinder");
+    const scalarList fibers = mat->get<scalarList>("cellFibers");
+    const scalarList orientation = mat->get<scalarList>("cellOrientation");
+    const label n = columns.size();
+    if
+    (
+        rows.size() != n || glass.size() != n || binder.size() != n
+     || fibers.size() != n || orientation.size() != n
+    )
+    {
+        FatalIOErrorInFunction(*mat)
+            << "The restart state " << path << ": the mat's cell lists have"
+            << " different lengths (columns " << n << ", rows " << rows.size()
+            << ", glass " << glass.size() << "): the state is damaged."
+            << exit(FatalIOError);
+    }
+    forAll(columns, k)
+    {
+        ::dropletFiber::MatCell c;
+        c.glass = glass[k];
+        c.binder = binder[k];
+        c.fibers = fibers[k];
+        c.orientationSum = orientation[k];
+        map_->setCell(columns[k], rows[k], c);
+    }
+}
+
+
+// ************************************************************************* //
