@@ -45,6 +45,7 @@ READERS = (
     "src/openfoam/stages/couplingRestart/couplingRestart.C",
     "src/openfoam/stages/airReaction/airReaction.C",
     "src/openfoam/fiberDragSource/fiberDragSource.C",
+    "src/openfoam/stages/fiberLaydown/fiberLaydown.C",
 )
 CHECKED_READ = re.compile(
     r"\b(?:getPositive|getNonNegative|getCheckedScalar|getLabelInRange|getSwitch"
@@ -101,6 +102,7 @@ KEY_LISTS = {
     "fixedFiberKeys": [FIXED],
     "turbulenceKeys": ["fibers.turbulence"],
     "fiberDragSourceKeys": ["fiberDragSource"],
+    "laydownKeys": ["fibers.laydown"],
 }
 NAMED_LIST = re.compile(r"wordList\s+(\w*Keys)\s*\{([^}]*)\}"
                         r"|checkKeys\s*\(\s*(\w+)\s*,\s*\{([^}]*)\}")

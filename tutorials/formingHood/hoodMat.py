@@ -1,0 +1,149 @@
+#!/usr/bin/env python3
+"""The forming hood's product: the primary mat on the conveyor under the hood, from the
+fibers the function object laid on it (fibers.laydown; laydown.dat, one row per fiber).
+
+The run covers 0.6 s: the belt carries a point of the mat across the laying zone (the
+outlet, 1 m along the belt) in 5 s, so no row of the mat is complete. The product is
+therefore taken from the laying rate once it is established (from FROM s on): the glass
+and binder laid per second in each column across the belt, carried away at the belt speed
+V, give the steady mat's area weight per column
+
+    G_c = (glass laid per s in column c) / (h V)       (h: the column's width)
+
+and likewise the binder's; LOI = binder / (glass + binder); the across-width coefficient
+of variation of G (the figure a plant quotes for uniformity); the binder efficiency into
+the product = binder laid / binder sprayed (the table's sprayedMass) over the same window.
+The belt's speed, width and cells come from the solver log's settings line. Writes
+hoodMat.png: the laying rate over the outlet and the product across the belt.
+
+Usage: hoodMat.py CASE [-from T] [-png FILE]
+"""
+import glob
+import os
+import re
+import sys
+
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import hoodProduct  # noqa: E402
+
+NUMBER = r"([-+0-9.eE]+)"
+
+
+def belt(log):
+    """(speed, across min, across max, cell) from the log's laydown settings line."""
+    m = re.search(r"laydown: belt through .* velocity \(" + NUMBER + " " + NUMBER + " " + NUMBER
+                  + r"\) m/s, across " + NUMBER + " to " + NUMBER + " m, map cells " + NUMBER,
+                  open(log).read())
+    if not m:
+        return None
+    v = np.array([float(m.group(i)) for i in (1, 2, 3)])
+    return np.linalg.norm(v), float(m.group(4)), float(m.group(5)), float(m.group(6))
+
+
+def laid_rows(case):
+    paths = sorted(glob.glob(os.path.join(case, "postProcessing", "dropletFiber", "*", "laydown.dat")))
+    rows = [hoodProduct.table(p) for p in paths]
+    return {k: np.concatenate([r[k] for r in rows]) for k in rows[0]} if rows else None
+
+
+def main():
+    args = sys.argv[1:]
+    start, png = 0.3, "hoodMat.png"
+    for flag in ("-from", "-png"):
+        if flag in args:
+            i = args.index(flag)
+            value = args[i + 1]
+            del args[i:i + 2]
+            if flag == "-from":
+                start = float(value)
+            else:
+                png = value
+    if len(args) != 1:
+        print(__doc__)
+        return 1
+    case = args[0]
+    log = os.path.join(case, "log.sprayFoam")
+    settings = belt(log) if os.path.isfile(log) else None
+    laid = laid_rows(case)
+    if settings is None:
+        print("hoodMat: no belt in %s (fibers.laydown not given)" % case)
+        return 1
+    if laid is None or len(laid["Time"]) == 0:
+        print("hoodMat: no fiber has reached the belt yet")
+        return 0
+    speed, lo, hi, h = settings
+    t = laid["Time"]
+    end = float(hoodProduct.table(os.path.join(case, "postProcessing", "dropletFiber", "0",
+                                               "dropletFiber.dat"))["Time"][-1])
+    if end - start <= 0 or not (t >= start - 1e-9).any():
+        # A short run: from the first fiber laid (not yet an established rate)
+        start = float(t.min())
+        print("hoodMat: the run ends before %g s: the mat from the first fiber laid, at %g s" % (end, start))
+    window = max(end - start, 1e-12)
+    use = t >= start - 1e-9
+    n = laid["represents"][use]
+    glass, binder = n * laid["glassMass"][use], n * laid["binderMass"][use]
+    columns = int(round((hi - lo) / h))
+    column = np.clip(np.floor((laid["across"][use] - lo) / h).astype(int), 0, columns - 1)
+    g = np.bincount(column, glass, columns) / window / (h * speed)
+    b = np.bincount(column, binder, columns) / window / (h * speed)
+    table = hoodProduct.table(os.path.join(case, "postProcessing", "dropletFiber", "0", "dropletFiber.dat"))
+    sprayed = np.interp(end, table["Time"], table["sprayedMass"]) - np.interp(start, table["Time"],
+                                                                             table["sprayedMass"])
+    print("The mat on the belt (laydown.dat, %g-%g s: %d computed fibers laid, %.3g physical),"
+          % (start, end, int(use.sum()), n.sum()))
+    print("    belt %.3g m/s, %.3g m wide, %d columns of %.3g m" % (speed, hi - lo, columns, h))
+    print("    glass laid %.4g kg/s, binder %.4g kg/s" % (glass.sum() / window, binder.sum() / window))
+    print("    area weight (mean over the width): glass %.1f g/m2, binder %.2f g/m2, LOI %.2f %%"
+          % (1000 * g.mean(), 1000 * b.mean(), 100 * b.sum() / (g.sum() + b.sum())))
+    print("    across-width CoV: glass area weight %.3f, LOI %.3f"
+          % (g.std() / g.mean(), np.std(b / (g + b)) / np.mean(b / (g + b))))
+    print("    binder efficiency into the product: laid %.4g / sprayed %.4g kg = %.3f"
+          % (binder.sum(), sprayed, binder.sum() / sprayed if sprayed > 0 else 0))
+    # The fibers carry their binder as one mass (not per species): the laid binder's resin
+    # taken at the resin's share of all binder captured so far
+    resinColumn = "captured_" + hoodProduct.RESIN
+    share = 1.0
+    if resinColumn in table and table["capturedTotal"][-1] > 0:
+        share = table[resinColumn][-1] / table["capturedTotal"][-1]
+        r = share * b
+        print("    resin (%.1f %% of the binder captured): %.2f g/m2, the product's LOI (water gone) %.2f %%"
+              % (100 * share, 1000 * r.mean(), 100 * r.sum() / (g.sum() + r.sum())))
+    draw(png, laid, use, speed, lo, hi, h, g, share * b, window)
+    print("hoodMat: wrote %s" % png)
+    return 0
+
+
+def draw(png, laid, use, speed, lo, hi, h, g, resin, window):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, (left, right) = plt.subplots(1, 2, figsize=(13, 5))
+    n = laid["represents"][use]
+    foot = speed * laid["Time"][use] - laid["along"][use]  # along the motion, fixed frame
+    edges = np.arange(lo, hi + h / 2, h)
+    counts, xe, ye = np.histogram2d(laid["across"][use], foot, bins=[edges, edges - (lo + hi) / 2],
+                                    weights=n * laid["glassMass"][use])
+    mesh = left.pcolormesh(xe, ye, 1000 * counts.T / (h * h * window), cmap="viridis")
+    plt.colorbar(mesh, ax=left, label="glass laid [g/(m² s)]")
+    left.set_xlabel("across the belt [m]")
+    left.set_ylabel("along the belt's motion [m] (fixed frame)")
+    left.set_title("Where the fibers land on the belt")
+    centres = 0.5 * (edges[1:] + edges[:-1])
+    right.plot(centres, 1000 * g, "o-", label="glass [g/m²]")
+    right.set_xlabel("across the belt [m]")
+    right.set_ylabel("the mat's glass area weight [g/m²] (blue)")
+    other = right.twinx()
+    loi = np.divide(100 * resin, g + resin, out=np.zeros_like(g), where=g + resin > 0)
+    other.plot(centres, loi, "s--", color="tab:red", label="LOI [%]")
+    other.set_ylabel("LOI, resin / (glass + resin) [%] (red)")
+    right.set_title("The product across the belt: CoV %.3f" % (g.std() / g.mean()))
+    fig.tight_layout()
+    fig.savefig(png, dpi=90)
+    plt.close(fig)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
