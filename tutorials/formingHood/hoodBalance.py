@@ -69,6 +69,19 @@ def captured_total(case, time):
     return value
 
 
+def laid_binder(log):
+    """The captured binder on airborne fibers, laid in the mat and on lost fibers, and the
+    balance, from the function object's last laydown report (None without a belt)."""
+    number = r"([-+0-9.eE]+)"
+    found = re.findall(r"binder: captured " + number + " kg = on airborne fibers " + number
+                       + r" \+ laid " + number + r" \+ on lost fibers " + number + r" \(balance "
+                       + number, open(log).read())
+    if not found:
+        return None
+    captured, on_air, in_mat, lost, balance = (float(v) for v in found[-1])
+    return on_air, in_mat, lost, balance
+
+
 def main():
     case, log = sys.argv[1], sys.argv[2]
     tolerance = float(sys.argv[3]) if len(sys.argv) > 3 else 1e-9
@@ -93,6 +106,13 @@ def main():
     if not depletion:
         print("    %-24s %.6e  (depletion off: not taken from the spray)"
               % ("captured by the fibers", captured))
+    laid = laid_binder(log)
+    if laid is not None:
+        # The captured binder's whereabouts (fibers.laydown): the function object's balance
+        on_air, in_mat, lost, balance = laid
+        for name, value in [("  on fibers in the air", on_air), ("  laid in the mat", in_mat),
+                            ("  on fibers lost", lost)]:
+            print("    %-24s %.6e  %8.4f %%" % (name, value, 100 * value / sprayed if sprayed else 0))
     if relative > tolerance:
         print("hoodBalance: the balance does not close")
         return 1

@@ -116,7 +116,8 @@ Foam::functionObjects::dropletFiberCollision::dropletFiberCollision
     reportSettings();
     output_.writeTableHeader
     (
-        capture_.depletion(), spray_.liquidSpecies(), population_.weighted()
+        capture_.depletion(), spray_.liquidSpecies(), population_.weighted(),
+        laydown_.on()
     );
 }
 

@@ -26,6 +26,9 @@ void Foam::functionObjects::dropletFiberCollision::reportStep
         step.fibersRepresented = population_.represented();
     }
     step.fiberMass = population_.mass();
+    step.laying = laydown_.on();
+    step.laidGlass = laydown_.totals().glass;
+    step.laidBinder = laydown_.totals().binder;
     step.capturedTotal = capture_.captured();
     step.depletion = capture_.depletion();
     if (step.depletion)

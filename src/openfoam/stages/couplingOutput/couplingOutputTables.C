@@ -54,7 +54,8 @@ void Foam::dropletFiber::couplingOutput::writeTableHeader
 (
     const bool depletion,
     const wordList& liquidSpecies,
-    const bool weighted
+    const bool weighted,
+    const bool laying
 )
 {
     if (!writeToFile())
@@ -99,6 +100,13 @@ void Foam::dropletFiber::couplingOutput::writeTableHeader
         {
             writeTabbed(os, "captured_" + species);
         }
+    }
+    // With a belt: the glass and binder laid so far (glass injected = in the
+    // air + laid + lost, the log at write times)
+    if (laying)
+    {
+        writeTabbed(os, "laidGlass");
+        writeTabbed(os, "laidBinder");
     }
     // One stage each: gather and deposit; collision (and depletion's
     // removal); the fibers' injection, step and hand-over
@@ -156,6 +164,10 @@ void Foam::dropletFiber::couplingOutput::writeStep(const stepRow& step)
             {
                 os  << tab << captured;
             }
+        }
+        if (step.laying)
+        {
+            os  << tab << step.laidGlass << tab << step.laidBinder;
         }
         os  << tab << step.depositionTime
             << tab << step.collisionTime
