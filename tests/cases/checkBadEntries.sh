@@ -107,6 +107,18 @@ expectFvOptionError "semiImplicitt true;" "Entry 'semiImplicitt' in dictionary '
 expectFvOptionError "fields (U p);" "fvOption fiberDrag: entry 'fields' is 2\\(U p\\): allowed is one velocity field" "IO ERROR"
 expectFvOptionError "" "the fields fiberDragForce and fiberDragCoeff are not there" "ERROR"
 
+# The belt the fibers are laid on: its patch, cells, velocity in its plane, one way of
+# giving it; a patch of two parallel faces (walls) is not a plane
+expectError fibers/laydown "{ patch nowhere; cell 0.01; }" "Entry 'patch' names patch 'nowhere', which does not exist"
+expectError fibers/laydown "{ patch walls; cell 0.01; }" "Entry 'patch' names patch 'walls', which is not planar"
+expectError fibers/laydown "{ patch outlet; cell 0; }" "Entry 'cell' is 0: allowed are finite values > 0"
+expectError fibers/laydown "{ patch outlet; cell 0.01; velocity (1 0 0); }" \
+    "Entry 'velocity' is \\(1 0 0\\), which leaves the belt's plane"
+expectError fibers/laydown "{ patch outlet; point (0.2 0 0); normal (1 0 0); width 0.05; cell 0.01; }" \
+    "Entry 'laydown' needs the belt as 'patch', or as 'point', 'normal' and 'width', not both"
+expectError fibers/laydown "{ patch outlet; width 0.05; cell 0.01; }" "Entry 'width' is for a belt given as point and normal"
+expectError fibers/laydown "{ patch outlet; cel 0.01; }" "Entry 'cel' in dictionary '[^']*laydown' is not known: did you mean 'cell'\\?"
+
 # A cloud named twice would be gathered twice (parcels, their mass and the
 # captured mass doubled): stops, naming the entry, the cloud and what is allowed
 expectError clouds "(kinematicCloud kinematicCloud)" \

@@ -51,7 +51,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from checkFiberCurtainFiles import fibers  # noqa: E402
-from checkFiberRainFiles import (ACROSS_MAX, ACROSS_MIN, BELT_POINT, hand, laid, mat,  # noqa: E402
+from checkFiberRainFiles import (ACROSS_MAX, ACROSS_MIN, hand, laid, mat,  # noqa: E402
                                  series, settings, state_laydown, write_reports)
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "lib"))
@@ -115,9 +115,9 @@ check(worst["length"] <= 1e-12 and worst["glassMass"] <= 1e-12,
       "length and glass mass the hand's to 1e-12 (largest %.3g, %.3g of them)"
       % (worst["length"], worst["glassMass"]))
 first = min(e["Time"] for e in expected.values())
-feet = [-(e["along"] - V * e["Time"]) for e in expected.values()]  # (x_c - p_x) . e_a
-footMin, footMax = min(V * e["Time"] - e["along"] for e in expected.values()), \
-    max(V * e["Time"] - e["along"] for e in expected.values())
+# The feet along the motion in the fixed frame, V t - along = (x_c - p_x) . e_a
+footMin = min(V * e["Time"] - e["along"] for e in expected.values())
+footMax = max(V * e["Time"] - e["along"] for e in expected.values())
 
 
 # --- 2.-5. at every write time --------------------------------------------------------
@@ -125,7 +125,7 @@ def cell_of(r):
     return int(math.floor((r["across"] - ACROSS_MIN) / h)), int(math.floor(r["along"] / h))
 
 
-def cells_of(rows, by_hand):
+def cells_of(rows):
     """(column, row) -> [glass, physical fibers, glass x cos 2 theta] of rows."""
     cells = {}
     for r in rows:
@@ -150,7 +150,7 @@ for T in writeTimes:
     name = "%g" % T
     byHand = [e for e in expected.values() if e["Time"] <= T + 1e-12]
     inTable = [r for r in table if r["Time"] <= T + 1e-12]
-    handCells, tableCells = cells_of(byHand, True), cells_of(inTable, False)
+    handCells, tableCells = cells_of(byHand), cells_of(inTable)
     vti = mat(os.path.join(case, "postProcessing", "dropletFiber", "0", "mat_%s.vti" % name))
     nx, ny = vti["shape"]
     r0 = int(round(vti["origin"][1] / h - 0.5))
@@ -243,13 +243,15 @@ for T in writeTimes:
           "%s: the state's laydown entry%s" % (name, " the same on every processor" if len(texts) > 1 else ""))
     if st is None:
         continue
-    mapCells = dict(((c0 + i, r0 + j), a["areaWeight"][j * nx + i]) for j in range(ny) for i in range(nx))
-    stateMap = all(1000 * g / (h * h) == mapCells.get((int(c), int(r)))
-                   and 1000 * ob / (h * h) == 1000 * g / (h * h) * a["orientationOrder"][
-                       (int(r) - r0) * nx + int(c) - c0] * 1 + (1000 * ob / (h * h) - 1000 * g / (h * h)
-                                                                * a["orientationOrder"][(int(r) - r0) * nx
-                                                                                        + int(c) - c0])
-                   for c, r, g, ob in zip(st["columns"], st["rows"], st["cellGlass"], st["cellOrientation"]))
+    # As the map writes them: 1000 glass / (h h), orientation sum / glass, fibers / (h h)
+    at = dict(((c0 + i, r0 + j), j * nx + i) for j in range(ny) for i in range(nx))
+    stateMap = all(
+        (int(c), int(r)) in at and 1000 * g / (h * h) == a["areaWeight"][at[(int(c), int(r))]]
+        and ob / g == a["orientationOrder"][at[(int(c), int(r))]]
+        and f / (h * h) == a["fibersPerArea"][at[(int(c), int(r))]]
+        for c, r, g, ob, f in zip(st["columns"], st["rows"], st["cellGlass"], st["cellOrientation"],
+                                  st["cellFibers"]))
+    mapCells = dict((k, a["areaWeight"][v]) for k, v in at.items())
     occupied = sorted(k for k, v in mapCells.items() if v > 0)
     check(st["computed"] == len(inTable) and st["physical"] == tableFibers
           and rel(st["glass"], tableGlass) <= 1e-12 and st["binder"] == 0 and st["firstTime"] == first

@@ -60,6 +60,16 @@ void Foam::dropletFiber::fiberLaydown::beltFromPatch
             << exit(FatalIOError);
     }
     const vector areaSum = gSum(pp.faceAreas());
+    if (mag(areaSum) < 0.5*area)
+    {
+        // Faces facing opposite ways (the two walls of a channel): no plane
+        FatalIOErrorInFunction(dict)
+            << "Entry 'patch' names patch '" << patchName << "', which is not"
+            << " planar: its faces face different ways (the sum of their"
+            << " area vectors is " << mag(areaSum)/area << " of their area)."
+            << nl << "    Give the belt as point, normal and width instead."
+            << exit(FatalIOError);
+    }
     belt_.point = toEigen(gSum(pp.faceCentres()*mag(pp.faceAreas()))/area);
     belt_.normal = toEigen(areaSum/mag(areaSum));
     // Planar: every face centre on the mean plane, to 1e-6 of the patch's size
