@@ -22,6 +22,9 @@ is round-off.
    1e-12 (measured 1.5e-14: the implicit midpoint's Newton iterations leave the straight
    line by round-off); length and glass to 1e-12 of themselves (measured 9e-16: from the
    points); binder 0, represents 1000, bare fraction 1, sigma's CoV 0, exactly.
+   The step table dropletFiber.dat, every step: the computed and physical fibers held,
+   the fiber mass in the air and laidGlass (so far) the hand's (1e-12; measured 1.2e-14),
+   laidBinder 0.
 2. At every write time (the series lists each mat_<time>.vti once): the map against the
    hand's fibers laid by then, every cell (area weight, fibers per m2 to 1e-12 of the
    complete rows' value; orientation order to 1e-12; binder and LOI 0); the complete rows
@@ -39,7 +42,7 @@ is round-off.
    binder all 0; fiber mass = added + captured - removed - laid: the in-air and added
    masses the hand's, laid = the laid glass, balance < 1e-12 of added.
 5. The restart state's `laydown` entry at every write time: totals as the table's (the
-   first time and the feet -(x_c - p_x) the hand's), its cells the map's to the bit
+   first time and the feet x_c - p_x = -0.125 mm the hand's), its cells the map's to the bit
    (area weight = 1000 glass / h^2, as written); on 2 ranks the same text on each
    processor, and the fibers held as the checkerboard decomposition says (processor 1:
    upper half at z < 0.05, lower half at z > 0.05), all four quarters held: every fiber
@@ -50,7 +53,8 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checkFiberCurtainFiles import fibers  # noqa: E402
+from checkFiberCurtainFiles import columns, fibers  # noqa: E402
+from checkFiberCurtainFiles import table as steptable  # noqa: E402
 from checkFiberRainFiles import (ACROSS_MAX, ACROSS_MIN, hand, laid, mat,  # noqa: E402
                                  series, settings, state_laydown, write_reports)
 
@@ -102,10 +106,10 @@ for r in table:
         abs(r["orientation_" + c] - e["orientation_" + c]) for c in ("across", "along", "normal")])
     for key in ("length", "glassMass"):
         worst[key] = max(worst.get(key, 0.0), rel(r[key], e[key]))
-check(all(worst[k] == 0 for k in ("Time", "binderMass", "represents", "bareFraction", "sigmaCoV")),
-      "every row's time (the hand's step), binder 0, represents %g, bare fraction 1, sigma CoV 0: exactly"
-      " (largest differences %s)" % (N, ", ".join("%s %.3g" % (k, worst[k]) for k in
-                                                  ("Time", "binderMass", "represents", "bareFraction", "sigmaCoV"))))
+exact = ("Time", "binderMass", "represents", "bareFraction", "sigmaCoV")
+check(all(worst[k] == 0 for k in exact),
+      "every row's time (the hand's step), binder 0, represents %g, bare fraction 1, sigma CoV 0:"
+      " exactly (largest differences %s)" % (N, ", ".join("%s %.3g" % (k, worst[k]) for k in exact)))
 check(worst["across"] <= 1e-12 and worst["along"] <= 1e-12,
       "across and along the hand's to 1e-12 m (largest %.3g, %.3g m)" % (worst["across"], worst["along"]))
 check(worst["orientation"] <= 1e-12,
@@ -119,6 +123,26 @@ first = min(e["Time"] for e in expected.values())
 footMin = min(V * e["Time"] - e["along"] for e in expected.values())
 footMax = max(V * e["Time"] - e["along"] for e in expected.values())
 
+
+# The step table dropletFiber.dat: every step the fibers held, the fiber mass in the air
+# and the glass laid so far (laidGlass) the hand's; laidBinder 0
+names = columns(case, "dropletFiber", "dropletFiber.dat")
+stepRows = [dict(zip(names, r)) for r in steptable(case, "dropletFiber", "dropletFiber.dat")]
+steps = int(round(s["endTime"] / dt))
+laidBy = [0] * (steps + 1)
+for e in expected.values():
+    laidBy[int(round(e["Time"] / dt))] += 1
+worstStep, held = 0.0, True
+for n, r in enumerate(stepRows, 1):
+    laidSoFar = sum(laidBy[:n + 1])
+    airborne = sum(1 for b in births if b[1] <= n and (b[2] is None or b[2] > n))
+    held = held and r["fibers"] == airborne and r["fibersRepresented"] == airborne * N \
+        and r["laidBinder"] == 0
+    worstStep = max(worstStep, abs(r["laidGlass"] - laidSoFar * N * m) / (max(laidSoFar, 1) * N * m),
+                    abs(r["fiberMass"] - airborne * N * m) / (max(airborne, 1) * N * m))
+check(len(stepRows) == steps and held and worstStep <= 1e-12,
+      "dropletFiber.dat: %d steps, each step's fibers held (the hand's count), fiber mass and laidGlass"
+      " the hand's to 1e-12 (largest %.3g), laidBinder 0" % (len(stepRows), worstStep))
 
 # --- 2.-5. at every write time --------------------------------------------------------
 def cell_of(r):
@@ -139,7 +163,6 @@ def cells_of(rows):
 
 reports = write_reports(log)
 files = series(case)
-steps = int(round(s["endTime"] / dt))
 writeTimes = [n * dt for n in range(s["writeInterval"], steps + 1, s["writeInterval"])]
 check([f for f, _ in files] == ["mat_%g.vti" % t for t in writeTimes]
       and [t for _, t in files] == writeTimes,
@@ -182,7 +205,8 @@ for T in writeTimes:
     rep = reports.get(name, {})
     logMat = rep.get("mat")
     check(logMat is not None and logMat["rows"] == (fromRow, toRow) and logMat["columns"] == 10
-          and abs(logMat["along"][0] - fromRow * h) <= 1e-12 and abs(logMat["along"][1] - (toRow + 1) * h) <= 1e-12,
+          and abs(logMat["along"][0] - fromRow * h) <= 1e-12
+          and abs(logMat["along"][1] - (toRow + 1) * h) <= 1e-12,
           "%s: the log's complete rows %s, the hand's %d to %d (along %g to %g m)"
           % (name, logMat and logMat["rows"], fromRow, toRow, fromRow * h, (toRow + 1) * h))
     complete = [(i, j) for j in range(ny) for i in range(nx) if fromRow <= r0 + j <= toRow]
@@ -220,27 +244,27 @@ for T in writeTimes:
     bornBy = [b for b in births if b[1] <= round(T / dt)]
     inAir = [b for b in bornBy if b[2] is None or b[2] > round(T / dt)]
     injected, air = len(bornBy) * N * m, len(inAir) * N * m
-    gb = rep.get("glassBalance")
-    check(gb is not None and rel(gb[0], injected) <= 1e-11 and rel(gb[1], air) <= 1e-11
-          and rel(gb[2], tableGlass) <= 1e-11 and gb[3] == 0 and abs(gb[4]) <= 1e-12 * injected
+    gb = rep.get("glassBalance") or [float("nan")] * 5
+    check(rel(gb[0], injected) <= 1e-11 and rel(gb[1], air) <= 1e-11 and rel(gb[2], tableGlass) <= 1e-11
+          and gb[3] == 0 and abs(gb[4]) <= 1e-12 * injected
           and abs(gb[0] - gb[1] - gb[2] - gb[3]) <= 1e-11 * injected,
-          "%s: glass injected %s kg (%d fibers) = in the air %s (%d) + laid %s + lost %s, balance %s kg"
-          % ((name,) + tuple(gb[:1] if gb else [None]) + (len(bornBy),) + tuple(gb[1:2] if gb else [None])
-             + (len(inAir),) + tuple(gb[2:] if gb else [None, None, None])))
+          "%s: glass injected %.12g kg (%d fibers) = in the air %.12g (%d) + laid %.12g + lost %g,"
+          " balance %.3g kg" % (name, gb[0], len(bornBy), gb[1], len(inAir), gb[2], gb[3], gb[4]))
     bb = rep.get("binderBalance")
     check(bb == [0.0] * 5, "%s: binder captured 0 = airborne 0 + laid 0 + lost 0 (%s)" % (name, bb))
-    fm = rep.get("fiberMass")
-    check(fm is not None and rel(fm[0], air) <= 1e-11 and rel(fm[1], injected) <= 1e-11
-          and fm[2] == 0 and fm[3] == 0 and rel(fm[4], tableGlass) <= 1e-11 and abs(fm[5]) <= 1e-12 * fm[1],
-          "%s: fiber mass %s kg = added %s + captured 0 - removed 0 - laid %s, balance %s kg"
-          % ((name,) + (tuple(fm[0:2]) + (fm[4], fm[5]) if fm else (None,) * 4)))
+    fm = rep.get("fiberMass") or [float("nan")] * 6
+    check(rel(fm[0], air) <= 1e-11 and rel(fm[1], injected) <= 1e-11 and fm[2] == 0 and fm[3] == 0
+          and rel(fm[4], tableGlass) <= 1e-11 and abs(fm[5]) <= 1e-12 * injected,
+          "%s: fiber mass %.12g kg = added %.12g + captured 0 - removed 0 - laid %.12g, balance %.3g kg"
+          % (name, fm[0], fm[1], fm[4], fm[5]))
     # 5. the restart state
     texts = []
     for p in states:
         text, st = state_laydown(os.path.join(case, p, name, "uniform", "dropletFiber", "dropletFiber"))
         texts.append(text)
     check(texts[0] is not None and all(t == texts[0] for t in texts),
-          "%s: the state's laydown entry%s" % (name, " the same on every processor" if len(texts) > 1 else ""))
+          "%s: the state's laydown entry%s"
+          % (name, " the same on every processor" if len(texts) > 1 else ""))
     if st is None:
         continue
     # As the map writes them: 1000 glass / (h h), orientation sum / glass, fibers / (h h)

@@ -214,8 +214,8 @@ _GLASS = re.compile(r"^    glass: injected (\S+) kg = in the air (\S+) \+ laid (
 _BINDER = re.compile(r"^    binder: captured (\S+) kg = on airborne fibers (\S+) \+ laid (\S+) \+ on lost"
                      r" fibers (\S+) \(balance (\S+) kg\)")
 _CONSERVATION = re.compile(r"conservation at time (\S+),")
-_FIBER_MASS = re.compile(r"^    fiber mass (\S+) kg = added (\S+) \+ captured (\S+) - removed (\S+) - laid (\S+)"
-                         r" \(balance (\S+) kg\)")
+_FIBER_MASS = re.compile(r"^    fiber mass (\S+) kg = added (\S+) \+ captured (\S+) - removed (\S+)"
+                         r" - laid (\S+) \(balance (\S+) kg\)")
 
 
 def write_reports(log):
@@ -266,7 +266,8 @@ def state_laydown(path):
         lst = re.match(r"(\d+)\s*(?:\{\s*(\S+)\s*\}|\((.*)\))\s*$", value.strip(), re.S)
         if lst:
             n = int(lst.group(1))
-            values[key] = [float(lst.group(2))] * n if lst.group(2) else [float(v) for v in lst.group(3).split()]
+            values[key] = ([float(lst.group(2))] * n if lst.group(2)
+                           else [float(v) for v in lst.group(3).split()])
         else:
             values[key] = float(value)
     return m.group(0), values

@@ -1,0 +1,78 @@
+#!/usr/bin/env bash
+#------------------------------------------------------------------------------
+# checkFiberRainBelt.sh - bad fibers.laydown entries stop the run at the start
+# with a FatalIOError naming the entry (and the dictionary,
+# controlDict.functions.dropletFiber.fibers.laydown), before the first step and
+# without a crash; the same belt given as point, normal and width lays the
+# patch's mat.
+#
+# Usage: checkFiberRainBelt.sh CASE_DIR WORK_DIR
+#   The fiberRain case with its laydown entry replaced, serial, to 4 steps:
+#   a patch that does not exist; cell 0 and -0.01; a velocity out of the belt's
+#   plane; patch together with point and normal; width with patch; a non-planar
+#   patch (walls: five faces of the box); neither patch nor point; a key not
+#   known; a zero normal. Then the belt as point (0.1 0 0.05), normal (0 -1 0),
+#   width 0.1 (the patch bottom's centre, normal and extent) run to 0.125: the
+#   hand's fibers and mat (checkFiberRain.py).
+#------------------------------------------------------------------------------
+set -uo pipefail
+caseDir="$(cd "$1" && pwd)"; work="$2"
+here="$(cd "${0%/*}" && pwd)"
+# shellcheck disable=SC1091
+. "$here/lib/prepareCase.sh"
+# shellcheck disable=SC1091
+. "$here/lib/editFile.sh"
+prepareCaseCopy "$caseDir" "$work"
+cp system/controlDict system/controlDict.good
+belt="velocity (0.256 0 0); cell 0.01;"
+
+# setLaydown LAYDOWN: the laydown block replaced by `laydown LAYDOWN`, the rest of the
+# file as it is (foamDictionary -set would rewrite it all to 6 digits: the injectors'
+# startTime 2^-10 s and directions with it)
+setLaydown() {
+    cp system/controlDict.good system/controlDict
+    edit system/controlDict 'laydown\s*\{[^{}]*\}' "laydown $1"
+}
+
+# expectError LAYDOWN PATTERN: fibers.laydown set to LAYDOWN, PATTERN (an extended
+# regular expression) expected in the FatalIOError, with the dictionary's name
+expectError() {
+    local laydown="$1" pattern="$2" status=0
+    setLaydown "$laydown"
+    sed -i "s/^endTime .*/endTime         0.00390625;/" system/controlDict
+    timeout 60 pimpleFoam > log.bad 2>&1 || status=$?
+    expectFatalIOError "$status" log.bad "$pattern" "laydown $laydown"
+    check "grep -q 'controlDict.functions.dropletFiber.fibers.laydown' log.bad" \
+        "laydown $laydown: the error does not name the dictionary"
+    check "! grep -q -E '^Time = |printStack|Segmentation fault|core dumped' log.bad" \
+        "laydown $laydown: a step ran or the run crashed"
+}
+
+expectError "{ patch nosuch; $belt }" \
+    "Entry 'patch' names patch 'nosuch', which does not exist: allowed are the mesh's patches 2\(bottom walls\)"
+expectError "{ patch bottom; velocity (0.256 0 0); cell 0; }" "Entry 'cell' is 0: allowed are finite values > 0"
+expectError "{ patch bottom; velocity (0.256 0 0); cell -0.01; }" \
+    "Entry 'cell' is -0.01: allowed are finite values > 0"
+expectError "{ patch bottom; velocity (0.256 0.01 0); cell 0.01; }" \
+    "Entry 'velocity' is \(0.256 0.01 0\), which leaves the belt's plane \(normal \(0 -1 0\)\) at 0.01 m/s"
+expectError "{ patch bottom; point (0.1 0 0.05); normal (0 -1 0); $belt }" \
+    "Entry 'laydown' needs the belt as 'patch', or as 'point', 'normal' and 'width', not both"
+expectError "{ patch bottom; width 0.1; $belt }" \
+    "Entry 'width' is for a belt given as point and normal: with 'patch' the belt's width is the patch's extent"
+expectError "{ patch walls; $belt }" "Entry 'patch' names patch 'walls', which is not planar"
+expectError "{ $belt }" "Entry 'laydown' needs the belt as 'patch', or as 'point', 'normal' and 'width'\.$"
+expectError "{ patch bottom; $belt speed 0.256; }" \
+    "Entry 'speed' in dictionary '[^']*laydown' is not known: allowed are patch, point, normal, width, velocity, cell"
+expectError "{ point (0.1 0 0.05); normal (0 0 0); width 0.1; $belt }" "Entry 'normal' is \(0 0 0\)"
+
+# The same belt as a plane: the hand's fibers and mat (the stopped runs' tables removed)
+rm -rf postProcessing
+setLaydown "{ point (0.1 0 0.05); normal (0 -1 0); width 0.1; $belt }"
+sed -i "s/^endTime .*/endTime         0.125;/" system/controlDict
+timeout 120 pimpleFoam > log.pimpleFoam 2>&1
+check "[ $? -eq 0 ] && tail -n 3 log.pimpleFoam | grep -q '^End'" "the belt as a plane: the run failed"
+check "grep -q 'laydown: belt through (0.1 0 0.05), normal (0 -1 0), velocity (0.256 0 0) m/s, across -0.05 to 0.05 m' log.pimpleFoam" \
+    "the belt as a plane: the log does not give its settings"
+check "'$PY' '$here/checkFiberRain.py' . > log.check" "the belt as a plane: not the hand's mat (log.check)"
+tail -1 log.check
+checkSummary

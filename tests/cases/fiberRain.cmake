@@ -1,0 +1,46 @@
+# A uniform rain of straight fibers falling without air onto a belt moving at 0.256 m/s
+# (tests/cases/fiberRain, fibers.laydown on the patch bottom; included from
+# CMakeLists.txt: CASES, RUN, PYTHON3, case_test). Ten injectors, one per 10 mm column,
+# at 10 k degrees to the belt's motion: every fiber is laid 69 steps after its birth
+# step at a place worked out by hand, every cell of a complete row holds exactly 10
+# fibers: G = mass flow / (W V) = 157.08 g/m2 (P48; deterministic, so to round-off,
+# 1e-12), the orientation order of column k cos(20 k deg), the map's totals the table's
+# and the log's, glass and fiber-mass balances to round-off at every write time, the step
+# table's laidGlass every step (checkFiberRain.py), serial and on 2 ranks (a checkerboard
+# decomposition: every fiber is born on one processor and laid by the other). ~2 s a run.
+foreach(mode serial parallel)
+  case_test(fiberRain.${mode} fiberRain ${mode} ${PYTHON3} ${CASES}/checkFiberRain.py)
+  set_tests_properties(case.fiberRain.${mode} PROPERTIES TIMEOUT 120
+    FIXTURES_SETUP fiberRain.${mode})
+endforeach()
+
+# 2 ranks lay the serial run's mat: the table and the maps to the bit but the fibers'
+# `across` (1e-15 m: the patch's centre summed in another order), the state's mat and the
+# step table alike (its fiber mass in the air to 1e-13)
+add_test(NAME case.fiberRain.serialEqualsParallel
+  COMMAND ${PYTHON3} ${CASES}/checkFiberRainSame.py ${RUN}/fiberRain.serial ${RUN}/fiberRain.parallel)
+set_tests_properties(case.fiberRain.serialEqualsParallel PROPERTIES LABELS "case" TIMEOUT 60
+  FIXTURES_REQUIRED "fiberRain.serial;fiberRain.parallel")
+
+# A restart at 0.25 s (470 fibers laid, 170 in the air) continues the mat: the new
+# laydown.dat holds exactly the uninterrupted run's rows after 0.25, the step table, the
+# maps, the state's mat and the log's figures at 0.375 and 0.5 are the uninterrupted run's
+# to the bit; serial and on 2 ranks
+add_test(NAME case.fiberRain.restart
+  COMMAND ${CASES}/checkFiberRainRestart.sh ${CASES}/fiberRain
+    ${RUN}/fiberRain.serial ${RUN}/fiberRain.restart)
+set_tests_properties(case.fiberRain.restart PROPERTIES LABELS "case" TIMEOUT 120
+  FIXTURES_REQUIRED fiberRain.serial)
+add_test(NAME case.fiberRain.restart.parallel
+  COMMAND ${CASES}/checkFiberRainRestart.sh ${CASES}/fiberRain
+    ${RUN}/fiberRain.parallel ${RUN}/fiberRain.restart.parallel parallel)
+set_tests_properties(case.fiberRain.restart.parallel PROPERTIES LABELS "case" TIMEOUT 120
+  PROCESSORS 2 FIXTURES_REQUIRED fiberRain.parallel)
+
+# Bad fibers.laydown entries (a patch not found or not planar, cell <= 0, a velocity out
+# of the plane, patch with point and normal or with width, no belt, a key not known, a
+# zero normal) stop at the start with a FatalIOError naming the entry; the same belt
+# given as point, normal and width lays the hand's mat
+add_test(NAME case.fiberRain.belt
+  COMMAND ${CASES}/checkFiberRainBelt.sh ${CASES}/fiberRain ${RUN}/fiberRain.belt)
+set_tests_properties(case.fiberRain.belt PROPERTIES LABELS "case" TIMEOUT 120)
