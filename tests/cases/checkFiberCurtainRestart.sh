@@ -18,23 +18,10 @@
 #   fields: the restart must not go on without the drag.
 #------------------------------------------------------------------------------
 set -euo pipefail
-caseDir="$1"; full="$2"; work="$3"; mode="${4:-serial}"
 here="$(cd "${0%/*}" && pwd)"
 # shellcheck disable=SC1091
-. "$here/lib/prepareCase.sh"
-# shellcheck disable=SC1091
-. "$here/lib/caseRun.sh"
-# shellcheck disable=SC1091
-. "$here/../../bin/functions.sh"
-loadFoamEnvironment
-
+. "$here/lib/restartAgainst.sh"
 restart=0.03125; last=0.15625
-app="$(foamDictionary -entry application -value "$caseDir/system/controlDict")"
-args=(); np=(); procs=(.)
-if [ "$mode" = parallel ]; then
-    args=(-parallel); np=(mpirun -np 2); procs=(processor0 processor1)
-fi
-setEnd() { sed -i "s/^endTime .*/endTime         $1;/" system/controlDict; }
 
 rm -rf "$work"; mkdir -p "$work"
 work="$(cd "$work" && pwd)"; full="$(cd "$full" && pwd)"

@@ -15,23 +15,10 @@
 #   times, every figure as printed (checkFiberRainSame.py --after).
 #------------------------------------------------------------------------------
 set -euo pipefail
-caseDir="$1"; full="$2"; work="$3"; mode="${4:-serial}"
 here="$(cd "${0%/*}" && pwd)"
 # shellcheck disable=SC1091
-. "$here/lib/prepareCase.sh"
-# shellcheck disable=SC1091
-. "$here/lib/caseRun.sh"
-# shellcheck disable=SC1091
-. "$here/../../bin/functions.sh"
-loadFoamEnvironment
-
+. "$here/lib/restartAgainst.sh"
 restart=0.25; last=0.5
-app="$(foamDictionary -entry application -value "$caseDir/system/controlDict")"
-args=(); np=()
-if [ "$mode" = parallel ]; then
-    args=(-parallel); np=(mpirun -np 2)
-fi
-setEnd() { sed -i "s/^endTime .*/endTime         $1;/" system/controlDict; }
 
 rm -rf "$work"; mkdir -p "$work"
 work="$(cd "$work" && pwd)"; full="$(cd "$full" && pwd)"
