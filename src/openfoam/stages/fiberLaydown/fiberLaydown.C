@@ -242,12 +242,15 @@ void Foam::dropletFiber::fiberLaydown::read
     if (running)
     {
         OStringStream was, now;
-        was << settings_;
+        if (on_)
+        {
+            was << settings_;
+        }
         if (ld)
         {
             now << *ld;
         }
-        if (was.str() != now.str())
+        if ((ld != nullptr) != on_ || was.str() != now.str())
         {
             FatalIOErrorInFunction(dict)
                 << "Entry 'fibers.laydown' was edited during the run: the mat"
