@@ -223,5 +223,22 @@ expectStopAtEdit "{ samplng integrated; }" \
 expectStopAtEdit "{ depletion false; }" \
     "Entry 'collision.depletion' was edited during the run \(true -> false\)" log.runTimeDepletion
 
+# fibers.laydown is read at the start only (the mat laid so far is on the belt in
+# force): its cell edited at time 0.01 stops the run there, naming it
+cp system/controlDict.start system/controlDict
+foamDictionary system/controlDict -entry "$fo/fibers/laydown" -set "{ patch outlet; cell 0.01; }" > /dev/null
+cp system/controlDict system/controlDict.laydownStart
+foamDictionary system/controlDict -entry "$fo/fibers/laydown/cell" -set 0.02 > /dev/null
+cp system/controlDict system/controlDict.typo
+cp system/controlDict.laydownStart system/controlDict
+touch -d "1 hour ago" system/controlDict
+freshStart
+pimpleFoam > log.runTimeLaydown 2>&1
+status=$?
+check "grep -q '^Time = 0.01$' log.runTimeLaydown && ! grep -q '^Time = 0.02$' log.runTimeLaydown" \
+    "fibers.laydown edited during the run: not stopped at the edit"
+expectFatalIOError "$status" log.runTimeLaydown "Entry 'fibers.laydown' was edited during the run" \
+    "fibers.laydown edited during the run"
+
 cp system/controlDict.good system/controlDict
 checkSummary
