@@ -4,7 +4,7 @@ documentation checks):
 
   readmeSize  README.md is the front door: at most README_LIMIT bytes (10 kB); the rest
               belongs in docs/.
-  links       every relative Markdown link of README.md, docs/*.md and
+  links       every relative Markdown link of README.md, docs/*.md, docs/model/*.md and
               tutorials/*/README.md names a file or folder of the repository, and its
               #anchor a heading of that file (GitHub's anchors: lower case, punctuation
               dropped, spaces as hyphens, repeats numbered).
@@ -134,6 +134,8 @@ def self_test():
                      "`[code](nowhere.md)`\n",
         "docs/guide.md": guide,
         "docs/development.md": layout,
+        "docs/model/01-fiberDynamics.md": "# 1. Fibers\n\n"
+                                          "[guide](../guide.md#restart-what-is-kept)\n",
         "src/core/grid/a.hpp": "",
     }
     cases = {
@@ -144,6 +146,9 @@ def self_test():
                                      "does not exist"),
         "a link to a missing heading": ({"docs/guide.md": guide + "[r](#restart)\n"},
                                         "links", "no heading '#restart'"),
+        "a model page's link as from docs/": (
+            {"docs/model/01-fiberDynamics.md": "# 1. Fibers\n\n[guide](guide.md)\n"}, "links",
+            "docs/model/guide.md does not exist"),
         "a heading in code is none": ({"docs/guide.md": guide + "[n](#not-a-heading)\n"},
                                       "links", "no heading"),
         "a folder not named": ({"src/openfoam/stages/a.H": ""}, "layout",

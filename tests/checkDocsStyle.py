@@ -1,11 +1,11 @@
 #!/usr/bin/env python3
-"""The docs stay references: README.md, docs/*.md and tutorials/*/README.md have no dated
-heading (a Markdown heading holding a date such as 2026-11-03, 3 Dec 2026, December 2026,
-or the word "session"), no commit hash (7 to 40 hex digits with at least one letter and
-one digit, standing alone as a word or in backticks), no git branch name (a quoted name
-after or before the word "branch", or "merge branch"), and docs/performance.md stays at
-most 16 kB. History belongs in the commit messages. Every page of docs/ is checked, so a
-new page is covered as soon as it exists.
+"""The docs stay references: README.md, docs/*.md, docs/model/*.md (the model's pages) and
+tutorials/*/README.md have no dated heading (a Markdown heading holding a date such as
+2026-11-03, 3 Dec 2026, December 2026, or the word "session"), no commit hash (7 to 40 hex
+digits with at least one letter and one digit, standing alone as a word or in backticks),
+no git branch name (a quoted name after or before the word "branch", or "merge branch"),
+and docs/performance.md stays at most 16 kB. History belongs in the commit messages. Every
+page of docs/ and docs/model/ is checked, so a new page is covered as soon as it exists.
 
 Usage: checkDocsStyle.py <project dir>
        checkDocsStyle.py --self-test   (the check catches each kind of violation)
@@ -47,6 +47,7 @@ FENCE = re.compile(r"^ {0,3}(```|~~~)")
 
 def checked_files(project):
     names = ["README.md"] + sorted(glob.glob(os.path.join(project, "docs", "*.md")))
+    names += sorted(glob.glob(os.path.join(project, "docs", "model", "*.md")))
     names += sorted(glob.glob(os.path.join(project, "tutorials", "*", "README.md")))
     for name in names:
         path = os.path.join(project, name)

@@ -275,7 +275,7 @@ def main():
     P = out.append
     P("# Validation against the paper: its section 6, reproduced and improved on")
     P("")
-    P("Schröder et al. 2011, *Stochastic Droplet-Fiber Collisions*, sec. 6 ([docs/model.md](model.md) sec. 5): the")
+    P("Schröder et al. 2011, *Stochastic Droplet-Fiber Collisions*, sec. 6 ([docs/model.md](model/05-paperEvaluation.md) sec. 5): the")
     P("collision mass of eq. 9 with the true density (*formula*), with the density grid of the paper's sec. 5.1")
     P("(*grid*, docs/model.md sec. 4) and an explicit count of droplets hitting the fiber (*geometric*), in the paper's 2D")
     P("box, for its four experiments (figures 7-10); then the radius question of docs/model.md sec. 3 (note")
