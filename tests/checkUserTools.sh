@@ -8,8 +8,10 @@
 #    Allclean install and remove them in $FOAM_USER_APPBIN.
 # 2. Installed into a new folder, the report runs from there with nothing of the
 #    project beside it (a missing case: exit 2 naming it, no traceback: its modules
-#    found in its own folder); removed, none of them is left and the folder's other
-#    files stay.
+#    found in its own folder); the run functions (dropletFiberRunFunctions),
+#    sourced by sh from there, find the tools installed beside them on PATH (the
+#    ParaView script, not executable, too); removed, none of them is left and the
+#    folder's other files stay.
 #
 # Usage: checkUserTools.sh WORK   (WORK: a scratch folder, replaced)
 # Needs the OpenFOAM environment ./Allwmake built in (loaded here as the tests do).
@@ -34,8 +36,8 @@ for tool in "${userTools[@]}"; do
     check "$tool in \$FOAM_USER_APPBIN ($FOAM_USER_APPBIN) is the project's ($stale)" \
         same "$root/bin/$tool" "$FOAM_USER_APPBIN/$tool"
 done
-check "dropletFiberReport and checkFunctionObjectRan are run from \$FOAM_USER_APPBIN on PATH" \
-    eval 'onPath dropletFiberReport && onPath checkFunctionObjectRan'
+check "dropletFiberReport, checkFunctionObjectRan and dropletFiberRunFunctions are found in \$FOAM_USER_APPBIN on PATH" \
+    eval 'onPath dropletFiberReport && onPath checkFunctionObjectRan && onPath dropletFiberRunFunctions'
 check "dropletFiberParaView.py (a ParaView script, not a command) is in a folder of PATH" \
     eval '[[ ":$PATH:" == *":$FOAM_USER_APPBIN:"* ]]'
 for module in "$root"/tools/dropletFiberReport/*.py; do
@@ -55,8 +57,15 @@ installUserTools "$work/bin"
 for tool in "${userTools[@]}"; do
     check "installUserTools: $tool installed" test -f "$work/bin/$tool"
 done
-check "installUserTools: the commands are executable" \
-    eval 'test -x "$work/bin/dropletFiberReport" && test -x "$work/bin/checkFunctionObjectRan"'
+check "installUserTools: the commands are executable (the run functions too: command -v finds them)" \
+    eval 'test -x "$work/bin/dropletFiberReport" && test -x "$work/bin/checkFunctionObjectRan" && test -x "$work/bin/dropletFiberRunFunctions"'
+# The run functions as a tutorial's script uses them: sourced by sh, PATH the folder
+found="$(cd "$work" && env -u DROPLETFIBER_DIR -u USER PATH="$work/bin:/usr/bin:/bin" sh -c \
+    '. "$(command -v dropletFiberRunFunctions)" && dropletFiberTool dropletFiberReport && dropletFiberTool checkFunctionObjectRan && dropletFiberTool dropletFiberParaView.py' 2>&1)" || true
+check "the installed run functions, sourced by sh, find the tools beside them (got: $(echo "$found" | tr "\n" " "))" \
+    test "$found" = "$work/bin/dropletFiberReport
+$work/bin/checkFunctionObjectRan
+$work/bin/dropletFiberParaView.py"
 set +e
 (cd "$work" && env -u DROPLETFIBER_DIR -u USER "$work/bin/dropletFiberReport" "$work/noCase") > "$work/report.log" 2>&1
 status=$?
