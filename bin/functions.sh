@@ -75,8 +75,9 @@ installUserTools() {
     for tool in "${userTools[@]}"; do
         # install(1) replaces the file (a new inode): a copy running meanwhile goes on
         case "$tool" in
-            *.py) install -m 644 "$src/bin/$tool" "$dest/$tool" ;;  # a ParaView script, not a command
-            *)    install -m 755 "$src/bin/$tool" "$dest/$tool" ;;  # dropletFiberRunFunctions too: command -v finds it
+            # a ParaView script and the sourced run functions (as OpenFOAM's RunFunctions) are not commands
+            *.py | dropletFiberRunFunctions) install -m 644 "$src/bin/$tool" "$dest/$tool" ;;
+            *) install -m 755 "$src/bin/$tool" "$dest/$tool" ;;
         esac
     done
 }

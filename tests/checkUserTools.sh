@@ -36,9 +36,9 @@ for tool in "${userTools[@]}"; do
     check "$tool in \$FOAM_USER_APPBIN ($FOAM_USER_APPBIN) is the project's ($stale)" \
         same "$root/bin/$tool" "$FOAM_USER_APPBIN/$tool"
 done
-check "dropletFiberReport, checkFunctionObjectRan and dropletFiberRunFunctions are found in \$FOAM_USER_APPBIN on PATH" \
-    eval 'onPath dropletFiberReport && onPath checkFunctionObjectRan && onPath dropletFiberRunFunctions'
-check "dropletFiberParaView.py (a ParaView script, not a command) is in a folder of PATH" \
+check "dropletFiberReport and checkFunctionObjectRan are run from \$FOAM_USER_APPBIN on PATH" \
+    eval 'onPath dropletFiberReport && onPath checkFunctionObjectRan'
+check "dropletFiberParaView.py and dropletFiberRunFunctions (a ParaView script, sourced functions: not commands) are in a folder of PATH" \
     eval '[[ ":$PATH:" == *":$FOAM_USER_APPBIN:"* ]]'
 for module in "$root"/tools/dropletFiberReport/*.py; do
     check "the report's module ${module##*/} installed in dropletFiberPython/ ($stale)" \
@@ -57,11 +57,11 @@ installUserTools "$work/bin"
 for tool in "${userTools[@]}"; do
     check "installUserTools: $tool installed" test -f "$work/bin/$tool"
 done
-check "installUserTools: the commands are executable (the run functions too: command -v finds them)" \
-    eval 'test -x "$work/bin/dropletFiberReport" && test -x "$work/bin/checkFunctionObjectRan" && test -x "$work/bin/dropletFiberRunFunctions"'
-# The run functions as a tutorial's script uses them: sourced by sh, PATH the folder
+check "installUserTools: the commands are executable" \
+    eval 'test -x "$work/bin/dropletFiberReport" && test -x "$work/bin/checkFunctionObjectRan"'
+# The run functions as a tutorial's script uses them: sourced by sh from PATH
 found="$(cd "$work" && env -u DROPLETFIBER_DIR -u USER PATH="$work/bin:/usr/bin:/bin" sh -c \
-    '. "$(command -v dropletFiberRunFunctions)" && dropletFiberTool dropletFiberReport && dropletFiberTool checkFunctionObjectRan && dropletFiberTool dropletFiberParaView.py' 2>&1)" || true
+    '. dropletFiberRunFunctions && dropletFiberTool dropletFiberReport && dropletFiberTool checkFunctionObjectRan && dropletFiberTool dropletFiberParaView.py' 2>&1)" || true
 check "the installed run functions, sourced by sh, find the tools beside them (got: $(echo "$found" | tr "\n" " "))" \
     test "$found" = "$work/bin/dropletFiberReport
 $work/bin/checkFunctionObjectRan

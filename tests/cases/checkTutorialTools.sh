@@ -48,7 +48,7 @@ for folder in "${folders[@]}"; do
 done
 functionsOnly="$scratch/functionsOnly"
 mkdir -p "$functionsOnly/bin"
-install -m 755 "$root/bin/dropletFiberRunFunctions" "$functionsOnly/bin/"
+install -m 644 "$root/bin/dropletFiberRunFunctions" "$functionsOnly/bin/"
 
 for tutorial in channelSpray channelSprayRAS formingHood; do
     copy="$scratch/$tutorial"
@@ -129,7 +129,7 @@ for program in paraview pvbatch xvfb-run; do
     chmod +x "$standIns/$program"
 done
 # shellcheck disable=SC2034  # used in the checks' eval
-installed="$(dirname "$(command -v dropletFiberRunFunctions)")"
+installed="$(dirname "$(command -v dropletFiberReport)")"
 viewed="$scratch/channelSpray"
 paraviewRun() {  # paraviewRun LABEL ENV... -- ARGS...: Allparaview's exit status and calls in $work/LABEL.*
     local label="$1"; shift
