@@ -271,6 +271,7 @@ def missing(run, work):
 class _StandIn(types.SimpleNamespace):
     """A proxy of the stand-in of paraview.simple: methods not listed do nothing; a
     data information of a one-cell-thick channel (a 2D case)."""
+    ViewTime = 0.04  # a view's time (printed with a screenshot): the stand-in's TimestepValues
 
     def __getattr__(self, name):
         return lambda *a, **k: None
