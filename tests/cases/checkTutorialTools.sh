@@ -17,6 +17,9 @@
 #   case and the screenshot, on a virtual display only where there is no DISPLAY,
 #   the project's dropletFiberParaView.py from PATH or DROPLETFIBER_DIR, and a clear
 #   stop without it. (tests/report checks the script itself in ParaView.)
+# - the forming hood's Python helpers (reportPackage.py) take the report's modules
+#   beside the report on PATH, or the project's with DROPLETFIBER_DIR, and stop
+#   saying what to do without them.
 # That the tools found on PATH are used, and work, the regression runs show
 # (tests/regression: each a copy run without DROPLETFIBER_DIR).
 #
@@ -119,6 +122,32 @@ check "DROPLETFIBER_DIR=<a project>: its tools are the ones used" \
     grep -q -x "dropletFiber tools: $project/bin/checkFunctionObjectRan, $project/bin/dropletFiberReport" "$work/override.log"
 check "DROPLETFIBER_DIR=<a project>: both called ($(tr '\n' ';' < "$project/called" 2> /dev/null))" eval \
     'grep -q "^checkFunctionObjectRan log.pimpleFoam$" "$project/called" && grep -q "^dropletFiberReport -o channelSpray .$" "$project/called"'
+
+# The forming hood's Python helpers find the report's modules as Allrun finds the
+# report, and say what to do without them
+hood="$scratch/formingHood"
+set +e
+(cd "$scratch" && env -u DROPLETFIBER_DIR PATH="$bare" /usr/bin/python3 "$hood/hoodBalance.py" "$hood" log.sprayFoam \
+    > "$work/hoodNoReport.log" 2>&1)
+status=$?
+set -e
+check "hoodBalance.py without the report on PATH: exit 1 (got $status), naming it, ./Allwmake and DROPLETFIBER_DIR" eval \
+    '[ "$status" -eq 1 ] && grep -q "dropletFiberReport not found on PATH.*" "$work/hoodNoReport.log" && grep -q "Allwmake" "$work/hoodNoReport.log" && ! grep -q Traceback "$work/hoodNoReport.log"'
+for projectDir in "$project" "$root"; do
+    found="$(cd "$scratch" && DROPLETFIBER_DIR="$projectDir" /usr/bin/python3 -c \
+        'import sys; sys.path.insert(0, sys.argv[1]); import reportPackage, caseOutputs; print(caseOutputs.__file__)' "$hood" 2>&1)" || true
+    if [ "$projectDir" = "$root" ]; then
+        check "the hood's helpers with DROPLETFIBER_DIR=<this project>: its tools/dropletFiberReport modules ($found)" \
+            test "$found" = "$root/bin/../tools/dropletFiberReport/caseOutputs.py"
+    else
+        check "the hood's helpers with DROPLETFIBER_DIR=<a project with a report but not its modules>: stop naming where they looked ($found)" \
+            eval '[[ "$found" == *"the report'"'"'s modules are neither in $project/bin/dropletFiberPython nor in the project'"'"'s"*"Allwmake"* ]]'
+    fi
+done
+found="$(cd "$scratch" && env -u DROPLETFIBER_DIR /usr/bin/python3 -c \
+    'import sys; sys.path.insert(0, sys.argv[1]); import reportPackage, caseOutputs; print(caseOutputs.__file__)' "$hood" 2>&1)" || true
+check "the hood's helpers on PATH: the modules installed beside the report ($found)" \
+    test "$found" = "$(dirname "$(command -v dropletFiberReport)")/dropletFiberPython/caseOutputs.py"
 
 # The ParaView launcher: stand-ins of ParaView's programs that note their arguments
 # and folder, the tutorial's Allparaview run from another folder
