@@ -179,13 +179,13 @@ check "Allparaview: ParaView's GUI runs the installed dropletFiberParaView.py in
     '[ "$(cat "$work/paraviewGUI.status")" = 0 ] && [ "$(cat "$work/paraviewGUI.called")" = "paraview --script=$installed/dropletFiberParaView.py (in $viewed)" ]'
 paraviewRun paraviewBatch -u DROPLETFIBER_DIR "$onPath" DISPLAY=:7 -- -batch
 check "Allparaview -batch with a display: pvbatch on the case, writing channelSpray.paraview.png there" eval \
-    '[ "$(cat "$work/paraviewBatch.status")" = 0 ] && [ "$(cat "$work/paraviewBatch.called")" = "pvbatch $installed/dropletFiberParaView.py $viewed -screenshot $viewed/channelSpray.paraview.png (in $viewed)" ]'
+    '[ "$(cat "$work/paraviewBatch.status")" = 0 ] && [ "$(cat "$work/paraviewBatch.called")" = "pvbatch $installed/dropletFiberParaView.py $viewed --screenshot $viewed/channelSpray.paraview.png (in $viewed)" ]'
 paraviewRun paraviewNoDisplay -u DROPLETFIBER_DIR -u DISPLAY "$onPath" -- -batch
 check "Allparaview -batch without a display: pvbatch through xvfb-run on a 24-bit screen" eval \
-    '[ "$(cat "$work/paraviewNoDisplay.status")" = 0 ] && [ "$(cat "$work/paraviewNoDisplay.called")" = "xvfb-run -a -s -screen 0 1280x1024x24 pvbatch $installed/dropletFiberParaView.py $viewed -screenshot $viewed/channelSpray.paraview.png (in $viewed)" ]'
+    '[ "$(cat "$work/paraviewNoDisplay.status")" = 0 ] && [ "$(cat "$work/paraviewNoDisplay.called")" = "xvfb-run -a -s -screen 0 1280x1024x24 pvbatch $installed/dropletFiberParaView.py $viewed --screenshot $viewed/channelSpray.paraview.png (in $viewed)" ]'
 paraviewRun paraviewProject DROPLETFIBER_DIR="$project" "$onPath" DISPLAY=:7 -- -batch
 check "Allparaview with DROPLETFIBER_DIR=<a project>: that project's dropletFiberParaView.py" eval \
-    '[ "$(cat "$work/paraviewProject.status")" = 0 ] && [ "$(cat "$work/paraviewProject.called")" = "pvbatch $project/bin/dropletFiberParaView.py $viewed -screenshot $viewed/channelSpray.paraview.png (in $viewed)" ]'
+    '[ "$(cat "$work/paraviewProject.status")" = 0 ] && [ "$(cat "$work/paraviewProject.called")" = "pvbatch $project/bin/dropletFiberParaView.py $viewed --screenshot $viewed/channelSpray.paraview.png (in $viewed)" ]'
 paraviewRun paraviewNoScript -u DROPLETFIBER_DIR "PATH=$standIns:$functionsOnly/bin:$bare" DISPLAY=:7 -- -batch
 check "Allparaview without dropletFiberParaView.py on PATH: exit 1, ParaView not started, saying what to do" eval \
     '[ "$(cat "$work/paraviewNoScript.status")" = 1 ] && [ ! -s "$work/paraviewNoScript.called" ] && grep -q "dropletFiberParaView.py not found on PATH.*Allwmake.*DROPLETFIBER_DIR" "$work/paraviewNoScript.log"'

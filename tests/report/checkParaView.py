@@ -31,7 +31,7 @@ def check(ok, what):
 
 if os.path.exists(screenshot):
     os.remove(screenshot)
-sys.argv = [script, case, "-screenshot", screenshot]  # as the launcher has pvbatch run it
+sys.argv = [script, case, "--screenshot", screenshot]  # as the launcher has pvbatch run it
 exec(compile(open(script).read(), script, "exec"), {"__name__": "__main__", "__file__": script})
 
 view = GetActiveView()

@@ -384,7 +384,7 @@ def paraview(run, work):
     os.makedirs(elsewhere)
     screenshot = os.path.join(case, "channelSpray.paraview.png")
     del calls[:]
-    stop = run_script(script, elsewhere, [script, case, "-screenshot", screenshot])
+    stop = run_script(script, elsewhere, [script, case, "--screenshot", screenshot])
     readers = [c[2]["FileName"] for c in calls if c[0] == "OpenFOAMReader"]
     check(stop is None and len(readers) == 2 and os.path.dirname(readers[0]) == case,
           "as Allparaview -batch runs it: shows the case given from another folder (%s)"
