@@ -14,10 +14,11 @@ Usage
                                     (where no display is: xvfb-run -a -s "-screen 0 1280x1024x24" pvbatch ...)
 CASE defaults to the current folder; FILE to CASE/dropletFiberParaView.png (pvbatch
 writes one always, pvpython with -screenshot). ./Allwmake of the project installs this
-file in $FOAM_USER_APPBIN, beside OpenFOAM's utilities; the tutorials have a
-<tutorial>.paraview.py that finds it there (or in $DROPLETFIBER_DIR/bin) and runs it
-on the tutorial's folder. A script that execs this file may set dropletFiberCase and
-dropletFiberScreenshot in the globals it passes (the arguments still win).
+file in $FOAM_USER_APPBIN, beside OpenFOAM's utilities; the tutorials' Allparaview
+finds it there (or in $DROPLETFIBER_DIR/bin) and runs it on the tutorial's folder
+(dropletFiberParaView of bin/dropletFiberRunFunctions). A script that execs this file
+may set dropletFiberCase and dropletFiberScreenshot in the globals it passes (the
+arguments still win).
 
 A Python script rather than a .pvsm state file: a state file names the absolute
 paths of its files and every proxy property of one ParaView version; this script

@@ -52,11 +52,13 @@ loadFoamEnvironment() {
 # The user-facing tools, installed like OpenFOAM's own utilities: ./Allwmake copies
 # them into $FOAM_USER_APPBIN (on PATH once OpenFOAM's environment is loaded), beside
 # reconstructDropletFiberState, so that a tutorial copied anywhere finds them on
-# PATH (its Allrun and <tutorial>.paraview.py; DROPLETFIBER_DIR=<project> takes the
-# project's bin/ instead). The report's Python modules (tools/dropletFiberReport) go
-# into DIR/dropletFiberPython, where the installed report looks for them. Copies, not
-# links: the installed tools work whatever becomes of this clone's files.
-userTools=(dropletFiberReport checkFunctionObjectRan dropletFiberParaView.py)
+# PATH: its Allrun and Allparaview source dropletFiberRunFunctions (found on PATH,
+# or in the project's bin/ with DROPLETFIBER_DIR=<project>), whose functions find
+# the others the same way. The report's Python modules (tools/dropletFiberReport) go
+# into DIR/dropletFiberPython, where the installed report (and the formingHood
+# tutorial's helpers) look for them. Copies, not links: the installed tools work
+# whatever becomes of this clone's files.
+userTools=(dropletFiberRunFunctions dropletFiberReport checkFunctionObjectRan dropletFiberParaView.py)
 userToolsModules=dropletFiberPython
 
 installUserTools() {
@@ -73,8 +75,9 @@ installUserTools() {
     for tool in "${userTools[@]}"; do
         # install(1) replaces the file (a new inode): a copy running meanwhile goes on
         case "$tool" in
-            *.py) install -m 644 "$src/bin/$tool" "$dest/$tool" ;;  # a ParaView script, not a command
-            *)    install -m 755 "$src/bin/$tool" "$dest/$tool" ;;
+            # a ParaView script and the sourced run functions (as OpenFOAM's RunFunctions) are not commands
+            *.py | dropletFiberRunFunctions) install -m 644 "$src/bin/$tool" "$dest/$tool" ;;
+            *) install -m 755 "$src/bin/$tool" "$dest/$tool" ;;
         esac
     done
 }

@@ -8,8 +8,10 @@
 #    Allclean install and remove them in $FOAM_USER_APPBIN.
 # 2. Installed into a new folder, the report runs from there with nothing of the
 #    project beside it (a missing case: exit 2 naming it, no traceback: its modules
-#    found in its own folder); removed, none of them is left and the folder's other
-#    files stay.
+#    found in its own folder); the run functions (dropletFiberRunFunctions),
+#    sourced by sh from there, find the tools installed beside them on PATH (the
+#    ParaView script, not executable, too); removed, none of them is left and the
+#    folder's other files stay.
 #
 # Usage: checkUserTools.sh WORK   (WORK: a scratch folder, replaced)
 # Needs the OpenFOAM environment ./Allwmake built in (loaded here as the tests do).
@@ -36,7 +38,7 @@ for tool in "${userTools[@]}"; do
 done
 check "dropletFiberReport and checkFunctionObjectRan are run from \$FOAM_USER_APPBIN on PATH" \
     eval 'onPath dropletFiberReport && onPath checkFunctionObjectRan'
-check "dropletFiberParaView.py (a ParaView script, not a command) is in a folder of PATH" \
+check "dropletFiberParaView.py and dropletFiberRunFunctions (a ParaView script, sourced functions: not commands) are in a folder of PATH" \
     eval '[[ ":$PATH:" == *":$FOAM_USER_APPBIN:"* ]]'
 for module in "$root"/tools/dropletFiberReport/*.py; do
     check "the report's module ${module##*/} installed in dropletFiberPython/ ($stale)" \
@@ -57,6 +59,13 @@ for tool in "${userTools[@]}"; do
 done
 check "installUserTools: the commands are executable" \
     eval 'test -x "$work/bin/dropletFiberReport" && test -x "$work/bin/checkFunctionObjectRan"'
+# The run functions as a tutorial's script uses them: sourced by sh from PATH
+found="$(cd "$work" && env -u DROPLETFIBER_DIR -u USER PATH="$work/bin:/usr/bin:/bin" sh -c \
+    '. dropletFiberRunFunctions && dropletFiberTool dropletFiberReport && dropletFiberTool checkFunctionObjectRan && dropletFiberTool dropletFiberParaView.py' 2>&1)" || true
+check "the installed run functions, sourced by sh, find the tools beside them (got: $(echo "$found" | tr "\n" " "))" \
+    test "$found" = "$work/bin/dropletFiberReport
+$work/bin/checkFunctionObjectRan
+$work/bin/dropletFiberParaView.py"
 set +e
 (cd "$work" && env -u DROPLETFIBER_DIR -u USER "$work/bin/dropletFiberReport" "$work/noCase") > "$work/report.log" 2>&1
 status=$?

@@ -1,5 +1,8 @@
-"""Run by pvbatch (tests/report/checkParaView.sh): runs a tutorial's
-<tutorial>.paraview.py as pvbatch runs a script, then checks what it built in ParaView:
+"""Run by pvbatch (tests/report/checkParaView.sh): runs the project's
+dropletFiberParaView.py as a tutorial's Allparaview -batch has pvbatch run it (the
+case and the screenshot as arguments: dropletFiberRunFunctions' dropletFiberParaView;
+that launcher's own choices are checked by tests/cases/checkTutorialTools.sh), then
+checks what it built in ParaView:
 - the air, each cloud's parcels, the grid and the fibers are there, each with data at
   the last time, and the view is at the last time;
 - each is coloured by its own array (air U, parcels d, grid rho, fibers sigma) with a
@@ -7,7 +10,7 @@
   time (not only at the first: the range over all times);
 - the screenshot is written: a PNG of 1280 x 1024 that is not the bare background.
 
-Usage: pvbatch checkParaView.py TUTORIAL_SCRIPT SCREENSHOT
+Usage: pvbatch checkParaView.py SCRIPT CASE SCREENSHOT
 """
 import os
 import struct
@@ -16,7 +19,7 @@ import sys
 from paraview import servermanager
 from paraview.simple import GetActiveView, GetColorTransferFunction, GetSources, GetTimeKeeper
 
-script, screenshot = sys.argv[1:3]
+script, case, screenshot = sys.argv[1:4]
 failed = []
 
 
@@ -28,7 +31,7 @@ def check(ok, what):
 
 if os.path.exists(screenshot):
     os.remove(screenshot)
-sys.argv = [script]  # as pvbatch runs it: no arguments
+sys.argv = [script, case, "--screenshot", screenshot]  # as the launcher has pvbatch run it
 exec(compile(open(script).read(), script, "exec"), {"__name__": "__main__", "__file__": script})
 
 view = GetActiveView()

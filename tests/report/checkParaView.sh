@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 #------------------------------------------------------------------------------
-# A tutorial's <tutorial>.paraview.py in ParaView itself, headless: pvbatch runs it on
-# a copy of the tutorial's finished -short run (the regression run) on a virtual X
+# The project's dropletFiberParaView.py in ParaView itself, headless, as a tutorial's
+# Allparaview -batch runs it: pvbatch runs it on a copy of the tutorial's finished
+# -short run (the regression run), with the case and the screenshot, on a virtual X
 # display of 24 bits (Xvfb), then checkParaView.py checks the pipeline it built
 # (every source with data at the last time, coloured by its own array with a colour
 # map of its own whose range holds the array's values at every time) and the
@@ -26,8 +27,6 @@ fi
 rm -rf "$work"
 mkdir -p "$work"
 cp -r "$run" "$work/case"
-# the tutorial's script as in the project (the run's copy may be older)
-cp "$root/tutorials/$tutorial/$tutorial.paraview.py" "$work/case/"
 
 # A display of our own: Xvfb picks a free number and writes it once it accepts
 # clients (-displayfd), so parallel tests never race for one (xvfb-run -a can)
@@ -57,8 +56,8 @@ if ! command -v Xvfb > /dev/null && [ -z "${DISPLAY:-}" ]; then
     exit 77
 fi
 
-# The project's script from this project (not whatever PATH has); run from another
-# folder than the case's: the tutorial's script finds its own. A display that
+# The project's script from this project (not whatever PATH has), run from another
+# folder than the case's, given the case as the launcher gives it. A display that
 # refuses ParaView's window (seen now and then on a shared machine: "bad X server
 # connection") is replaced, twice at most.
 cd "$work"
@@ -67,7 +66,7 @@ for attempt in 1 2 3; do
         startDisplay
     fi
     set +e
-    DROPLETFIBER_DIR="$root" pvbatch "$here/checkParaView.py" "$work/case/$tutorial.paraview.py" \
+    pvbatch "$here/checkParaView.py" "$root/bin/dropletFiberParaView.py" "$work/case" \
         "$work/case/$tutorial.paraview.png" > "$work/pvbatch.log" 2>&1
     status=$?
     set -e

@@ -271,6 +271,7 @@ def missing(run, work):
 class _StandIn(types.SimpleNamespace):
     """A proxy of the stand-in of paraview.simple: methods not listed do nothing; a
     data information of a one-cell-thick channel (a 2D case)."""
+    ViewTime = 0.04  # a view's time (printed with a screenshot): the stand-in's TimestepValues
 
     def __getattr__(self, name):
         return lambda *a, **k: None
@@ -330,10 +331,10 @@ def paraview(run, work):
     what it is asked to open and how it colours it, run as ParaView's GUI runs it
     (--script: no arguments, the case the current folder, no screenshot): the serial
     run, and the 2-rank run (PARALLEL_RUN) without its reconstructed times (its series
-    list .pvti and .pvtp files: opened as file series). Then the tutorial's own
-    channelSpray.paraview.py in a copy of the run: it finds the project's script on
-    PATH (as ./Allwmake installs it) or in DROPLETFIBER_DIR/bin, and says what to do
-    when neither has it; it shows its own folder, from any current folder."""
+    list .pvti and .pvtp files: opened as file series). Then as a tutorial's
+    Allparaview -batch runs it (pvbatch, the case and the screenshot as arguments) from
+    another folder: the case given, not the current folder. (How the launcher finds the
+    script, tests/cases/checkTutorialTools.sh checks.)"""
     calls = []
     paraview_stand_in(calls)
     script = os.path.join(ROOT, "bin", "dropletFiberParaView.py")
@@ -377,28 +378,20 @@ def paraview(run, work):
         check(len(set(presets)) == 4 and None not in presets, "%s: four different presets (%s)" % (label, presets))
         check(not [c for c in calls if c[0] == "SaveScreenshot"], "%s: no screenshot in the GUI" % label)
 
-    # The tutorial's script in a copy of the run, run from another folder as pvbatch
-    # runs it (its __file__ given)
-    case = copy_case(run, os.path.join(work, "tutorialCopy"))
-    shutil.copy(os.path.join(ROOT, "tutorials", "channelSpray", "channelSpray.paraview.py"), case)
-    tutorial_script = os.path.join(case, "channelSpray.paraview.py")
-    installed = os.path.join(work, "installed")
-    os.makedirs(installed)
-    shutil.copy(script, installed)
+    # As the launcher runs it, from another folder: the case and the screenshot given
+    case = copy_case(run, os.path.join(work, "launched"))
     elsewhere = os.path.join(work, "elsewhere")
     os.makedirs(elsewhere)
-    for label, env in (("on PATH", {"PATH": installed + os.pathsep + "/usr/bin:/bin", "DROPLETFIBER_DIR": None}),
-                       ("DROPLETFIBER_DIR", {"PATH": "/usr/bin:/bin", "DROPLETFIBER_DIR": ROOT})):
-        del calls[:]
-        stop = run_script(tutorial_script, elsewhere, [tutorial_script], env, __file__=tutorial_script)
-        readers = [c[2]["FileName"] for c in calls if c[0] == "OpenFOAMReader"]
-        check(stop is None and len(readers) == 2 and os.path.dirname(readers[0]) == case,
-              "the tutorial's script, dropletFiberParaView.py %s: shows the copy's case from another folder (%s)"
-              % (label, readers[0] if readers else stop))
-    stop = run_script(tutorial_script, case, [""], {"PATH": "/usr/bin:/bin", "DROPLETFIBER_DIR": None,
-                                                     "FOAM_USER_APPBIN": None})
-    check(stop is not None and "dropletFiberParaView.py not found" in str(stop) and "Allwmake" in str(stop),
-          "the tutorial's script without the project's script on PATH: says what to do (%s)" % stop)
+    screenshot = os.path.join(case, "channelSpray.paraview.png")
+    del calls[:]
+    stop = run_script(script, elsewhere, [script, case, "--screenshot", screenshot])
+    readers = [c[2]["FileName"] for c in calls if c[0] == "OpenFOAMReader"]
+    check(stop is None and len(readers) == 2 and os.path.dirname(readers[0]) == case,
+          "as Allparaview -batch runs it: shows the case given from another folder (%s)"
+          % (readers[0] if readers else stop))
+    shots = [c for c in calls if c[0] == "SaveScreenshot"]
+    check(len(shots) == 1 and shots[0][1][0] == screenshot,
+          "as Allparaview -batch runs it: one screenshot, the one given (%s)" % [c[1][:1] for c in shots])
     print("(the stand-in checks the script's choices, not ParaView's own reading of the files:"
           " report.paraView.* runs it in ParaView)")
 

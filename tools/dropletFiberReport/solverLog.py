@@ -68,14 +68,14 @@ class SolverLog:
         self._read(open(path, errors="replace").read().split("\n"))
 
     def _read(self, lines):
-        time = None
+        time = time_name = None
         stepped = {}  # function object name: time of its last per-step line
         i = 0
         while i < len(lines):
             line = lines[i]
             m = re.match(r"^Time = " + NUMBER + r"\s*$", line)
             if m:
-                time = float(m.group(1))
+                time, time_name = float(m.group(1)), m.group(1)
                 self.times.append(time)
             m = re.match(r"^ExecutionTime = " + NUMBER + r" s\s+ClockTime = " + NUMBER + " s", line)
             if m:
@@ -98,6 +98,7 @@ class SolverLog:
                 report = _cloud_report(lines[i + 1:j])
                 if report["inSystem"] is not None:
                     report["time"] = time
+                    report["timeName"] = time_name  # as the log writes it (for printing)
                     # the table row whose captured mass this report has lost already
                     report["functionObjectTimes"] = dict(stepped)
                     self.clouds[m.group(1)] = report

@@ -68,8 +68,10 @@ def _segments(piece):
     return np.array(pairs, dtype=int).reshape(-1, 2), {k: v[owner] for k, v in cells.items()}
 
 
-class Fibers:
-    """Points, point arrays, and the segments (point pairs) with their cell arrays."""
+class PolyData:
+    """A .vtp (or a .pvtp's pieces): points, point arrays, and the line cells'
+    segments (point pairs) with their cell arrays. The function object's fibers, and
+    the clouds' parcels as OpenFOAM's vtkCloud writes them (ASCII, no lines)."""
 
     def __init__(self, time, path):
         self.time, self.path = time, path
@@ -89,6 +91,10 @@ class Fibers:
         self.point_data = {k: np.concatenate(v) for k, v in point_data.items()}
         self.segments = np.vstack(segments) if segments else np.zeros((0, 2), dtype=int)
         self.cell_data = {k: np.concatenate(v) for k, v in cell_data.items()}
+
+
+class Fibers(PolyData):
+    """The function object's fibers: each line cell one segment of a fiber."""
 
     def segment_lengths(self):
         a, b = self.points[self.segments[:, 0]], self.points[self.segments[:, 1]]
@@ -110,7 +116,9 @@ def _pieces(path):
 
 
 class Grid:
-    """The grid's node values as arrays indexed [k, j, i], with origin and spacing."""
+    """The grid's node values as arrays indexed [k, j, i], with origin and spacing;
+    start: the first node's (i, j, k) index (WholeExtent's lower ends), so that node
+    [k, j, i] lies at origin + spacing * (start + (i, j, k))."""
 
     def __init__(self, time, path):
         self.time, self.path = time, path
@@ -122,6 +130,7 @@ class Grid:
         whole = [int(v) for v in image.get("WholeExtent").split()]
         self.origin = np.array([float(v) for v in image.get("Origin").split()])
         self.spacing = np.array([float(v) for v in image.get("Spacing").split()])
+        self.start = np.array(whole[0::2])
         self.shape = (whole[5] - whole[4] + 1, whole[3] - whole[2] + 1, whole[1] - whole[0] + 1)
         self.fields = {}
         pieces = [image.find("Piece")] if not parallel else [

@@ -8,65 +8,52 @@ report closes as introduced - escaped - phase change - in system = captured:
 the difference is the check. Without depletion (Allrun -noDepletion: the log says
 that the spray keeps every droplet) the fibers' capture is not taken from the spray:
 sprayed = airborne + evaporated + walls + outlet, the captured printed beside it.
+The cloud's report and the table are read by the project's report package
+(solverLog, caseOutputs; found by reportPackage.py).
 Usage: hoodBalance.py CASE LOG [TOLERANCE]
 (relative to the mass sprayed; default 1e-9). Exit 1 when it does not close.
 """
-import glob
 import os
 import re
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import reportPackage  # noqa: E402,F401  (the report's modules on the import path)
+import caseOutputs  # noqa: E402
+from solverLog import SolverLog  # noqa: E402
+
+CLOUD = "sprayCloud"
+
 
 def last_cloud_report(log):
-    """Figures of the last 'Cloud: sprayCloud' report with a mass introduced."""
-    text = open(log).read()
-    blocks = text.split("Cloud: sprayCloud\n")
-    for block in reversed(blocks[1:]):
-        introduced = re.findall(r"- mass introduced\s+=\s+(\S+)", block)
-        if not introduced:
-            continue
-        # a block ends where the solver goes on (the next blank line after the fates)
-        body = block.split("Mass transfer phase change")[0]
-        phase = re.search(r"Mass transfer phase change\s+=\s+(\S+)", block)
-        escaped = {}
-        for patch, part in re.findall(r"Parcel fate: patch \(number, mass\) (\S+)\n"
-                                      r"((?:\s+- \w+\s+=\s+\S+, \S+\n)+)", body):
-            escaped[patch] = sum(float(m) for m in re.findall(r"- escape\s+=\s+\S+, (\S+)", part))
-        # parcels leaving through a patch that is not a wall (the outlet) are
-        # counted by the cloud as escaped from the "system"
-        system = re.search(r"Parcel fate: system \(number, mass\)\n\s+- escape\s+=\s+\S+, (\S+)", body)
-        escaped["system"] = float(system.group(1)) if system else 0.0
-        return {
-            "introduced": sum(float(m) for m in introduced),
-            "inSystem": float(re.search(r"Current mass in system\s+=\s+(\S+)", body).group(1)),
-            "evaporated": float(phase.group(1)) if phase else 0.0,
-            "escaped": escaped,
-            "time": re.findall(r"^Time = (\S+)", text[:text.rfind(block)], re.M)[-1],
-        }
-    sys.exit("hoodBalance: no cloud report with injected mass in %s" % log)
+    """The last report of the spray's cloud (solverLog): introduced, inSystem,
+    phaseChange, escapedPatches, escapedSystem (parcels through the outlet, counted by
+    the cloud as leaving the "system"), time and timeName."""
+    report = SolverLog(log).clouds.get(CLOUD)
+    if report is None:
+        sys.exit("hoodBalance: no cloud report with injected mass in %s" % log)
+    return report
+
+
+def fates(report):
+    """(evaporated, on the walls, through the outlet) of a cloud report."""
+    escaped = report["escapedPatches"]
+    outlet = sum(v for k, v in escaped.items() if k != "walls") + report["escapedSystem"]
+    evaporated = report["phaseChange"] if report["phaseChange"] is not None else 0.0
+    return evaporated, escaped.get("walls", 0.0), outlet
 
 
 def captured_total(case, time):
     """capturedTotal of the step before the cloud report's time: the cloud reports
     while the solver moves it, before the function object of that step removes
     the droplets the fibers capture."""
-    tables = glob.glob(os.path.join(case, "postProcessing", "dropletFiber", "*",
-                                           "dropletFiber*.dat"))
-    if not tables:
+    table = caseOutputs.read_table(case, "dropletFiber", "dropletFiber.dat")
+    if table is None:
         sys.exit("hoodBalance: no postProcessing/dropletFiber/*/dropletFiber.dat in %s" % case)
-    value, latest = None, -1.0
-    for table in tables:
-        lines = open(table).read().splitlines()
-        names = [n.strip() for n in [l for l in lines if l.startswith("# Time")][-1][1:].split("\t")]
-        col = names.index("capturedTotal")
-        for line in lines:
-            if line.strip() and not line.startswith("#"):
-                cells = line.split()
-                if latest < float(cells[0]) < float(time) - 1e-9:
-                    value, latest = float(cells[col]), float(cells[0])
-    if value is None:
+    before = [row for row in table.rows if row["Time"] < time - 1e-9]
+    if not before:
         return 0.0  # the report of the first step
-    return value
+    return before[-1]["capturedTotal"]
 
 
 def laid_binder(log):
@@ -89,14 +76,13 @@ def main():
     r = last_cloud_report(log)
     captured = captured_total(case, r["time"])
     depletion = "the spray keeps every droplet" not in open(log).read()
-    walls = r["escaped"].get("walls", 0.0)
-    out = sum(v for k, v in r["escaped"].items() if k != "walls")
-    rest = r["introduced"] - r["inSystem"] - r["evaporated"] - walls - out \
+    evaporated, walls, out = fates(r)
+    rest = r["introduced"] - r["inSystem"] - evaporated - walls - out \
         - (captured if depletion else 0.0)
     sprayed = r["introduced"]
-    print("Binder balance at t = %s s (kg, and share of the binder sprayed):" % r["time"])
+    print("Binder balance at t = %s s (kg, and share of the binder sprayed):" % r["timeName"])
     for name, value in [("sprayed", sprayed), ("airborne", r["inSystem"]),
-                        ("evaporated (water)", r["evaporated"]), ("on the hood walls", walls),
+                        ("evaporated (water)", evaporated), ("on the hood walls", walls),
                         ("through the outlet", out)] + (
                             [("captured by the fibers", captured)] if depletion else []):
         print("    %-24s %.6e  %8.4f %%" % (name, value, 100 * value / sprayed if sprayed else 0))

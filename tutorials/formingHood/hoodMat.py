@@ -16,9 +16,11 @@ the product = binder laid / binder sprayed (the table's sprayedMass) over the sa
 The belt's speed, width and cells come from the solver log's settings line. Writes
 hoodMat.png: the laying rate over the outlet and the product across the belt.
 
+The tables are read by the project's report package (caseOutputs, through
+hoodProduct.py's table).
+
 Usage: hoodMat.py CASE [-from T] [-png FILE]
 """
-import glob
 import os
 import re
 import sys
@@ -42,12 +44,6 @@ def belt(log):
     return np.linalg.norm(v), float(m.group(4)), float(m.group(5)), float(m.group(6))
 
 
-def laid_rows(case):
-    paths = sorted(glob.glob(os.path.join(case, "postProcessing", "dropletFiber", "*", "laydown.dat")))
-    rows = [hoodProduct.table(p) for p in paths]
-    return {k: np.concatenate([r[k] for r in rows]) for k in rows[0]} if rows else None
-
-
 def main():
     args = sys.argv[1:]
     start, png = 0.3, "hoodMat.png"
@@ -66,7 +62,7 @@ def main():
     case = args[0]
     log = os.path.join(case, "log.sprayFoam")
     settings = belt(log) if os.path.isfile(log) else None
-    laid = laid_rows(case)
+    laid = hoodProduct.table(case, "laydown.dat")
     if settings is None:
         print("hoodMat: no belt in %s (fibers.laydown not given)" % case)
         return 1
@@ -75,8 +71,8 @@ def main():
         return 0
     speed, lo, hi, h = settings
     t = laid["Time"]
-    end = float(hoodProduct.table(os.path.join(case, "postProcessing", "dropletFiber", "0",
-                                               "dropletFiber.dat"))["Time"][-1])
+    table = hoodProduct.table(case, "dropletFiber.dat")
+    end = float(table["Time"][-1])
     if end - start <= 0 or not (t >= start - 1e-9).any():
         # A short run: from the first fiber laid (not yet an established rate)
         start = float(t.min())
@@ -89,7 +85,6 @@ def main():
     column = np.clip(np.floor((laid["across"][use] - lo) / h).astype(int), 0, columns - 1)
     g = np.bincount(column, glass, columns) / window / (h * speed)
     b = np.bincount(column, binder, columns) / window / (h * speed)
-    table = hoodProduct.table(os.path.join(case, "postProcessing", "dropletFiber", "0", "dropletFiber.dat"))
     sprayed = np.interp(end, table["Time"], table["sprayedMass"]) - np.interp(start, table["Time"],
                                                                              table["sprayedMass"])
     print("The mat on the belt (laydown.dat, %g-%g s: %d computed fibers laid, %.3g physical),"

@@ -21,31 +21,30 @@ constant/sprayCloudProperties (the resin's mass fraction, the nozzles).
 - The work balance over the processors (parallelStatistics.dat): each stage's
   max / mean, summed over the run's steps.
 
+The tables, the grid files and the cloud's report are read by the project's report
+package (caseOutputs, vtkFiles, solverLog; found by reportPackage.py).
+
 Usage: hoodProduct.py CASE [NO_DEPLETION_CASE] [-from T] [-window W]
 """
-import base64
-import glob
-import json
 import os
 import re
-import struct
 import sys
-import xml.etree.ElementTree as ET
 
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import hoodBalance  # noqa: E402
+import hoodBalance  # noqa: E402  (puts the report's modules on the import path)
+import caseOutputs  # noqa: E402
+import vtkFiles  # noqa: E402
 
 RESIN = "C16H34"  # the resin's stand-in (constant/sprayCloudProperties)
+NAME = "dropletFiber"  # the function object's name (system/controlDict)
 
 
-def table(path):
-    lines = [l for l in open(path).read().splitlines() if l.strip()]
-    names = [n.strip() for n in [l for l in lines if l.startswith("# Time")][-1][1:].split("\t")]
-    rows = np.array([[float(v) for v in l.split()] for l in lines
-                     if not l.startswith("#") and len(l.split()) == len(names)])
-    return {n: rows[:, i] for i, n in enumerate(names)}
+def table(case, file_name):
+    """The function object's table file_name as {column: array} (None: no such table)."""
+    found = caseOutputs.read_table(case, NAME, file_name)
+    return None if found is None else {n: np.array(found.column(n)) for n in found.names}
 
 
 def resin_fraction(case):
@@ -83,34 +82,10 @@ def physical_fibers(log):
     return seen
 
 
-def vti_values(da):
-    raw = base64.b64decode("".join((da.text or "").split()))
-    (count,) = struct.unpack("<Q", raw[:8])
-    return np.frombuffer(raw[8:8 + count], dtype="<f8")
-
-
 def grid_rho(path):
-    """rho [k, j, i] of a grid .vti or .pvti, with origin and spacing."""
-    root = ET.parse(path).getroot()
-    image = root.find("ImageData")
-    parallel = image is None
-    if parallel:
-        image = root.find("PImageData")
-    whole = [int(v) for v in image.get("WholeExtent").split()]
-    origin = np.array([float(v) for v in image.get("Origin").split()])
-    spacing = np.array([float(v) for v in image.get("Spacing").split()])
-    shape = (whole[5] - whole[4] + 1, whole[3] - whole[2] + 1, whole[1] - whole[0] + 1)
-    rho = np.zeros(shape)
-    pieces = [image.find("Piece")] if not parallel else [
-        ET.parse(os.path.join(os.path.dirname(path), p.get("Source"))).getroot().find("ImageData/Piece")
-        for p in image.findall("Piece")]
-    for piece in pieces:
-        e = [int(v) for v in piece.get("Extent").split()]
-        size = (e[5] - e[4] + 1, e[3] - e[2] + 1, e[1] - e[0] + 1)
-        da = [d for d in piece.find("PointData") if d.get("Name") == "rho"][0]
-        rho[e[4] - whole[4]:e[5] - whole[4] + 1, e[2] - whole[2]:e[3] - whole[2] + 1,
-            e[0] - whole[0]:e[1] - whole[0] + 1] = vti_values(da).reshape(size)
-    return rho, origin + spacing * np.array(whole[0::2]), spacing
+    """rho [k, j, i] of a grid .vti or .pvti, with its first node's position and spacing."""
+    grid = vtkFiles.Grid(None, path)
+    return grid.fields["rho"], grid.origin + grid.spacing * grid.start, grid.spacing
 
 
 def interpolate(rho, origin, spacing, x):
@@ -130,12 +105,8 @@ def interpolate(rho, origin, spacing, x):
 
 def axis_profile(case, start, distances):
     """rho along the nozzles' axes, mean over the nozzles and the grid files from start on."""
-    folder = glob.glob(os.path.join(case, "postProcessing", "dropletFiber", "*"))[0]
-    series = os.path.join(folder, "grid.pvti.series")
-    if not os.path.isfile(series):
-        series = os.path.join(folder, "grid.vti.series")
-    entries = [(float(e["time"]), os.path.join(folder, e["name"])) for e in json.load(open(series))["files"]]
-    used = [(t, p) for t, p in entries if t >= start - 1e-9]
+    folder = caseOutputs.start_folders(case, NAME)[0]
+    used = [(t, p) for t, p in vtkFiles.series(folder, "grid.vti") if t >= start - 1e-9]
     profile = np.zeros(len(distances))
     for _, path in used:
         rho, origin, spacing = grid_rho(path)
@@ -170,8 +141,7 @@ def main():
     case = args[0]
     other = args[1] if len(args) > 1 else None
     log = os.path.join(case, "log.sprayFoam")
-    folder = glob.glob(os.path.join(case, "postProcessing", "dropletFiber", "*"))[0]
-    d = table(os.path.join(folder, "dropletFiber.dat"))
+    d = table(case, "dropletFiber.dat")
     t = d["Time"]
     end = t[-1]
     if end < start + width:  # a short run: its last third
@@ -196,11 +166,10 @@ def main():
               % (y * sprayed[-1], resin[-1], resin[-1] / (y * sprayed[-1])))
         # where the rest goes: the cloud's fates (hoodBalance.py), shares of the sprayed
         r = hoodBalance.last_cloud_report(log)
-        walls = r["escaped"].get("walls", 0.0)
-        out = sum(v for k, v in r["escaped"].items() if k != "walls")
+        evaporated, walls, out = hoodBalance.fates(r)
         cap = hoodBalance.captured_total(case, r["time"])
-        print("Where the binder sprayed by t = %s s is (share of the sprayed mass):" % r["time"])
-        for label, v in [("captured by the fibers", cap), ("evaporated (water)", r["evaporated"]),
+        print("Where the binder sprayed by t = %s s is (share of the sprayed mass):" % r["timeName"])
+        for label, v in [("captured by the fibers", cap), ("evaporated (water)", evaporated),
                          ("through the outlet", out), ("on the hood walls", walls),
                          ("airborne", r["inSystem"])]:
             print("    %-24s %.4e kg  %7.3f %%" % (label, v, 100 * v / r["introduced"]))
@@ -221,18 +190,16 @@ def main():
             m, sd, se = spread(v)
             print("    %-38s mean %.4f, sd over windows %.4f, sd of the mean %.4f" % (label, m, sd, se))
 
-    bd = os.path.join(folder, "binderDistribution.dat")
-    if os.path.isfile(bd):
-        b = table(bd)
+    b = table(case, "binderDistribution.dat")
+    if b is not None:
         print("Binder on the fibers at t = %g s: %.4g m of fiber (computed), bare %.3f, "
               "mean sigma %.4g kg/m, CoV %.3f, %.4g hits/m; expected mode: bare %.3f, CoV %.3f"
               % (b["Time"][-1], b["fiberLength"][-1], b["bareFraction"][-1], b["meanSigma"][-1],
                  b["sigmaCoV"][-1], b["hitsPerLength"][-1], b["expectedBareFraction"][-1],
                  b["expectedSigmaCoV"][-1]))
 
-    ps = os.path.join(folder, "parallelStatistics.dat")
-    if os.path.isfile(ps):
-        p = table(ps)
+    p = table(case, "parallelStatistics.dat")
+    if p is not None:
         print("Work balance over the processors, the run's steps summed (max / mean; 1 is even):")
         print("    " + ", ".join(
             "%s %.3f" % (stage, p[stage + "Max"].sum() / p[stage + "Mean"].sum())

@@ -10,13 +10,19 @@ Figures per line: the mean downward speed -U_y in the veil's ring, 0.10 m <= |x|
 0.25 m from the spinner's axis (where half of the fibers' points lie), at the axis
 (|x| <= 0.05 m) and outside the ring (0.3 m <= |x| <= 0.45 m).
 
+The write times' folders are listed by the project's report package (caseOutputs;
+found by reportPackage.py).
+
 Usage: hoodVeilAir.py CASE [OTHER_CASE] [-from T]
 """
-import glob
 import os
 import sys
 
 import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import reportPackage  # noqa: E402,F401  (the report's modules on the import path)
+import caseOutputs  # noqa: E402
 
 SETS = (("throughVeil", "y = 1.0 m"), ("belowVeil", "y = 0.6 m"))
 BANDS = (("axis", 0.0, 0.05), ("veil ring", 0.10, 0.25), ("outside", 0.30, 0.45))
@@ -24,16 +30,11 @@ BANDS = (("axis", 0.0, 0.05), ("veil ring", 0.10, 0.25), ("outside", 0.30, 0.45)
 
 def write_times(case, name):
     """(time, file) of every write time with the set's file, in time order."""
-    found = []
-    for folder in glob.glob(os.path.join(case, "postProcessing", "veilAir", "*")):
-        try:
-            t = float(os.path.basename(folder))
-        except ValueError:
-            continue
-        path = os.path.join(folder, name + "_U.xy")
-        if os.path.isfile(path):
-            found.append((t, path))
-    return sorted(found)
+    if not os.path.isdir(os.path.join(case, "postProcessing", "veilAir")):
+        return []
+    found = [(float(os.path.basename(folder)), os.path.join(folder, name + "_U.xy"))
+             for folder in caseOutputs.start_folders(case, "veilAir")]
+    return [(t, path) for t, path in found if os.path.isfile(path)]
 
 
 def profiles(case, name, start):

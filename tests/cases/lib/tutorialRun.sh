@@ -31,6 +31,10 @@ runTutorialCopy() {
         [ "$(command -v "$tool")" = "$FOAM_USER_APPBIN/$tool" ] \
             || die "$tool on PATH is '$(command -v "$tool")', not the one ./Allwmake installs in $FOAM_USER_APPBIN: run ./Allwmake"
     done
+    # the run functions Allrun sources: the first on PATH ('.' takes that one)
+    tool="$(IFS=:; for folder in $PATH; do [ -f "$folder/dropletFiberRunFunctions" ] && echo "$folder/dropletFiberRunFunctions" && break; done)"
+    [ "$tool" = "$FOAM_USER_APPBIN/dropletFiberRunFunctions" ] \
+        || die "dropletFiberRunFunctions on PATH is '$tool', not the one ./Allwmake installs in $FOAM_USER_APPBIN: run ./Allwmake"
     scratch="$(mktemp -d "${TMPDIR:-/tmp}/dropletFiber-$tutorial.XXXXXX")"
     copy="$scratch/$tutorial"
     cp -r "$root/tutorials/$tutorial" "$copy"

@@ -14,6 +14,8 @@ set -euo pipefail
 here="$(cd "${0%/*}" && pwd)"
 script="$here/../../../tutorials/formingHood/hoodBalance.py"
 PY=/usr/bin/python3; [ -x "$PY" ] || PY=python3
+# the script reads the log and the table with the report's modules: this project's
+export DROPLETFIBER_DIR="$here/../../.."
 work="$(mktemp -d)"; trap 'rm -rf "$work"' EXIT
 mkdir -p "$work/postProcessing/dropletFiber/0"
 printf '# Time\tfibers\tcapturedTotal\n0.001\t1\t0.1\n0.002\t1\t0.3\n' \
