@@ -31,7 +31,9 @@ tar xJf "$archive"
 check "[ -f $restart/uniform/dropletFiber/dropletFiber ] && ! grep -q fibersLaid $restart/uniform/dropletFiber/dropletFiber" \
     "the archive's state is not one without the population's laid totals"
 setEnd "$last"
+# log.restart, as checkFiberRainSame.py reads it; the solver's log is that one
 "$app" > log.restart 2>&1 || { tail -20 log.restart; die "the restart from the older state failed"; }
+ln -sf log.restart "log.$app"
 checkRanClean "$work/split"
 check "grep -q 'restarted from' log.restart" "the restarted run did not read the restart state"
 check "grep -q \"the fibers laid in the mat's totals only: taken from there\" log.restart" \
