@@ -40,7 +40,6 @@ READERS = (
     "src/openfoam/stages/sprayParcels/sprayParcels.C",
     "src/openfoam/stages/couplingGrid/couplingGrid.C",
     "src/openfoam/stages/fiberPopulation/fiberPopulation.C",
-    "src/openfoam/stages/fiberMotion/fiberMotion.C",
     "src/openfoam/stages/couplingOutput/couplingOutput.C",
     "src/openfoam/stages/couplingRestart/couplingRestart.C",
     "src/openfoam/stages/airReaction/airReaction.C",
@@ -89,15 +88,26 @@ def check_lists_read(project):
 # The dictionary each list of allowed keys holds ("": the function object's own level);
 # a list name here is a `wordList <name>` or the dictionary argument of
 # `checkKeys(<name>, {...})`. The material keys are allowed in fibers and in each
-# injector and fixed fiber (fiberSettings.C: checkFiberKeys).
+# injector and fixed fiber (fiberSettings.C: fiberMotionKeys, checkFiberSourceKeys).
 INJECTOR, FIXED = "fibers.injectors.<name>", "fibers.fixed.<name>"
 KEY_LISTS = {
-    "functionObjectKeys": [""],
+    # the top level: OpenFOAM's own and each stage's (the function object joins them)
+    "openFoamKeys": [""],
+    "sprayKeys": [""],
+    "gridStageKeys": [""],
+    "captureKeys": [""],
+    "motionKeys": [""],
+    "outputKeys": [""],
+    "restartKeys": [""],
     "gridKeys": ["grid"],
     "collisionKeys": ["collision"],
     "airDict": ["air"],
     "materialKeys": ["fibers", INJECTOR, FIXED],
-    "fibersKeys": ["fibers"],
+    # fibers: each stage's of the fibers
+    "fiberSolverKeys": ["fibers"],
+    "fiberSourceKeys": ["fibers"],
+    "couplingKeys": ["fibers"],
+    "beltKeys": ["fibers"],
     "injectorKeys": [INJECTOR],
     "fixedFiberKeys": [FIXED],
     "turbulenceKeys": ["fibers.turbulence"],

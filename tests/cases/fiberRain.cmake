@@ -37,6 +37,16 @@ add_test(NAME case.fiberRain.restart.parallel
 set_tests_properties(case.fiberRain.restart.parallel PROPERTIES LABELS "case" TIMEOUT 120
   PROCESSORS 2 FIXTURES_REQUIRED fiberRain.parallel)
 
+# A state written before the population counted the fibers the belt took (the laid
+# totals in the mat's entry only; references/fiberRainState0.25.tar.xz, written by that
+# version) restarts and continues to 0.5 as the uninterrupted run, to the bit
+add_test(NAME case.fiberRain.olderState
+  COMMAND ${CASES}/checkOldStateRestart.sh ${CASES}/fiberRain
+    ${RUN}/fiberRain.serial ${RUN}/fiberRain.olderState
+    ${CASES}/references/fiberRainState0.25.tar.xz)
+set_tests_properties(case.fiberRain.olderState PROPERTIES LABELS "case" TIMEOUT 120
+  FIXTURES_REQUIRED fiberRain.serial)
+
 # Bad fibers.laydown entries (a patch not found or not planar, cell <= 0, a velocity out
 # of the plane, patch with point and normal or with width, no belt, a key not known, a
 # zero normal) stop at the start with a FatalIOError naming the entry; the same belt

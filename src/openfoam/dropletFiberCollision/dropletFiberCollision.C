@@ -13,7 +13,6 @@ Description
 #include "dictionaryChecks.H"
 #include "dictionaryKeys.H"
 #include "collisionSettings.H"
-#include "plausibility.H"
 #include "clockValue.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -39,13 +38,10 @@ namespace functionObjects
 namespace
 {
 
-//- The entries of the function object's dictionary: its own, read by the
-//  stages, and those OpenFOAM v1912 reads from every function object's
-//  dictionary
-const Foam::wordList functionObjectKeys
+//- The entries OpenFOAM v1912 reads from every function object's dictionary;
+//  the function object's own are the stages' (checkEntries)
+const Foam::wordList openFoamKeys
 {
-    "clouds", "gather", "grid", "collision", "air", "fibers",
-    "writeVtk", "writeGridVtk", "writeWindowValues", "windowState", "restart",
     // functionObject, functionObjectList: the object itself
     "type", "libs", "functionObjectLibs", "enabled", "log",
     // regionFunctionObject (fvMeshFunctionObject)
@@ -84,7 +80,10 @@ Foam::functionObjects::dropletFiberCollision::dropletFiberCollision
     reaction_(*this, mesh_),
     laydown_(*this, mesh_),
     restart_(*this, mesh_),
-    stateParts_(6)
+    stateParts_(6),
+    depositionTime_(0),
+    collisionTime_(0),
+    fiberTime_(0)
 {
     stateParts_.set(0, &population_);
     stateParts_.set(1, &capture_);
@@ -114,11 +113,7 @@ Foam::functionObjects::dropletFiberCollision::dropletFiberCollision
     output_.startVtk(dict);
     restart_.startMarker([this]() { return lastTimeIndex_; });
     reportSettings();
-    output_.writeTableHeader
-    (
-        capture_.depletion(), spray_.liquidSpecies(), population_.weighted(),
-        laydown_.on()
-    );
+    output_.writeTableHeader(stepColumns());
 }
 
 
@@ -126,6 +121,22 @@ Foam::functionObjects::dropletFiberCollision::~dropletFiberCollision() = default
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+const std::vector<::dropletFiber::Parcel>&
+Foam::functionObjects::dropletFiberCollision::gatherAndDeposit
+(
+    const scalar dt
+)
+{
+    clockValue clock(true);
+    spray_.applyRestoredRemovalOnce();
+    const auto& parcels = spray_.gather();
+    const ::dropletFiber::StepStatistics deposit = depositParcels(parcels, dt);
+    depositionTime_ = clock.elapsed();
+    grid_.recordDeposit(deposit, depositionTime_);
+    return parcels;
+}
+
 
 ::dropletFiber::StepStatistics
 Foam::functionObjects::dropletFiberCollision::depositParcels
@@ -202,19 +213,70 @@ Foam::functionObjects::dropletFiberCollision::collideAndDeplete
 void Foam::functionObjects::dropletFiberCollision::advanceFibers
 (
     ::dropletFiber::CaptureSources& capture,
-    const scalar dt,
-    dropletFiber::stepRow& step
+    const scalar dt
 )
 {
-    const ::dropletFiber::StepReport report = motion_.advance
+    population_.advance(motion_, dt, capture, statistics_, reaction_);
+    capture_.countCaptured(population_.fibers(), capture);
+    population_.removeLaid(laydown_.layDown(population_.fibers()));
+    population_.removeLostAndPassOn(statistics_);
+}
+
+
+void Foam::functionObjects::dropletFiberCollision::checkEntries
+(
+    const dictionary& dict,
+    const dictionary& fibersDict
+)
+{
+    using namespace dropletFiber;
+    wordList entries;
+    for
     (
-        population_.fibers(), population_.boxes(), dt, capture, statistics_,
-        reaction_
-    );
-    step.capturedStep =
-        capture_.countCaptured(population_.fibers(), capture);
-    step.maxSegmentLengthError = report.maxSegmentLengthError;
-    step.subSteps = report.subSteps;
+        const wordList& stage :
+        {
+            sprayParcels::entries(), couplingGrid::entries(),
+            fiberCapture::entries(), fiberMotion::entries(),
+            couplingOutput::entries(), couplingRestart::entries()
+        }
+    )
+    {
+        entries = joinedKeys(entries, stage);
+    }
+    checkKeys(dict, joinedKeys(entries, openFoamKeys));
+    wordList fibersEntries;
+    for
+    (
+        const wordList& stage :
+        {
+            fiberMotion::fibersEntries(), fiberPopulation::fibersEntries(),
+            airReaction::fibersEntries(), fiberLaydown::fibersEntries()
+        }
+    )
+    {
+        fibersEntries = joinedKeys(fibersEntries, stage);
+    }
+    checkKeys(fibersDict, fibersEntries);
+}
+
+
+Foam::wordList
+Foam::functionObjects::dropletFiberCollision::stepColumns() const
+{
+    wordList columns(population_.stepColumns());
+    for
+    (
+        const wordList& stage :
+        {
+            spray_.stepColumns(), grid_.stepColumns(), capture_.stepColumns(),
+            motion_.stepColumns(), laydown_.stepColumns(),
+            wordList{"wallTimeDeposition", "wallTimeCollision", "wallTimeFibers"}
+        }
+    )
+    {
+        columns = dropletFiber::joinedKeys(columns, stage);
+    }
+    return columns;
 }
 
 
@@ -224,44 +286,33 @@ bool Foam::functionObjects::dropletFiberCollision::read(const dictionary& dict)
 {
     // Called at construction, and again whenever the dictionary was edited
     // during the run (runTimeModifiable): what carries no state is applied,
-    // an edit of what does (the grid, the fibers' sources, depletion) stops
-    // the run
+    // an edit of what does (the grid, the fibers' sources, depletion, the
+    // belt) stops the run. Each stage reads its own entries; fibers is
+    // shared by the stages of the fibers
     const bool running = grid_.built();
-    dropletFiber::checkKeys(dict, functionObjectKeys);
+    const dictionary fibers(dict.subOrEmptyDict("fibers"));
+    checkEntries(dict, fibers);
     fvMeshFunctionObject::read(dict);
     output_.read(dict);
-    grid_.readWindowOutput(dict);
     capture_.read(dict, running);
     spray_.read(dict, capture_.depletion());
-    restart_.read(dict);
-    const dropletFiber::gridSettings grid =
-        dropletFiber::readGridSettings(dict.subOrEmptyDict("grid"), mesh_);
-    motion_.read(dict);
-    reaction_.readCoupling(dict);
-    laydown_.read(dict, running);
+    restart_.read(dict, fibers);
+    motion_.read(dict.subOrEmptyDict("air"), fibers, running);
+    reaction_.read(fibers, output_.tablePrecision());
+    laydown_.read(fibers, running, output_.tablePrecision());
     if (laydown_.on())
     {
         population_.countBinderRemoved();
     }
+    // The injectors before the grid: its memory check counts their fibers
+    population_.read(fibers, running);
+    grid_.read(dict, running, population_.injectorSpecs());
     if (running)
     {
-        grid_.checkUnchanged(grid, dict.subOrEmptyDict("grid"));
-        population_.read(dict, running);
         Info<< type() << " " << name() << ": settings re-read at time "
             << time_.timeName() << nl;
         reportSettings();
-        return true;
     }
-    // The injectors first: the memory check counts the fibers they give
-    population_.read(dict, running);
-    grid_.build(dict, grid, population_.injectorSpecs());
-    // Unit slips run, warned once at the start
-    dropletFiber::warnImplausibleFibers(dict.subOrEmptyDict("fibers"));
-    dropletFiber::warnImplausibleAir(dict.subOrEmptyDict("air"));
-    dropletFiber::warnImplausibleSpacing
-    (
-        dict.subOrEmptyDict("grid"), grid_.settings(), mesh_
-    );
     return true;
 }
 
@@ -275,42 +326,34 @@ bool Foam::functionObjects::dropletFiberCollision::execute()
     }
     lastTimeIndex_ = time_.timeIndex();
     const scalar dt = time_.deltaTValue();
-    dropletFiber::stepRow step;
     statistics_.startStep();
 
     // 1.-2. The parcels of this step (after a restart, with the removal of
     //       the step restarted from), onto the grid, averaged over the window
-    clockValue clock(true);
-    spray_.applyRestoredRemovalOnce();
-    const auto& parcels = spray_.gather(step.parcels, step.droplets);
-    step.deposit = depositParcels(parcels, dt);
-    step.depositionTime = clock.elapsed();
-    grid_.recordDeposit(step.deposit, step.depositionTime);
+    const auto& parcels = gatherAndDeposit(dt);
 
     // 3. New fibers
-    clock.update();
+    clockValue clock(true);
     population_.inject(statistics_);
-    step.fiberTime = clock.elapsed();
+    fiberTime_ = clock.elapsed();
 
     // 4. Collision mass of every segment; with depletion taken from the parcels
     clock.update();
     ::dropletFiber::CaptureSources capture = collideAndDeplete(parcels, dt);
-    step.collisionTime = clock.elapsed();
+    collisionTime_ = clock.elapsed();
 
-    // 5. Advance the fibers: capture, air drag, bending, inextensibility;
-    // 6. fibers that left removed, the others to the processor holding them
+    // 5.-6. Advance the fibers: capture, air drag, bending, inextensibility;
+    //       those on the belt or out of the mesh removed, the others passed on
     clock.update();
-    advanceFibers(capture, dt, step);
-    laydown_.layDown(population_.fibers());
-    population_.removeLostAndPassOn(statistics_);
-    step.fiberTime += scalar(clock.elapsed());
+    advanceFibers(capture, dt);
+    fiberTime_ += scalar(clock.elapsed());
     grid_.rebalance(parcels, dt, statistics_);
 
     // 7. Report; at write times the restart state and the mass balances
-    reportStep(step);
+    reportStep();
     if (time_.writeTime())
     {
-        writeAtWriteTime(step);
+        writeAtWriteTime();
     }
     return true;
 }

@@ -13,30 +13,20 @@ Description
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::functionObjects::dropletFiberCollision::reportStep
-(
-    dropletFiber::stepRow& step
-)
+void Foam::functionObjects::dropletFiberCollision::reportStep()
 {
-    // Over all processors (collective: before the master's writing)
-    step.fibers = population_.count();
-    step.weighted = population_.weighted();
-    if (step.weighted)
-    {
-        step.fibersRepresented = population_.represented();
-    }
-    step.fiberMass = population_.mass();
-    step.laying = laydown_.on();
-    step.laidGlass = laydown_.totals().glass;
-    step.laidBinder = laydown_.totals().binder;
-    step.capturedTotal = capture_.captured();
-    step.depletion = capture_.depletion();
-    if (step.depletion)
-    {
-        step.cloudMass = spray_.readCloudMassReport();
-        step.removal = capture_.step();
-        step.capturedSpecies = spray_.capturedSpecies();
-    }
+    // Each stage its figures, summed over processors (collective: before
+    // the master's writing)
+    dropletFiber::stepFigures step;
+    population_.addStepFigures(step);
+    spray_.addStepFigures(step);
+    grid_.addStepFigures(step);
+    capture_.addStepFigures(step);
+    motion_.addStepFigures(step);
+    laydown_.addStepFigures(step);
+    step.add("wallTimeDeposition", depositionTime_);
+    step.add("wallTimeCollision", collisionTime_);
+    step.add("wallTimeFibers", fiberTime_);
     output_.writeStep(step);
     // With turbulent air, the fibers' dispersion
     if (motion_.turbulent())
@@ -50,10 +40,7 @@ void Foam::functionObjects::dropletFiberCollision::reportStep
 }
 
 
-void Foam::functionObjects::dropletFiberCollision::writeAtWriteTime
-(
-    const dropletFiber::stepRow& step
-)
+void Foam::functionObjects::dropletFiberCollision::writeAtWriteTime()
 {
     coreCall
     (
@@ -65,23 +52,11 @@ void Foam::functionObjects::dropletFiberCollision::writeAtWriteTime
         population_.binderSums(),
         dropletFiber::collisionModeName(capture_.options().mode)
     );
-    // The fibers' mass summed for the step's row: nothing moved since
-    output_.reportConservation
-    (
-        grid_.totals(), population_.totals(), capture_.captured(),
-        step.fiberMass,
-        laydown_.on() ? laydown_.totals().glass + laydown_.totals().binder : -1
-    );
-    if (laydown_.on())
-    {
-        const scalar binderInAir = population_.binderSums().values[2];
-        laydown_.reportAtWrite
-        (
-            step.fiberMass - binderInAir, binderInAir,
-            population_.totals().massAdded, population_.totals().massRemoved,
-            population_.totals().binderRemoved, capture_.captured()
-        );
-    }
+    output_.reportConservationHeading();
+    grid_.reportConservation();
+    population_.reportConservation(capture_.captured());
+    laydown_.reportAtWrite();
+    population_.reportBalanceAtWrite(capture_.captured());
     capture_.reportBinderBalance();
     statistics_.reportBalance(Info, type() + " " + name(), time_.timeName());
     spray_.reportCloudBalance(capture_.step().airborne, capture_.captured());

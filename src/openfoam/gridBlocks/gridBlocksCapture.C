@@ -84,13 +84,13 @@ std::vector<double> Foam::dropletFiber::gridBlocks::grantCapture
     const std::vector<Eigen::Vector3d>& strips,
     const std::vector<::dropletFiber::Parcel>& parcels,
     const double dt,
-    ::dropletFiber::CaptureLimit& limit,
     ::dropletFiber::CaptureLimitReport& report,
     std::vector<double>& captured,
     parallelStatistics& statistics
 )
 {
     const auto what = parallelStatistics::traffic::gridQueries;
+    ::dropletFiber::CaptureLimit& limit = limit_;
     limit.clear();
     // Weighted fibers: each request carries its physical fibers too
     grantInterceptors_.clear();

@@ -21,7 +21,6 @@ Description
 
 std::vector<double> Foam::dropletFiber::gridBlocks::realiseCapture
 (
-    ::dropletFiber::CaptureLimit& limit,
     const std::vector<::dropletFiber::Parcel>& parcels,
     const std::vector<double>& realisedOverGranted,
     std::vector<double>& cut,
@@ -29,6 +28,7 @@ std::vector<double> Foam::dropletFiber::gridBlocks::realiseCapture
     parallelStatistics& statistics
 )
 {
+    ::dropletFiber::CaptureLimit& limit = limit_;
     ::dropletFiber::RealisedCapture realised;
     List<List<scalar>> ratios;
     for (std::size_t p = 0; p < grantLocal_.size(); ++p)

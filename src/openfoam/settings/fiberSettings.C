@@ -23,21 +23,14 @@ using Foam::wordList;
 //  read by readFiberMaterial
 const wordList materialKeys{"radius", "density", "youngsModulus"};
 
-//- The entries of fibers besides the material: read by
-//  readFiberSolverSettings, readFiberInjectors (points, injectors) and
-//  readFixedFibers (fixed)
-const wordList fibersKeys
+//- The entries of fibers the fibers' motion reads besides the material:
+//  readFiberSolverSettings (points also readFiberInjectors' default) and
+//  readFiberTurbulence (turbulenceSettings.H). The other stages' entries of
+//  fibers are in their own lists (the function object joins them)
+const wordList fiberSolverKeys
 {
     "gravity", "drag", "normalDragCoefficient", "tangentialDragCoefficient",
-    "maxSubSteps", "theta", "points", "injectors", "fixed",
-    // read by readFiberTurbulence (turbulenceSettings.H)
-    "turbulence",
-    // read by the function object (fiberOwnership::holderRule)
-    "holders",
-    // read by airReaction: the fibers' drag on the air
-    "coupled", "couplingWarning",
-    // read by fiberLaydown: the belt the fibers are laid on
-    "laydown"
+    "maxSubSteps", "theta", "points", "turbulence"
 };
 
 //- The entries of an injector besides the material: read by readFiberInjectors
@@ -79,9 +72,14 @@ void checkEachKeys
 
 // * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * //
 
-void Foam::dropletFiber::checkFiberKeys(const dictionary& fibersDict)
+Foam::wordList Foam::dropletFiber::fiberMotionKeys()
 {
-    checkKeys(fibersDict, joinedKeys(materialKeys, fibersKeys));
+    return joinedKeys(materialKeys, fiberSolverKeys);
+}
+
+
+void Foam::dropletFiber::checkFiberSourceKeys(const dictionary& fibersDict)
+{
     checkEachKeys(fibersDict, "injectors", joinedKeys(materialKeys, injectorKeys));
     checkEachKeys(fibersDict, "fixed", joinedKeys(materialKeys, fixedFiberKeys));
 }
@@ -119,7 +117,6 @@ void Foam::dropletFiber::checkFiberKeys(const dictionary& fibersDict)
     const Time& runTime
 )
 {
-    checkFiberKeys(fibersDict);
     ::dropletFiber::FiberSolverSettings s;
 
     // Gravity: the entry, else the case's constant/g, else none

@@ -169,12 +169,13 @@ Foam::dropletFiber::airReaction::airReaction
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::dropletFiber::airReaction::readCoupling(const dictionary& dict)
+void Foam::dropletFiber::airReaction::read
+(
+    const dictionary& fibersDict,
+    const label tablePrecision
+)
 {
-    // The table's digits: the function object's writePrecision, as its other
-    // tables (default 10)
-    writePrecision_ = dict.lookupOrDefault<label>("writePrecision", 10);
-    const dictionary& fibersDict = dict.subOrEmptyDict("fibers");
+    writePrecision_ = tablePrecision;
     coupled_ = getSwitch(fibersDict, "coupled", false);
     warningFraction_ = getPositive(fibersDict, "couplingWarning", 0.1);
     if (coupled_)
@@ -207,14 +208,25 @@ void Foam::dropletFiber::airReaction::startStep()
 }
 
 
-void Foam::dropletFiber::airReaction::addFiberDrag
+void Foam::dropletFiber::airReaction::addDrag
 (
-    const vector& drag,
-    const vector& outside
+    const airSampler& sampler,
+    const Eigen::Matrix3Xd& force,
+    const Eigen::VectorXd& coefficient,
+    parallelStatistics& statistics
 )
 {
-    fiberDrag_ += drag;
-    outside_ += outside;
+    // The air feels the opposite of the fibers' drag, in the cell each
+    // point's air was sampled in (on the processor that answered for it)
+    vector outsideOnAir(Zero);
+    sampler.spreadToCells
+    (
+        -force, coefficient, cellForce_, cellCoefficient_, outsideOnAir,
+        statistics
+    );
+    const Eigen::Vector3d total = force.rowwise().sum();
+    fiberDrag_ += vector(total.x(), total.y(), total.z());
+    outside_ -= outsideOnAir;
 }
 
 
@@ -288,6 +300,19 @@ void Foam::dropletFiber::airReaction::report(Ostream& os) const
         << " for the fvOption fiberDragSource, which is "
         << (fvOptionListed(mesh_) ? "listed" : "NOT listed: the air feels nothing")
         << (readAtStart_ ? "; read at the start time" : "") << nl;
+}
+
+
+//- The entries of fibers the air reaction reads
+static const Foam::wordList couplingKeys
+{
+    "coupled", "couplingWarning"
+};
+
+
+Foam::wordList Foam::dropletFiber::airReaction::fibersEntries()
+{
+    return couplingKeys;
 }
 
 

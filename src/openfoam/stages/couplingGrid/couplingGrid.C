@@ -9,6 +9,7 @@ Description
 
 #include "couplingGrid.H"
 #include "dictionaryChecks.H"
+#include "plausibility.H"
 #include "grid/MultilinearWeights.hpp"
 #include "PstreamReduceOps.H"
 #include "boundBox.H"
@@ -178,6 +179,27 @@ void Foam::dropletFiber::couplingGrid::build
 }
 
 
+void Foam::dropletFiber::couplingGrid::read
+(
+    const dictionary& dict,
+    const bool running,
+    const std::vector<::dropletFiber::FiberInjectorSpec>& injectors
+)
+{
+    readWindowOutput(dict);
+    const dictionary& gridDict = dict.subOrEmptyDict("grid");
+    const gridSettings grid = readGridSettings(gridDict, mesh_);
+    if (running)
+    {
+        checkUnchanged(grid, gridDict);
+        return;
+    }
+    build(dict, grid, injectors);
+    // A unit slip runs, warned once at the start
+    warnImplausibleSpacing(gridDict, settings_, mesh_);
+}
+
+
 void Foam::dropletFiber::couplingGrid::checkUnchanged
 (
     const gridSettings& grid,
@@ -287,7 +309,30 @@ void Foam::dropletFiber::couplingGrid::recordDeposit
     const scalar wallTime
 )
 {
+    lastDeposit_ = stats;
     depositReport_->record(stats, wallTime, time_.timeName());
+}
+
+
+void Foam::dropletFiber::couplingGrid::addStepFigures
+(
+    stepFigures& step
+) const
+{
+    step.add("parcelMass", lastDeposit_.massIn);
+    step.add("massOnGrid", lastDeposit_.massDeposited);
+    step.add("massOutsideGrid", lastDeposit_.massOutside);
+}
+
+
+void Foam::dropletFiber::couplingGrid::reportConservation() const
+{
+    const depositTotals& t = totals_;
+    Info<< "    parcel mass " << t.parcelMass << " kg = on grid "
+        << t.deposited << " + outside it " << t.outside << " (balance "
+        << t.parcelMass - t.deposited - t.outside << " kg)" << nl
+        << "    parcel-steps with the influence radius capped at rMaxCap: "
+        << t.parcelsCapped << nl;
 }
 
 
@@ -311,7 +356,6 @@ std::vector<double> Foam::dropletFiber::couplingGrid::grantCapture
     const std::vector<Eigen::Vector3d>& strips,
     const std::vector<::dropletFiber::Parcel>& parcels,
     const scalar dt,
-    ::dropletFiber::CaptureLimit& limit,
     ::dropletFiber::CaptureLimitReport& report,
     std::vector<double>& captured,
     parallelStatistics& statistics
@@ -319,15 +363,14 @@ std::vector<double> Foam::dropletFiber::couplingGrid::grantCapture
 {
     return blocks_->grantCapture
     (
-        *grid_, points, shares, interceptors, strips, parcels, dt, limit,
-        report, captured, statistics
+        *grid_, points, shares, interceptors, strips, parcels, dt, report,
+        captured, statistics
     );
 }
 
 
 std::vector<double> Foam::dropletFiber::couplingGrid::realiseCapture
 (
-    ::dropletFiber::CaptureLimit& limit,
     const std::vector<::dropletFiber::Parcel>& parcels,
     const std::vector<double>& ratios,
     std::vector<double>& cut,
@@ -337,7 +380,7 @@ std::vector<double> Foam::dropletFiber::couplingGrid::realiseCapture
 {
     return blocks_->realiseCapture
     (
-        limit, parcels, ratios, cut, fellShort, statistics
+        parcels, ratios, cut, fellShort, statistics
     );
 }
 
@@ -399,6 +442,19 @@ void Foam::dropletFiber::couplingGrid::reportMemory
 void Foam::dropletFiber::couplingGrid::reportAtWrite()
 {
     depositReport_->reportAtWrite(time_.timeName());
+}
+
+
+//- The function object's entries the grid reads (grid's own: gridSettings.C)
+static const Foam::wordList gridStageKeys
+{
+    "grid", "writeWindowValues", "windowState"
+};
+
+
+Foam::wordList Foam::dropletFiber::couplingGrid::entries()
+{
+    return gridStageKeys;
 }
 
 

@@ -144,35 +144,10 @@ void Foam::dropletFiber::couplingOutput::writeVtk(const vtkWriter& fibers, const
 }
 
 
-void Foam::dropletFiber::couplingOutput::reportConservation
-(
-    const depositTotals& deposit,
-    const fiberTotals& fibers,
-    const scalar captured,
-    const scalar mass,
-    const scalar laid
-) const
+void Foam::dropletFiber::couplingOutput::reportConservationHeading() const
 {
-    const scalar balance =
-        fibers.massAdded + captured
-      - fibers.massRemoved - max(laid, scalar(0)) - mass;
     Info<< type() << " " << name() << " conservation at time "
-        << time_.timeName() << ", summed over all steps so far:" << nl
-        << "    parcel mass " << deposit.parcelMass << " kg = on grid "
-        << deposit.deposited << " + outside it " << deposit.outside
-        << " (balance "
-        << deposit.parcelMass - deposit.deposited - deposit.outside
-        << " kg)" << nl
-        << "    fiber mass " << mass << " kg = added "
-        << fibers.massAdded << " + captured " << captured
-        << " - removed " << fibers.massRemoved;
-    if (laid >= 0)
-    {
-        Info<< " - laid " << laid;
-    }
-    Info<< " (balance " << balance << " kg)" << nl
-        << "    parcel-steps with the influence radius capped at rMaxCap: "
-        << deposit.parcelsCapped << nl << endl;
+        << time_.timeName() << ", summed over all steps so far:" << nl;
 }
 
 
@@ -180,6 +155,19 @@ void Foam::dropletFiber::couplingOutput::report(Ostream& os) const
 {
     os  << "    output: writeVtk " << Switch(writeVtk_).c_str()
         << ", writeGridVtk " << Switch(writeGridVtk_).c_str() << nl;
+}
+
+
+//- The function object's entries the output reads besides writeFile's
+static const Foam::wordList outputKeys
+{
+    "writeVtk", "writeGridVtk"
+};
+
+
+Foam::wordList Foam::dropletFiber::couplingOutput::entries()
+{
+    return outputKeys;
 }
 
 

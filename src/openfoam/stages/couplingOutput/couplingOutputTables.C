@@ -9,6 +9,7 @@ Description
 
 #include "couplingOutput.H"
 
+#include <algorithm>
 #include <cmath>
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -50,14 +51,70 @@ void Foam::dropletFiber::couplingOutput::writeParallelStatisticsHeader
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::dropletFiber::couplingOutput::writeTableHeader
+Foam::wordList Foam::dropletFiber::couplingOutput::tableColumns
 (
-    const bool depletion,
-    const wordList& liquidSpecies,
-    const bool weighted,
-    const bool laying
+    const wordList& columns
 )
 {
+    // The table's layout: the fibers, the parcels and the grid, the capture,
+    // the fibers' mass and the solver; depletion's binder balance (eq. 9
+    // before the limit, the mass taken from the parcels = capturedStep, the
+    // parcel mass flying on), the clouds' own figures (sprayed = airborne +
+    // evaporated + escaped + capturedTotal) and the captured mass per liquid
+    // species (captured_<species>); with a belt the glass and binder laid so
+    // far; the stages' wall times (gather and deposit; collision and
+    // depletion's removal; the fibers' injection, step and hand-over)
+    static const wordList layout
+    {
+        "fibers", "fibersRepresented", "parcels", "droplets", "parcelMass",
+        "massOnGrid", "massOutsideGrid", "capturedStep", "capturedTotal",
+        "fiberMass", "maxSegmentLengthError",
+        "demandedStep", "removedStep", "airborneMass",
+        "sprayedMass", "evaporatedMass", "escapedMass", "captured_",
+        "laidGlass", "laidBinder",
+        "wallTimeDeposition", "wallTimeCollision", "wallTimeFibers"
+    };
+    const auto place = [](const word& column)
+    {
+        const label i = layout.find(column);
+        if (i >= 0)
+        {
+            return i;
+        }
+        if (column.starts_with("captured_"))
+        {
+            return layout.find("captured_");
+        }
+        FatalErrorInFunction
+            << "Column '" << column << "' is not in the table's layout "
+            << layout << abort(FatalError);
+        return label(-1);
+    };
+    // Stable: the species in the order given
+    DynamicList<label> order(identity(columns.size()));
+    std::stable_sort
+    (
+        order.begin(), order.end(),
+        [&](const label a, const label b)
+        {
+            return place(columns[a]) < place(columns[b]);
+        }
+    );
+    wordList ordered(columns.size());
+    forAll(order, i)
+    {
+        ordered[i] = columns[order[i]];
+    }
+    return ordered;
+}
+
+
+void Foam::dropletFiber::couplingOutput::writeTableHeader
+(
+    const wordList& columns
+)
+{
+    columns_ = tableColumns(columns);
     if (!writeToFile())
     {
         return;
@@ -65,71 +122,28 @@ void Foam::dropletFiber::couplingOutput::writeTableHeader
     OFstream& os = file();
     writeHeader(os, "Droplet-fiber coupling, per time step (masses in kg, times in s)");
     writeCommented(os, "Time");
-    for
-    (
-        const char* column :
-        {
-            "fibers", "parcels", "droplets", "parcelMass", "massOnGrid", "massOutsideGrid",
-            "capturedStep", "capturedTotal", "fiberMass",
-            "maxSegmentLengthError"
-        }
-    )
+    for (const word& column : columns_)
     {
         writeTabbed(os, column);
-        // Weighted fibers: the physical fibers the computed ones represent
-        if (weighted && word(column) == "fibers")
-        {
-            writeTabbed(os, "fibersRepresented");
-        }
     }
-    // Depletion's binder balance: eq. 9 before the limit, the mass taken
-    // from the parcels (= capturedStep), the parcel mass flying on
-    if (depletion)
-    {
-        for (const char* column : {"demandedStep", "removedStep", "airborneMass"})
-        {
-            writeTabbed(os, column);
-        }
-        // The clouds' own figures (sprayed = airborne + evaporated +
-        // escaped + capturedTotal) and the captured mass per liquid species
-        for (const char* column : {"sprayedMass", "evaporatedMass", "escapedMass"})
-        {
-            writeTabbed(os, column);
-        }
-        for (const word& species : liquidSpecies)
-        {
-            writeTabbed(os, "captured_" + species);
-        }
-    }
-    // With a belt: the glass and binder laid so far (glass injected = in the
-    // air + laid + lost, the log at write times)
-    if (laying)
-    {
-        writeTabbed(os, "laidGlass");
-        writeTabbed(os, "laidBinder");
-    }
-    // One stage each: gather and deposit; collision (and depletion's
-    // removal); the fibers' injection, step and hand-over
-    writeTabbed(os, "wallTimeDeposition");
-    writeTabbed(os, "wallTimeCollision");
-    writeTabbed(os, "wallTimeFibers");
     os  << endl;
 }
 
 
-void Foam::dropletFiber::couplingOutput::writeStep(const stepRow& step)
+void Foam::dropletFiber::couplingOutput::writeStep(const stepFigures& step)
 {
     if (owner_.log)
     {
-        Info<< type() << " " << name() << ": parcels " << step.parcels
-            << ", fibers " << step.fibers
-            << ", captured " << step.capturedStep << " kg (total "
-            << step.capturedTotal << " kg), segment-length error "
-            << step.maxSegmentLengthError << ", sub-steps " << step.subSteps;
-        if (step.depletion)
+        Info<< type() << " " << name() << ": parcels "
+            << label(step["parcels"]) << ", fibers " << label(step["fibers"])
+            << ", captured " << step["capturedStep"] << " kg (total "
+            << step["capturedTotal"] << " kg), segment-length error "
+            << step["maxSegmentLengthError"] << ", sub-steps "
+            << label(step["subSteps"]);
+        if (step.found("removedStep"))
         {
-            Info<< ", removed from the parcels " << step.removal.removed
-                << " kg, airborne " << step.removal.airborne << " kg";
+            Info<< ", removed from the parcels " << step["removedStep"]
+                << " kg, airborne " << step["airborneMass"] << " kg";
         }
         Info<< endl;
     }
@@ -138,41 +152,12 @@ void Foam::dropletFiber::couplingOutput::writeStep(const stepRow& step)
     {
         OFstream& os = file();
         writeCurrentTime(os);
-        os  << tab << step.fibers;
-        if (step.weighted)
+        for (const word& column : columns_)
         {
-            os  << tab << step.fibersRepresented;
+            os  << tab;
+            step.write(os, column);
         }
-        os  << tab << step.parcels
-            << tab << step.droplets
-            << tab << step.deposit.massIn
-            << tab << step.deposit.massDeposited
-            << tab << step.deposit.massOutside
-            << tab << step.capturedStep
-            << tab << step.capturedTotal
-            << tab << step.fiberMass
-            << tab << step.maxSegmentLengthError;
-        if (step.depletion)
-        {
-            os  << tab << step.removal.demanded
-                << tab << step.removal.removed
-                << tab << step.removal.airborne
-                << tab << step.cloudMass.sprayed
-                << tab << step.cloudMass.evaporated
-                << tab << step.cloudMass.escaped;
-            for (const scalar captured : step.capturedSpecies)
-            {
-                os  << tab << captured;
-            }
-        }
-        if (step.laying)
-        {
-            os  << tab << step.laidGlass << tab << step.laidBinder;
-        }
-        os  << tab << step.depositionTime
-            << tab << step.collisionTime
-            << tab << step.fiberTime
-            << endl;
+        os  << endl;
     }
 }
 

@@ -95,9 +95,14 @@ Foam::fileName Foam::dropletFiber::couplingRestart::statePath
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::dropletFiber::couplingRestart::read(const dictionary& dict)
+void Foam::dropletFiber::couplingRestart::read
+(
+    const dictionary& dict,
+    const dictionary& fibersDict
+)
 {
     dict_ = dict;
+    fibers_ = fibersDict;
     // Used at the start only: fresh ignores the restart state
     fresh_ =
         getChoice(dict, "restart", "continue", {"continue", "fresh"})
@@ -172,7 +177,7 @@ void Foam::dropletFiber::couplingRestart::writeState
     }
     state.add("totals", inOrder(totals, totalsOrder));
     // The dictionary's geometry, for a restart to say what its own changes
-    state.add("sources", restartSources(dict_.subOrEmptyDict("fibers"), grid));
+    state.add("sources", restartSources(fibers_, grid));
     IOstream::defaultPrecision(oldPrecision);
     writeStateDictionary
     (
@@ -180,6 +185,19 @@ void Foam::dropletFiber::couplingRestart::writeState
         "dropletFiber restart state of function object " + name()
       + " at time " + time_.timeName()
     );
+}
+
+
+//- The function object's entries the restart reads
+static const Foam::wordList restartKeys
+{
+    "restart"
+};
+
+
+Foam::wordList Foam::dropletFiber::couplingRestart::entries()
+{
+    return restartKeys;
 }
 
 

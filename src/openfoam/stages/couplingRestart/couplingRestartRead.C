@@ -212,7 +212,7 @@ bool Foam::dropletFiber::couplingRestart::readState
         dropletFiber::warnSourcesDiffer
         (
             type() + " '" + name() + "'", state.subDict("sources"), path,
-            dict_.subOrEmptyDict("fibers"), grid
+            fibers_, grid
         );
     }
 

@@ -238,7 +238,7 @@ void Foam::dropletFiber::fiberCapture::read
 }
 
 
-Foam::scalar Foam::dropletFiber::fiberCapture::countCaptured
+void Foam::dropletFiber::fiberCapture::countCaptured
 (
     const heldFibers& held,
     const ::dropletFiber::CaptureSources& capture
@@ -255,6 +255,7 @@ Foam::scalar Foam::dropletFiber::fiberCapture::countCaptured
         }
     }
     const scalar capturedStep = returnReduce(m, sumOp<scalar>());
+    capturedStep_ = capturedStep;
     captured_ += capturedStep;
     if (depletion_)
     {
@@ -265,7 +266,30 @@ Foam::scalar Foam::dropletFiber::fiberCapture::countCaptured
         ++depletionSteps_;
         limitedSteps_ += step_.nodesLimited > 0 ? 1 : 0;
     }
-    return capturedStep;
+}
+
+
+Foam::wordList Foam::dropletFiber::fiberCapture::stepColumns() const
+{
+    wordList columns{"capturedStep", "capturedTotal"};
+    if (depletion_)
+    {
+        columns.append(wordList{"demandedStep", "removedStep", "airborneMass"});
+    }
+    return columns;
+}
+
+
+void Foam::dropletFiber::fiberCapture::addStepFigures(stepFigures& step) const
+{
+    step.add("capturedStep", capturedStep_);
+    step.add("capturedTotal", captured_);
+    if (depletion_)
+    {
+        step.add("demandedStep", step_.demanded);
+        step.add("removedStep", step_.removed);
+        step.add("airborneMass", step_.airborne);
+    }
 }
 
 
@@ -306,6 +330,19 @@ void Foam::dropletFiber::fiberCapture::readState
         state.subDict("totals"), "captured", nullptr,
         [](scalar v) { return v >= 0; }, ">= 0"
     );
+}
+
+
+//- The function object's entries the capture reads (collision's own: collisionSettings.C)
+static const Foam::wordList captureKeys
+{
+    "collision"
+};
+
+
+Foam::wordList Foam::dropletFiber::fiberCapture::entries()
+{
+    return captureKeys;
 }
 
 

@@ -71,7 +71,7 @@ Foam::dropletFiber::fiberCapture::limitCapture
         (
             points, shares, held.weighted ? &interceptors : nullptr,
             stripsAcrossFlow(held, fields, samplesPerSegment), parcels, dt,
-            captureLimit_, report, capturedFraction_, statistics
+            report, capturedFraction_, statistics
         );
     step_ = depletionSummary();
     step_.demanded = demanded;

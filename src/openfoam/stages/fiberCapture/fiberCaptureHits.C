@@ -87,7 +87,7 @@ void Foam::dropletFiber::fiberCapture::countHits
         capturedFraction_ =
             grid.realiseCapture
             (
-                captureLimit_, parcels, ratios, cut, fellShort, statistics
+                parcels, ratios, cut, fellShort, statistics
             );
     }
     if (discrete)

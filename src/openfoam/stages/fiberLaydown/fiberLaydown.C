@@ -231,13 +231,12 @@ Foam::dropletFiber::fiberLaydown::fiberLaydown
 
 void Foam::dropletFiber::fiberLaydown::read
 (
-    const dictionary& dict,
-    const bool running
+    const dictionary& fibersDict,
+    const bool running,
+    const label tablePrecision
 )
 {
-    writePrecision_ = dict.lookupOrDefault<label>("writePrecision", 10);
-    // A copy (subOrEmptyDict returns one), alive while ld points into it
-    const dictionary fibersDict = dict.subOrEmptyDict("fibers");
+    writePrecision_ = tablePrecision;
     const dictionary* ld = fibersDict.findDict("laydown");
     if (running)
     {
@@ -252,7 +251,7 @@ void Foam::dropletFiber::fiberLaydown::read
         }
         if ((ld != nullptr) != on_ || was.str() != now.str())
         {
-            FatalIOErrorInFunction(dict)
+            FatalIOErrorInFunction(fibersDict)
                 << "Entry 'fibers.laydown' was edited during the run: the mat"
                 << " laid so far is on the belt in force." << nl
                 << "    Start a new run for it; the results written so far"
@@ -313,27 +312,27 @@ void Foam::dropletFiber::fiberLaydown::read
 }
 
 
-void Foam::dropletFiber::fiberLaydown::layDown(heldFibers& held)
+Foam::labelList Foam::dropletFiber::fiberLaydown::layDown
+(
+    const heldFibers& held
+)
 {
     if (!on_)
     {
-        return;
+        return labelList();
     }
     std::vector<::dropletFiber::LaidFiber> here;
+    DynamicList<label> reached;
     const scalar t = time_.value();
-    held.keepIf
-    (
-        [&](std::size_t f)
+    for (std::size_t f = 0; f < held.fibers.size(); ++f)
+    {
+        const ::dropletFiber::Fiber& fiber = held.fibers[f];
+        if (::dropletFiber::reachesBelt(fiber, belt_))
         {
-            const ::dropletFiber::Fiber& fiber = held.fibers[f];
-            if (!::dropletFiber::reachesBelt(fiber, belt_))
-            {
-                return true;
-            }
             here.push_back(::dropletFiber::layFiber(fiber, belt_, t, held.id[f]));
-            return false;
+            reached.append(label(f));
         }
-    );
+    }
     const std::vector<::dropletFiber::LaidFiber> laid = gathered(here);
     for (const ::dropletFiber::LaidFiber& f : laid)
     {
@@ -352,6 +351,9 @@ void Foam::dropletFiber::fiberLaydown::layDown(heldFibers& held)
         totals_.footMax = max(totals_.footMax, foot);
     }
     writeRows(laid);
+    labelList laidHere;
+    laidHere.transfer(reached);
+    return laidHere;
 }
 
 
@@ -368,6 +370,19 @@ void Foam::dropletFiber::fiberLaydown::report(Ostream& os) const
         << toFoam(belt_.velocity) << " m/s, across "
         << map_->acrossMin() << " to " << map_->acrossMax() << " m, map cells "
         << map_->cell() << " m" << nl;
+}
+
+
+//- The entries of fibers the belt reads (laydown's own: laydownKeys)
+static const Foam::wordList beltKeys
+{
+    "laydown"
+};
+
+
+Foam::wordList Foam::dropletFiber::fiberLaydown::fibersEntries()
+{
+    return beltKeys;
 }
 
 

@@ -128,15 +128,7 @@ void Foam::dropletFiber::fiberLaydown::writeMapVtk() const
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::dropletFiber::fiberLaydown::reportAtWrite
-(
-    const scalar glassInAir,
-    const scalar binderInAir,
-    const scalar glassInjected,
-    const scalar massLost,
-    const scalar binderLost,
-    const scalar captured
-)
+void Foam::dropletFiber::fiberLaydown::reportAtWrite()
 {
     if (!on_)
     {
@@ -173,15 +165,6 @@ void Foam::dropletFiber::fiberLaydown::reportAtWrite
         Info<< "    mat: no complete row yet (the belt has not carried a row"
             << " across the whole laying zone)" << nl;
     }
-    const scalar glassLost = massLost - binderLost;
-    Info<< "    glass: injected " << glassInjected << " kg = in the air "
-        << glassInAir << " + laid " << t.glass << " + lost " << glassLost
-        << " (balance " << glassInjected - glassInAir - t.glass - glassLost
-        << " kg)" << nl
-        << "    binder: captured " << captured << " kg = on airborne fibers "
-        << binderInAir << " + laid " << t.binder << " + on lost fibers "
-        << binderLost << " (balance "
-        << captured - binderInAir - t.binder - binderLost << " kg)" << nl;
 }
 
 

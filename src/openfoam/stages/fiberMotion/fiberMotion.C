@@ -13,6 +13,7 @@ Description
 #include "Pstream.H"
 #include "PstreamReduceOps.H"
 #include "OStringStream.H"
+#include "plausibility.H"
 
 #include <exception>
 #include <string>
@@ -273,14 +274,24 @@ Foam::dropletFiber::fiberMotion::fiberMotion
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::dropletFiber::fiberMotion::read(const dictionary& dict)
+void Foam::dropletFiber::fiberMotion::read
+(
+    const dictionary& airDict,
+    const dictionary& fibersDict,
+    const bool running
+)
 {
-    air_.reset(new airSampler(mesh_, dict.subOrEmptyDict("air")));
-    immobileAir_.reset(new airSampler(mesh_, dict.subOrEmptyDict("air")));
-    solverSettings_ =
-        readFiberSolverSettings(dict.subOrEmptyDict("fibers"), time_);
+    air_.reset(new airSampler(mesh_, airDict));
+    immobileAir_.reset(new airSampler(mesh_, airDict));
+    solverSettings_ = readFiberSolverSettings(fibersDict, time_);
     solver_.reset(new ::dropletFiber::FiberSolver(solverSettings_));
-    turbulence_ = readFiberTurbulence(dict.subOrEmptyDict("fibers"), mesh_);
+    turbulence_ = readFiberTurbulence(fibersDict, mesh_);
+    if (!running)
+    {
+        // Unit slips run, warned once at the start
+        warnImplausibleFibers(fibersDict);
+        warnImplausibleAir(airDict);
+    }
 }
 
 
@@ -294,7 +305,7 @@ void Foam::dropletFiber::fiberMotion::read(const dictionary& dict)
     airReaction& reaction
 )
 {
-    return coreCall
+    lastStep_ = coreCall
     (
         "advancing the fibers",
         [&]()
@@ -303,6 +314,14 @@ void Foam::dropletFiber::fiberMotion::read(const dictionary& dict)
                 advanceFibers(held, boxes, dt, capture, statistics, reaction);
         }
     );
+    return lastStep_;
+}
+
+
+void Foam::dropletFiber::fiberMotion::addStepFigures(stepFigures& step) const
+{
+    step.add("maxSegmentLengthError", lastStep_.maxSegmentLengthError);
+    step.addCount("subSteps", lastStep_.subSteps);
 }
 
 
@@ -326,6 +345,19 @@ void Foam::dropletFiber::fiberMotion::report
         << ", theta " << s.theta << ", injectors " << injectors
         << ", fibers now " << fibers << nl;
     reportTurbulence(os);
+}
+
+
+//- The function object's entries the motion reads (their own: airSampler.C, fiberSettings.C)
+static const Foam::wordList motionKeys
+{
+    "air", "fibers"
+};
+
+
+Foam::wordList Foam::dropletFiber::fiberMotion::entries()
+{
+    return motionKeys;
 }
 
 

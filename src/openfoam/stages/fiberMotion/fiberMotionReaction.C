@@ -4,39 +4,17 @@
 Description
     The step's drag handed to the air (docs/model.md sec. 10): each point's
     drag impulse over the step, times the physical fibers its fiber stands
-    for, over the step, with the opposite sign into the cell its air was
-    sampled in. The moving fibers' drag is the solver's (its accepted
-    sub-steps at their converged iterates); the immobile fibers' is the drag
-    law's at their air, sampled for it when coupled.
+    for, over the step, handed to the air reaction (airReaction::addDrag:
+    with the opposite sign into the cell its air was sampled in). The moving
+    fibers' drag is the solver's (its accepted sub-steps at their converged
+    iterates); the immobile fibers' is the drag law's at their air, sampled
+    for it when coupled.
 \*---------------------------------------------------------------------------*/
 
 #include "fiberMotion.H"
 #include "PstreamReduceOps.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
-
-void Foam::dropletFiber::fiberMotion::handToCells
-(
-    const airSampler& sampler,
-    const Eigen::Matrix3Xd& force,
-    const Eigen::VectorXd& coefficient,
-    airReaction& reaction,
-    parallelStatistics& statistics
-)
-{
-    vector outsideOnAir(Zero);
-    sampler.spreadToCells
-    (
-        -force, coefficient, reaction.cellForce(), reaction.cellCoefficient(),
-        outsideOnAir, statistics
-    );
-    const Eigen::Vector3d total = force.rowwise().sum();
-    reaction.addFiberDrag
-    (
-        vector(total.x(), total.y(), total.z()), -outsideOnAir
-    );
-}
-
 
 void Foam::dropletFiber::fiberMotion::handMovingDrag
 (
@@ -67,7 +45,7 @@ void Foam::dropletFiber::fiberMotion::handMovingDrag
             coefficient.segment(layout.firstPoint[f], n) *= fiber.represents();
         }
     }
-    handToCells(*air_, force, coefficient, reaction, statistics);
+    reaction.addDrag(*air_, force, coefficient, statistics);
 }
 
 
@@ -123,9 +101,9 @@ void Foam::dropletFiber::fiberMotion::handImmobileDrag
             first += fiber.pointCount();
         }
     }
-    handToCells
+    reaction.addDrag
     (
-        *immobileAir_, drag.impulse, drag.coefficientTime, reaction, statistics
+        *immobileAir_, drag.impulse, drag.coefficientTime, statistics
     );
 }
 

@@ -7,6 +7,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "fiberPopulation.H"
+#include "fiberMotion.H"
 #include "dictionaryChecks.H"
 #include "PstreamReduceOps.H"
 #include "OStringStream.H"
@@ -150,6 +151,122 @@ void Foam::dropletFiber::fiberPopulation::removeLostFibers()
 }
 
 
+::dropletFiber::StepReport Foam::dropletFiber::fiberPopulation::advance
+(
+    fiberMotion& motion,
+    const scalar dt,
+    ::dropletFiber::CaptureSources& capture,
+    parallelStatistics& statistics,
+    airReaction& reaction
+)
+{
+    return motion.advance(held_, *boxes_, dt, capture, statistics, reaction);
+}
+
+
+void Foam::dropletFiber::fiberPopulation::removeLaid(const labelList& laid)
+{
+    // The totals go on from the master's, the others' added to it, as the
+    // fibers lost (removeLostFibers)
+    scalar glass = Pstream::master() ? totals_.glassLaid : 0;
+    scalar binder = Pstream::master() ? totals_.binderLaid : 0;
+    label taken = 0;
+    if (!laid.empty())
+    {
+        held_.keepIf
+        (
+            [&](std::size_t f)
+            {
+                if (taken < laid.size() && laid[taken] == label(f))
+                {
+                    const ::dropletFiber::Fiber& fiber = held_.fibers[f];
+                    const scalar n = fiber.represents();
+                    const scalar b = fiber.totalCapturedMass();
+                    glass += n*(fiber.totalMass() - b);
+                    binder += n*b;
+                    ++taken;
+                    return false;
+                }
+                return true;
+            }
+        );
+    }
+    totals_.glassLaid = returnReduce(glass, sumOp<scalar>());
+    totals_.binderLaid = returnReduce(binder, sumOp<scalar>());
+    totals_.laid += returnReduce(taken, sumOp<label>());
+}
+
+
+Foam::wordList Foam::dropletFiber::fiberPopulation::stepColumns() const
+{
+    wordList columns{"fibers", "fiberMass"};
+    if (weighted())
+    {
+        columns.append("fibersRepresented");
+    }
+    return columns;
+}
+
+
+void Foam::dropletFiber::fiberPopulation::addStepFigures
+(
+    stepFigures& step
+) const
+{
+    step.addCount("fibers", count());
+    if (weighted())
+    {
+        step.add("fibersRepresented", represented());
+    }
+    step.add("fiberMass", mass());
+}
+
+
+void Foam::dropletFiber::fiberPopulation::reportConservation
+(
+    const scalar captured
+) const
+{
+    const scalar fiberMass = mass();
+    const fiberTotals& t = totals_;
+    const scalar laid = t.glassLaid + t.binderLaid;
+    Info<< "    fiber mass " << fiberMass << " kg = added " << t.massAdded
+        << " + captured " << captured << " - removed " << t.massRemoved;
+    if (t.countBinderRemoved)
+    {
+        Info<< " - laid " << laid;
+    }
+    Info<< " (balance "
+        << t.massAdded + captured - t.massRemoved - laid - fiberMass
+        << " kg)" << endl;
+}
+
+
+void Foam::dropletFiber::fiberPopulation::reportBalanceAtWrite
+(
+    const scalar captured
+) const
+{
+    if (!totals_.countBinderRemoved)
+    {
+        return;
+    }
+    const scalar binderInAir = binderSums().values[2];
+    const scalar glassInAir = mass() - binderInAir;
+    const scalar glassLost = totals_.massRemoved - totals_.binderRemoved;
+    const fiberTotals& t = totals_;
+    Info<< "    glass: injected " << t.massAdded << " kg = in the air "
+        << glassInAir << " + laid " << t.glassLaid << " + lost " << glassLost
+        << " (balance "
+        << t.massAdded - glassInAir - t.glassLaid - glassLost << " kg)" << nl
+        << "    binder: captured " << captured << " kg = on airborne fibers "
+        << binderInAir << " + laid " << t.binderLaid << " + on lost fibers "
+        << t.binderRemoved << " (balance "
+        << captured - binderInAir - t.binderLaid - t.binderRemoved << " kg)"
+        << nl;
+}
+
+
 Foam::boolList Foam::dropletFiber::fiberPopulation::insideMesh
 (
     const List<point>& points
@@ -249,11 +366,11 @@ void Foam::dropletFiber::fiberPopulation::warnPlacedOutside
 
 void Foam::dropletFiber::fiberPopulation::read
 (
-    const dictionary& dict,
+    const dictionary& fibersDict,
     const bool running
 )
 {
-    const dictionary& fibersDict = dict.subOrEmptyDict("fibers");
+    checkFiberSourceKeys(fibersDict);
     holders_ =
         fiberOwnership::holderRuleFromName
         (
@@ -511,6 +628,19 @@ Foam::dropletFiber::fiberPopulation::dispersionSums() const
     }
     Pstream::listCombineGather(sums, plusEqOp<scalar>());
     return sums;
+}
+
+
+//- The entries of fibers the population reads (an injector's and a fixed fiber's own: fiberSettings.C)
+static const Foam::wordList fiberSourceKeys
+{
+    "injectors", "fixed", "holders"
+};
+
+
+Foam::wordList Foam::dropletFiber::fiberPopulation::fibersEntries()
+{
+    return fiberSourceKeys;
 }
 
 

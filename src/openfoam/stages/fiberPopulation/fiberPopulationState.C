@@ -171,6 +171,9 @@ void Foam::dropletFiber::fiberPopulation::writeState
     if (totals_.countBinderRemoved)
     {
         totals.add("fiberBinderRemoved", totals_.binderRemoved);
+        totals.add("fibersLaid", totals_.laid);
+        totals.add("fiberGlassLaid", totals_.glassLaid);
+        totals.add("fiberBinderLaid", totals_.binderLaid);
     }
 }
 
@@ -205,6 +208,43 @@ void Foam::dropletFiber::fiberPopulation::readState
     // then unknown and taken as 0 (the binder balance says so)
     totals_.binderRemoved =
         totals.found("fiberBinderRemoved") ? nonNegative("fiberBinderRemoved") : 0;
+    restoreLaidTotals(state, totals, path);
+}
+
+
+void Foam::dropletFiber::fiberPopulation::restoreLaidTotals
+(
+    const dictionary& state,
+    const dictionary& totals,
+    const fileName& path
+)
+{
+    const auto nonNegative = [](const dictionary& d, const word& key)
+    {
+        return getCheckedScalar
+        (
+            d, key, nullptr, [](scalar v) { return v >= 0; }, ">= 0"
+        );
+    };
+    if (totals.found("fibersLaid"))
+    {
+        totals_.laid = requiredCount(totals, "fibersLaid");
+        totals_.glassLaid = nonNegative(totals, "fiberGlassLaid");
+        totals_.binderLaid = nonNegative(totals, "fiberBinderLaid");
+        return;
+    }
+    // A state written before the population counted the fibers the belt
+    // took has them only in the mat's totals: the same sums
+    const dictionary* mat = state.findDict("laydown");
+    if (mat)
+    {
+        totals_.laid = requiredCount(*mat, "computed");
+        totals_.glassLaid = nonNegative(*mat, "glass");
+        totals_.binderLaid = nonNegative(*mat, "binder");
+        Info<< type() << " " << name() << ": the restart state " << path
+            << " has the fibers laid in the mat's totals only: taken from"
+            << " there" << nl;
+    }
 }
 
 

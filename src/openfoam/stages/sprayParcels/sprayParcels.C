@@ -179,7 +179,7 @@ Foam::wordList Foam::dropletFiber::sprayParcels::selectClouds() const
 
 
 const std::vector<::dropletFiber::Parcel>&
-Foam::dropletFiber::sprayParcels::gather(label& parcels, scalar& droplets)
+Foam::dropletFiber::sprayParcels::gather()
 {
     parcels_.clear();
     stepClouds_.clear();
@@ -193,8 +193,8 @@ Foam::dropletFiber::sprayParcels::gather(label& parcels, scalar& droplets)
         parcels_.append(c, dict_, gatherWriteObjects_);
     }
     warnImplausibleDroplets();
-    parcels = returnReduce(parcels_.size(), sumOp<label>());
-    droplets = returnReduce(parcels_.nDroplets(), sumOp<scalar>());
+    parcelsAll_ = returnReduce(parcels_.size(), sumOp<label>());
+    dropletsAll_ = returnReduce(parcels_.nDroplets(), sumOp<scalar>());
 
     // As the grid takes them (the same values)
     stepParcels_.clear();
@@ -208,6 +208,40 @@ Foam::dropletFiber::sprayParcels::gather(label& parcels, scalar& droplets)
         p.rhoDroplet = parcels_.rho[i];
     }
     return stepParcels_;
+}
+
+
+Foam::wordList Foam::dropletFiber::sprayParcels::stepColumns() const
+{
+    wordList columns{"parcels", "droplets"};
+    if (depletion_)
+    {
+        columns.append(wordList{"sprayedMass", "evaporatedMass", "escapedMass"});
+        for (const word& species : liquidSpecies_)
+        {
+            columns.append("captured_" + species);
+        }
+    }
+    return columns;
+}
+
+
+void Foam::dropletFiber::sprayParcels::addStepFigures(stepFigures& step)
+{
+    step.addCount("parcels", parcelsAll_);
+    step.add("droplets", dropletsAll_);
+    if (!depletion_)
+    {
+        return;
+    }
+    const cloudParcels::massReport& m = readCloudMassReport();
+    step.add("sprayedMass", m.sprayed);
+    step.add("evaporatedMass", m.evaporated);
+    step.add("escapedMass", m.escaped);
+    forAll(liquidSpecies_, i)
+    {
+        step.add("captured_" + liquidSpecies_[i], capturedSpecies_[i]);
+    }
 }
 
 
@@ -230,6 +264,19 @@ void Foam::dropletFiber::sprayParcels::report(Ostream& os) const
                " spray clouds; others through cloud::writeObjects; each cloud's"
                " route is logged when first read)"
            ) << nl;
+}
+
+
+//- The function object's entries the spray reads
+static const Foam::wordList sprayKeys
+{
+    "clouds", "gather"
+};
+
+
+Foam::wordList Foam::dropletFiber::sprayParcels::entries()
+{
+    return sprayKeys;
 }
 
 
