@@ -23,10 +23,7 @@ here="$(cd "${0%/*}" && pwd)"
 . "$here/lib/restartAgainst.sh"
 restart=0.03125; last=0.15625
 
-rm -rf "$work"; mkdir -p "$work"
-work="$(cd "$work" && pwd)"; full="$(cd "$full" && pwd)"
-cp -r "$caseDir" "$work/split"
-cd "$work/split"
+splitCopy
 setEnd "$restart"
 ./Allrun "${args[@]}" > /dev/null
 checkRanClean "$work/split"

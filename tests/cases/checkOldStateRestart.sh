@@ -17,14 +17,12 @@
 set -euo pipefail
 here="$(cd "${0%/*}" && pwd)"
 archive="$(cd "$(dirname "$4")" && pwd)/$(basename "$4")"
+set -- "$1" "$2" "$3" serial
 # shellcheck disable=SC1091
 . "$here/lib/restartAgainst.sh"
 restart=0.25; last=0.5
 
-rm -rf "$work"; mkdir -p "$work"
-work="$(cd "$work" && pwd)"; full="$(cd "$full" && pwd)"
-cp -r "$caseDir" "$work/split"
-cd "$work/split"
+splitCopy
 rm -rf 0 && cp -r 0.orig 0
 blockMesh > log.blockMesh 2>&1 || { tail -20 log.blockMesh; die "blockMesh failed"; }
 tar xJf "$archive"
