@@ -35,7 +35,7 @@ READERS = (
     "src/openfoam/settings/collisionSettings.C",
     "src/openfoam/settings/fiberSettings.C",
     "src/openfoam/settings/turbulenceSettings.C",
-    "src/openfoam/airSampler/airSampler.C",
+    "src/openfoam/airSampler/airSamplerSettings.C",
     "src/openfoam/dropletFiberCollision/dropletFiberCollision.C",
     "src/openfoam/stages/sprayParcels/sprayParcels.C",
     "src/openfoam/stages/couplingGrid/couplingGrid.C",

@@ -26,7 +26,7 @@
 // needed the Jacobian (so the converged iterate costs no Jacobian). The Jacobian's
 // constant part (mass and the linear bending force, plus the rows of held points) is
 // built once per sub-step and copied; each iteration adds drag and tension to it,
-// written straight into the band. All work storage
+// written straight into the band (ImplicitFiberStepJacobian.cpp). All work storage
 // is kept in the object (Eigen work arrays are resized only when the point count
 // changes from one fiber to the next; the band storage only grows).
 #pragma once
@@ -37,6 +37,7 @@
 #include "fiber/Fiber.hpp"
 #include "fiber/FiberSolverSettings.hpp"
 
+#include <algorithm>
 #include <vector>
 
 namespace dropletFiber
@@ -135,6 +136,18 @@ private:
     void addDragTangentJacobian(Eigen::Index i);
     void addTensionJacobian();
     bool held(Eigen::Index i) const { return held_[static_cast<std::size_t>(i)] != 0; }
+
+    // The system's order per point [y_i (3), lambda_i]: the row of point i's first
+    // coordinate, the row of segment j's constraint (its tension), the band's half-width.
+    static constexpr Eigen::Index bandwidth = 10; // bending couples points i and i+2: 4*2 + 2
+    static Eigen::Index pointRow(Eigen::Index i) { return 4 * i; }
+    static Eigen::Index tensionRow(Eigen::Index j) { return 4 * j + 3; }
+    // Nodal tangent for the drag: neighbours' chord (one-sided at the ends).
+    static void tangentStencil(Eigen::Index i, Eigen::Index n, Eigen::Index& hi, Eigen::Index& lo)
+    {
+        hi = std::min(i + 1, n - 1);
+        lo = std::max(i - 1, Eigen::Index(0));
+    }
 
     // The sub-step being solved.
     Eigen::Index n_ = 0;
