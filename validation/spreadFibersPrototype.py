@@ -196,7 +196,7 @@ def level_of(fibers, k, dx):
     return levels
 
 
-def column_depths(fibers, weight, dx, method, k, fiber_levels=None, bandwidths=None):
+def column_depths(fibers, weight, dx, method, fiber_levels=None, bandwidths=None):
     """D_i = m sum_j x_ij over the lattice columns (x periodic, W / dx nodes)."""
     n_x = int(round(WIDTH / dx))
     n_z = int(round(Z_BOX / dx)) + 1
@@ -245,21 +245,16 @@ def balance_check(fibers, weight, dx, k, rng):
     volume = dx * dx
     strip = C_STRIP * dx / STEPS_PER_SPACING      # c |v_rel| dt per unit depth
     parts = []                                    # (node, demand d_sn, interceptors)
-    samples = []                                  # each sample's parts' indices
     for idx, (x, z) in enumerate(fibers):
-        mine = []
         for i, vx in hat_weights(x, dx, n_x, True).items():
             for j, vz in hat_weights(z, dx, n_z, False).items():
-                mine.append(len(parts))
                 parts.append(((i, j), strip * vx * vz, 1.0))   # d = m_s w_c rho_c, rho = 1
         if weight > 1.0:
             wx = level_weights(x, dx * RATIOS[levels[idx]], dx, n_x)
             wz = level_weights_z(z, dx * RATIOS[levels[idx]], dx, n_z)
             for i, vx in wx.items():
                 for j, vz in wz.items():
-                    mine.append(len(parts))
                     parts.append(((i, j), strip * vx * vz, weight - 1.0))
-        samples.append(mine)
     demand, depth = {}, {}
     for node, d, count in parts:
         demand[node] = demand.get(node, 0.0) + count * d
@@ -330,7 +325,7 @@ def main():
                             level_mean += sum(RATIOS[v] for v in lv) / len(lv) / len(mats)
                         if h and method == "gauss":
                             h_mean += sum(h) / len(h) / dx / len(mats)
-                        depth = column_depths(mat, weight, dx, method, args.k, lv, h)
+                        depth = column_depths(mat, weight, dx, method, lv, h)
                         ratios.append(penetration(depth, dx) / math.exp(-depth_s))
                     row[method] = ratios
                 cells = [f"{sum(r) / len(r):.3f} ({min(r):.3f}..{max(r):.3f})" for r in row.values()]
