@@ -11,6 +11,7 @@ Description
 #include "plausibility.H"
 #include "fiberStateIO.H"
 #include "OStringStream.H"
+#include "volFields.H"
 #include "PstreamReduceOps.H"
 
 #include <algorithm>
@@ -331,12 +332,14 @@ void Foam::dropletFiber::fiberLaydown::checkBeltGeometry
 {
     // The air is the mesh: its volume's centre must lie on the side the
     // normal points away from, else every fiber is laid when born
+    const scalarField& V = mesh_.V().field();
+    const vectorField& C = mesh_.C().primitiveField();
     vector moment(Zero);
     scalar volume = 0;
-    forAll(mesh_.V(), i)
+    forAll(V, i)
     {
-        moment += mesh_.V()[i]*mesh_.C()[i];
-        volume += mesh_.V()[i];
+        moment += V[i]*C[i];
+        volume += V[i];
     }
     reduce(moment, sumOp<vector>());
     reduce(volume, sumOp<scalar>());
