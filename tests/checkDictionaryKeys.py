@@ -48,7 +48,7 @@ READERS = (
 )
 CHECKED_READ = re.compile(
     r"\b(?:getPositive|getNonNegative|getCheckedScalar|getLabelInRange|getSwitch"
-    r"|getChoice|readSource)\s*\(\s*[\w.>-]+\s*,\s*\"(\w+)\""
+    r"|getChoice|readSource|optionalSubDict|findSubDict)\s*\(\s*[\w.>-]+\s*,\s*\"(\w+)\""
 )
 LOOKUP = re.compile(
     r"\w\.(?:lookupOrDefault|get|found|findDict|subOrEmptyDict|subDict|findEntry|lookup)"

@@ -226,9 +226,9 @@ expectStopAtEdit "{ depletion false; }" \
 # fibers.laydown is read at the start only (the mat laid so far is on the belt in
 # force): its cell edited at time 0.01 stops the run there, naming it
 cp system/controlDict.start system/controlDict
-foamDictionary system/controlDict -entry "$fo/fibers/laydown" -set "{ patch outlet; cell 0.01; }" > /dev/null
+foamDictionary system/controlDict -entry "$fo/fibers/laydown" -set "{ patch outlet; cell 0.002; }" > /dev/null
 cp system/controlDict system/controlDict.laydownStart
-foamDictionary system/controlDict -entry "$fo/fibers/laydown/cell" -set 0.02 > /dev/null
+foamDictionary system/controlDict -entry "$fo/fibers/laydown/cell" -set 0.004 > /dev/null
 cp system/controlDict system/controlDict.typo
 cp system/controlDict.laydownStart system/controlDict
 touch -d "1 hour ago" system/controlDict

@@ -64,6 +64,26 @@ expectError "{ $belt }" "Entry 'laydown' needs the belt as 'patch', or as 'point
 expectError "{ patch bottom; $belt speed 0.256; }" \
     "Entry 'speed' in dictionary '[^']*laydown' is not known: allowed are patch, point, normal, width, velocity, cell"
 expectError "{ point (0.1 0 0.05); normal (0 0 0); width 0.1; $belt }" "Entry 'normal' is \(0 0 0\)"
+expectError "{ point (0.1 0 0.05); normal (0 1 0); width 0.1; $belt }" \
+    "Entry 'normal' \(0 1 0\): the belt's normal points into the air"
+expectError "{ point (0.1 0 0.05); normal (0 -1 0); width 0.1; velocity (0.256 0 0); cell 0.1; }" \
+    "Entry 'cell' is 0.1 m, not smaller than the belt's width 0.1 m"
+
+# expectWarning LAYDOWN PATTERN: runs a few steps with a warning matching PATTERN
+expectWarning() {
+    local laydown="$1" pattern="$2" status=0
+    setLaydown "$laydown"
+    sed -i "s/^endTime .*/endTime         0.00390625;/" system/controlDict
+    rm -rf postProcessing
+    timeout 60 pimpleFoam > log.warn 2>&1 || status=$?
+    foamListTimes -rm > /dev/null 2>&1
+    check "[ $status -eq 0 ] && grep -q -E -- \"$pattern\" log.warn" \
+        "laydown $laydown: no warning '$pattern' (exit $status)"
+}
+expectWarning "{ point (0.1 -1 0.05); normal (0 -1 0); width 0.1; $belt }" \
+    "the belt's plane through \(0.1 -1 0.05\) lies 1 m beyond the mesh's bounds: no fiber reaches it"
+expectWarning "{ patch bottom; velocity (30 0 0); cell 0.01; }" \
+    "Entry 'velocity': the belt's speed is 30 m/s: plausible are 0.001 to 10 m/s; a speed in m/min given in m/s"
 
 # The same belt as a plane: the hand's fibers and mat (the stopped runs' tables removed)
 rm -rf postProcessing

@@ -30,3 +30,9 @@ add_test(NAME case.fiberCurtain.restart.parallel
     ${RUN}/fiberCurtain.parallel ${RUN}/fiberCurtain.restart.parallel parallel)
 set_tests_properties(case.fiberCurtain.restart.parallel PROPERTIES LABELS "case" TIMEOUT 180
   PROCESSORS 2 FIXTURES_REQUIRED fiberCurtain.parallel)
+
+# coupled true without an active fvOption fiberDragSource (switched off, or no
+# fvOptions): warned at the start and again at the end that the air feels nothing
+add_test(NAME case.fiberCurtain.coupledWithoutSource
+  COMMAND ${CASES}/checkCoupledWithoutSource.sh ${CASES}/fiberCurtain ${RUN}/coupledWithoutSource)
+set_tests_properties(case.fiberCurtain.coupledWithoutSource PROPERTIES LABELS "case" TIMEOUT 300)

@@ -113,6 +113,7 @@ Foam::functionObjects::dropletFiberCollision::dropletFiberCollision
     output_.startVtk(dict);
     restart_.startMarker([this]() { return lastTimeIndex_; });
     reportSettings();
+    reaction_.warnIfAirFeelsNothing(false);
     output_.writeTableHeader(stepColumns());
 }
 
@@ -290,14 +291,14 @@ bool Foam::functionObjects::dropletFiberCollision::read(const dictionary& dict)
     // belt) stops the run. Each stage reads its own entries; fibers is
     // shared by the stages of the fibers
     const bool running = grid_.built();
-    const dictionary fibers(dict.subOrEmptyDict("fibers"));
+    const dictionary fibers(dropletFiber::optionalSubDict(dict, "fibers"));
     checkEntries(dict, fibers);
     fvMeshFunctionObject::read(dict);
     output_.read(dict);
     capture_.read(dict, running);
     spray_.read(dict, capture_.depletion());
     restart_.read(dict, fibers);
-    motion_.read(dict.subOrEmptyDict("air"), fibers, running);
+    motion_.read(dropletFiber::optionalSubDict(dict, "air"), fibers, running);
     reaction_.read(fibers, output_.tablePrecision());
     laydown_.read(fibers, running, output_.tablePrecision());
     if (laydown_.on())

@@ -117,4 +117,11 @@ bool Foam::functionObjects::dropletFiberCollision::write()
 }
 
 
+bool Foam::functionObjects::dropletFiberCollision::end()
+{
+    reaction_.warnIfAirFeelsNothing(true);
+    return true;
+}
+
+
 // ************************************************************************* //

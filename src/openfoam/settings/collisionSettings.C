@@ -81,8 +81,8 @@ const dictionary& radiusAverageDict
     const dictionary& dict
 )
 {
-    const dictionary collisionDict = dict.subOrEmptyDict("collision");
-    const dictionary gridDict = dict.subOrEmptyDict("grid");
+    const dictionary collisionDict = optionalSubDict(dict, "collision");
+    const dictionary gridDict = optionalSubDict(dict, "grid");
     checkKeys(collisionDict, collisionKeys);
     ::dropletFiber::CollisionOptions options;
     options.samples = readSamples(collisionDict);
@@ -114,7 +114,7 @@ bool Foam::dropletFiber::readDepletion(const dictionary& dict)
 {
     // true: the captured mass leaves the parcels (docs/model.md sec. 7);
     // false: the paper's behaviour, the spray unchanged by the fibers
-    const dictionary collisionDict = dict.subOrEmptyDict("collision");
+    const dictionary collisionDict = optionalSubDict(dict, "collision");
     checkKeys(collisionDict, collisionKeys);
     return getSwitch(collisionDict, "depletion", true);
 }

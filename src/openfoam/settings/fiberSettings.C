@@ -52,7 +52,8 @@ void checkEachKeys
     const wordList& allowed
 )
 {
-    const Foam::dictionary* listPtr = fibersDict.findDict(listName);
+    const Foam::dictionary* listPtr =
+        Foam::dropletFiber::findSubDict(fibersDict, listName);
     if (!listPtr)
     {
         return;
@@ -185,7 +186,7 @@ std::vector<::dropletFiber::FiberInjectorSpec>
 Foam::dropletFiber::readFiberInjectors(const dictionary& fibersDict)
 {
     std::vector<::dropletFiber::FiberInjectorSpec> specs;
-    const dictionary* injectorsPtr = fibersDict.findDict("injectors");
+    const dictionary* injectorsPtr = findSubDict(fibersDict, "injectors");
     if (!injectorsPtr)
     {
         return specs;
@@ -258,7 +259,7 @@ std::vector<Foam::dropletFiber::namedFiber>
 Foam::dropletFiber::readFixedFibers(const dictionary& fibersDict)
 {
     std::vector<namedFiber> fibers;
-    const dictionary* fixedPtr = fibersDict.findDict("fixed");
+    const dictionary* fixedPtr = findSubDict(fibersDict, "fixed");
     if (!fixedPtr)
     {
         return fibers;

@@ -39,6 +39,31 @@ Foam::dropletFiber::dropletDensityRange
     "a density in g/cm3 given in kg/m3? (1 g/cm3 is 1000 kg/m3)", ""
 };
 
+const Foam::dropletFiber::plausibleRange
+Foam::dropletFiber::representsRange
+{
+    1, 1e12, "fibers", "",
+    "a glass flow or a count per second given as the fibers one computed"
+    " fiber stands for? (a spinner makes 1e8 to 1e9 fibers a second, a run"
+    " computes hundreds: represents 1e6 to 1e7)"
+};
+
+const Foam::dropletFiber::plausibleRange
+Foam::dropletFiber::massFlowRateRange
+{
+    1e-6, 1, "kg/s", "a flow in g/h given in kg/s?",
+    "a spinner's kg/h given in kg/s? (a spinner's glass flow is a few hundred"
+    " kg/h: 300 kg/h is 0.083 kg/s)"
+};
+
+const Foam::dropletFiber::plausibleRange
+Foam::dropletFiber::beltSpeedRange
+{
+    1e-3, 10, "m/s", "a speed in m/h given in m/s?",
+    "a speed in m/min given in m/s? (a forming belt runs at 0.1 to 3 m/s;"
+    " 30 m/min is 0.5 m/s)"
+};
+
 
 // * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
 
@@ -154,6 +179,8 @@ void Foam::dropletFiber::warnImplausibleFibers(const dictionary& fibersDict)
             if (e.isDict())
             {
                 warnMaterial(e.dict());
+                warnEntry(e.dict(), "represents", representsRange);
+                warnEntry(e.dict(), "massFlowRate", massFlowRateRange);
             }
         }
     }

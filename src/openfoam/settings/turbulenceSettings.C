@@ -29,7 +29,7 @@ Foam::dropletFiber::fiberTurbulence Foam::dropletFiber::readFiberTurbulence
     const fvMesh& mesh
 )
 {
-    const dictionary& dict = fibersDict.subOrEmptyDict("turbulence");
+    const dictionary dict = optionalSubDict(fibersDict, "turbulence");
     checkKeys(dict, turbulenceKeys);
     const word kind = turbulenceKind(mesh);
     const bool caseTurbulent = kind == "RAS" || kind == "LES";

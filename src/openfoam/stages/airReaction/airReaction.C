@@ -287,6 +287,33 @@ void Foam::dropletFiber::airReaction::finishStep
 }
 
 
+void Foam::dropletFiber::airReaction::warnIfAirFeelsNothing
+(
+    const bool atEnd
+) const
+{
+    if (!coupled_ || fvOptionListed(mesh_))
+    {
+        return;
+    }
+    WarningInFunction
+        << type() << " " << name() << ": fibers.coupled is true, but no"
+        << " active fvOption fiberDragSource is listed (constant/fvOptions or"
+        << " system/fvOptions): "
+        << (
+               atEnd
+             ? "the air felt nothing of the fibers' drag during this run (the"
+               " fields fiberDragForce and fiberDragCoeff were written, not"
+               " applied)."
+             : "the fields fiberDragForce and fiberDragCoeff are written, the"
+               " air feels nothing."
+           ) << nl
+        << "    List the fvOption (docs/reference.md, fvOption"
+        << " fiberDragSource) for two-way coupling, or set 'coupled false;'."
+        << endl;
+}
+
+
 void Foam::dropletFiber::airReaction::report(Ostream& os) const
 {
     os  << "    drag on the air: ";

@@ -139,7 +139,7 @@ void Foam::dropletFiber::couplingGrid::build
 )
 {
     settings_ = settings;
-    const dictionary& gridDict = dict.subOrEmptyDict("grid");
+    const dictionary& gridDict = optionalSubDict(dict, "grid");
     blocks_.reset
     (
         checkedCoreCall
@@ -187,7 +187,7 @@ void Foam::dropletFiber::couplingGrid::read
 )
 {
     readWindowOutput(dict);
-    const dictionary& gridDict = dict.subOrEmptyDict("grid");
+    const dictionary& gridDict = optionalSubDict(dict, "grid");
     const gridSettings grid = readGridSettings(gridDict, mesh_);
     if (running)
     {

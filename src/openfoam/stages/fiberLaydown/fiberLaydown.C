@@ -8,8 +8,10 @@ Description
 #include "fiberLaydown.H"
 #include "dictionaryChecks.H"
 #include "dictionaryKeys.H"
+#include "plausibility.H"
 #include "fiberStateIO.H"
 #include "OStringStream.H"
+#include "volFields.H"
 #include "PstreamReduceOps.H"
 
 #include <algorithm>
@@ -237,7 +239,7 @@ void Foam::dropletFiber::fiberLaydown::read
 )
 {
     writePrecision_ = tablePrecision;
-    const dictionary* ld = fibersDict.findDict("laydown");
+    const dictionary* ld = findSubDict(fibersDict, "laydown");
     if (running)
     {
         OStringStream was, now;
@@ -292,6 +294,14 @@ void Foam::dropletFiber::fiberLaydown::read
     {
         beltFromPatch(*ld, acrossMin, acrossMax);
     }
+    // A unit slip runs, warned once (a belt at rest is allowed)
+    const scalar speed = belt_.velocity.norm();
+    const string slip = implausible(speed, beltSpeedRange);
+    if (speed > 0 && !slip.empty())
+    {
+        IOWarningInFunction(*ld)
+            << "Entry 'velocity': the belt's speed " << slip.c_str() << endl;
+    }
     const scalar offPlane = mag(belt_.velocity.dot(belt_.normal));
     if (offPlane > 1e-9*max(1.0, belt_.velocity.norm()))
     {
@@ -301,6 +311,7 @@ void Foam::dropletFiber::fiberLaydown::read
             << toFoam(belt_.normal) << ") at " << offPlane << " m/s:"
             << " allowed are velocities in the plane." << exit(FatalIOError);
     }
+    checkBeltGeometry(*ld, cell, acrossMax - acrossMin);
     map_.reset(new ::dropletFiber::MatMap(cell, acrossMin, acrossMax));
     const fileName dir =
         baseFileDir()/name()/time_.timeName(time_.startTime().value());
@@ -308,6 +319,66 @@ void Foam::dropletFiber::fiberLaydown::read
     if (Pstream::master())
     {
         series_->load(time_.value() + 0.5*time_.deltaTValue());
+    }
+}
+
+
+void Foam::dropletFiber::fiberLaydown::checkBeltGeometry
+(
+    const dictionary& ld,
+    const scalar cell,
+    const scalar width
+) const
+{
+    // The air is the mesh: its volume's centre must lie on the side the
+    // normal points away from, else every fiber is laid when born
+    const scalarField& V = mesh_.V().field();
+    const vectorField& C = mesh_.C().primitiveField();
+    vector moment(Zero);
+    scalar volume = 0;
+    forAll(V, i)
+    {
+        moment += V[i]*C[i];
+        volume += V[i];
+    }
+    reduce(moment, sumOp<vector>());
+    reduce(volume, sumOp<scalar>());
+    const vector n = toFoam(belt_.normal);
+    const point p = toFoam(belt_.point);
+    const scalar airSide = ((moment/max(volume, VSMALL)) - p) & n;
+    if (airSide >= 0)
+    {
+        FatalIOErrorInFunction(ld)
+            << "Entry 'normal' " << n << ": the belt's normal points into"
+            << " the air (the mesh's centre lies " << airSide << " m on its"
+            << " side of the plane through " << p << "): every fiber would be"
+            << " laid the moment it is born." << nl
+            << "    Allowed: a normal pointing out of the air, through the"
+            << " belt (here " << -n << ")." << exit(FatalIOError);
+    }
+    // The plane must meet the mesh's bounds: beyond them no fiber reaches it
+    scalar nearest = -GREAT;
+    const pointField corners(mesh_.bounds().points());
+    for (const point& corner : corners)
+    {
+        nearest = max(nearest, (corner - p) & n);
+    }
+    if (nearest < 0)
+    {
+        WarningInFunction
+            << type() << " " << name() << ": fibers.laydown: the belt's plane"
+            << " through " << p << " lies " << -nearest << " m beyond the"
+            << " mesh's bounds: no fiber reaches it; they leave the mesh's"
+            << " bounding box first and none is laid." << endl;
+    }
+    if (cell >= width)
+    {
+        FatalIOErrorInFunction(ld)
+            << "Entry 'cell' is " << cell << " m, not smaller than the belt's"
+            << " width " << width << " m: the map would hold one column, with"
+            << " no profile across the belt." << nl
+            << "    Allowed: 0 < cell < " << width << " m (a few fiber lengths"
+            << " or less)." << exit(FatalIOError);
     }
 }
 
