@@ -294,14 +294,6 @@ void Foam::dropletFiber::fiberLaydown::read
     {
         beltFromPatch(*ld, acrossMin, acrossMax);
     }
-    // A unit slip runs, warned once (a belt at rest is allowed)
-    const scalar speed = belt_.velocity.norm();
-    const string slip = implausible(speed, beltSpeedRange);
-    if (speed > 0 && !slip.empty())
-    {
-        IOWarningInFunction(*ld)
-            << "Entry 'velocity': the belt's speed " << slip.c_str() << endl;
-    }
     const scalar offPlane = mag(belt_.velocity.dot(belt_.normal));
     if (offPlane > 1e-9*max(1.0, belt_.velocity.norm()))
     {
@@ -355,6 +347,14 @@ void Foam::dropletFiber::fiberLaydown::checkBeltGeometry
             << " laid the moment it is born." << nl
             << "    Allowed: a normal pointing out of the air, through the"
             << " belt (here " << -n << ")." << exit(FatalIOError);
+    }
+    // A unit slip of the speed runs, warned once (a belt at rest is allowed)
+    const scalar speed = belt_.velocity.norm();
+    const string slip = implausible(speed, beltSpeedRange);
+    if (speed > 0 && !slip.empty())
+    {
+        IOWarningInFunction(ld)
+            << "Entry 'velocity': the belt's speed " << slip.c_str() << endl;
     }
     // The plane must meet the mesh's bounds: beyond them no fiber reaches it
     scalar nearest = -GREAT;
