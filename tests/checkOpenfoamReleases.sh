@@ -38,13 +38,12 @@ if [ ! -f "$archive" ]; then
     exit 77
 fi
 
-# The release unpacked, with its lnInclude folders: made once per archive (its
-# checksum in the stamp), in a fresh folder moved into place when complete, so that a
-# run stopped half-way never leaves a tree that looks ready
-# In a folder named noLink: wmake links every header under the project's folder (the
-# build folder included) into the project's lnInclude, which comes before OpenFOAM's
-# own on the include path, so a release's headers found there would be compiled into
-# the v1912 library; wmakeLnInclude skips folders named noLink
+# The release unpacked, with its lnInclude folders: made once per archive, its checksum
+# written last (the stamp), so that a run stopped half-way never leaves a tree that
+# looks ready. In a folder named noLink: wmake links every header under the project's
+# folder (the build folder included) into the project's lnInclude, which comes before
+# OpenFOAM's own on the include path, so a release's headers found there would be
+# compiled into the v1912 library; wmakeLnInclude skips folders named noLink
 mkdir -p "$cache/noLink"
 cache="$(cd "$cache/noLink" && pwd)"
 tree="$cache/$release/OpenFOAM-$release"
@@ -52,7 +51,7 @@ stamp="$cache/$release/archive.sha256"
 sum="$(sha256sum < "$archive" | cut -d' ' -f1)"
 if [ ! -d "$tree" ] || [ "$(cat "$stamp" 2>/dev/null)" != "$sum" ]; then
     echo "unpacking $archive into $cache/$release (once, kept for the next runs)"
-    rm -rf "$cache/$release"
+    rm -rf "${cache:?}/$release"
     work="$cache/$release.new.$$"
     rm -rf "$work"
     mkdir -p "$work"
@@ -65,9 +64,8 @@ if [ ! -d "$tree" ] || [ "$(cat "$stamp" 2>/dev/null)" != "$sum" ]; then
     find "$work/OpenFOAM-$release/src" -type d -name Make -prune -print0 | sed -z 's|/Make$||' \
         | xargs -0 -P "$jobs" -n 1 bash "$work/OpenFOAM-$release/wmake/wmakeLnInclude" -s 2>/dev/null \
         || { echo "FAILED: the release's wmakeLnInclude"; exit 1; }
-    mv "$work/OpenFOAM-$release" "$work/../OpenFOAM-$release.tmp.$$"
     mkdir -p "$cache/$release"
-    mv "$work/../OpenFOAM-$release.tmp.$$" "$tree"
+    mv "$work/OpenFOAM-$release" "$tree"
     rm -rf "$work"
     echo "$sum" > "$stamp"
     echo "unpacked with $(find "$tree/src" -path '*/lnInclude/*' | wc -l) lnInclude links in $(( $(date +%s) - start )) s"
@@ -121,6 +119,7 @@ export -f compileOne
 export cache release lines
 echo "compiling $nFiles files syntax-only against OpenFOAM $release ($expected), $jobs at a time"
 results="$cache/$release/results"
+# shellcheck disable=SC2016  # $1 is bash -c's argument
 tr '\n' '\0' < "$work" \
     | xargs -0 -P "$jobs" -I{} bash -c 'compileOne "$1"' _ {} \
     | tee "$results"
