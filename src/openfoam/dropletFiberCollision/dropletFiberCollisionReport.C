@@ -10,6 +10,7 @@ Description
 
 #include "dropletFiberCollision.H"
 #include "collisionSettings.H"
+#include "openfoamRelease.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -67,6 +68,7 @@ void Foam::functionObjects::dropletFiberCollision::writeAtWriteTime()
 void Foam::functionObjects::dropletFiberCollision::reportSettings()
 {
     Info<< type() << " " << name() << ":" << nl;
+    dropletFiber::reportOpenfoamRelease(Info);
     spray_.report(Info);
     grid_.report(Info);
     capture_.report(Info);

@@ -17,6 +17,18 @@ namespace
 //- The schedule of Pstream's gathers and scatters on the world
 //  communicator (every processor's place: what is sent to a neighbour below
 //  depends on the neighbour's place)
+#if OPENFOAM >= 2506
+// v2506: the schedules are UPstream::commsStructList, and linearCommunication()
+// and treeCommunication() take the communicator (no default)
+const Foam::UPstream::commsStructList& allComms()
+{
+    using Foam::UPstream;
+    return
+        UPstream::nProcs() < UPstream::nProcsSimpleSum
+      ? UPstream::linearCommunication(UPstream::worldComm)
+      : UPstream::treeCommunication(UPstream::worldComm);
+}
+#else
 const Foam::List<Foam::UPstream::commsStruct>& allComms()
 {
     using Foam::UPstream;
@@ -25,6 +37,7 @@ const Foam::List<Foam::UPstream::commsStruct>& allComms()
       ? UPstream::linearCommunication()
       : UPstream::treeCommunication();
 }
+#endif
 
 } // End anonymous namespace
 
