@@ -4,6 +4,8 @@
 #include "grid/DensityGrid.hpp"
 #include "grid/MultilinearWeights.hpp"
 
+#include "TestGrids.hpp"
+
 #include <gtest/gtest.h>
 
 #include <random>
@@ -12,24 +14,6 @@ using namespace dropletFiber;
 
 namespace
 {
-
-GridSpec grid3D()
-{
-    GridSpec s;
-    s.lower = Eigen::Vector3d(-0.1, 0.2, 1.0);
-    s.upper = Eigen::Vector3d(0.3, 0.5, 1.7);
-    s.nodes = {{9, 7, 5}};
-    return s;
-}
-
-GridSpec grid2D()
-{
-    GridSpec s;
-    s.lower = Eigen::Vector3d(-0.025, 0.0, 0.0);
-    s.upper = Eigen::Vector3d(0.025, 0.07, 0.001);
-    s.nodes = {{11, 15, 1}};
-    return s;
-}
 
 double linear(const Eigen::Vector3d& p, bool planar)
 {
@@ -41,7 +25,7 @@ double linear(const Eigen::Vector3d& p, bool planar)
 TEST(MultilinearWeights, ReproduceLinearFieldsExactly)
 {
     std::mt19937_64 rng(1);
-    for (const GridSpec& spec : {grid3D(), grid2D()})
+    for (const GridSpec& spec : {test::offsetGrid3D(), test::offsetGrid2D()})
     {
         const bool planar = spec.flat(2);
         std::uniform_real_distribution<double> ux(spec.lower.x(), spec.upper.x()),
@@ -76,7 +60,7 @@ TEST(MultilinearWeights, ReproduceLinearFieldsExactly)
 
 TEST(MultilinearWeights, DensityGridSampleReproducesLinearRhoAndMomentumDensity)
 {
-    for (const GridSpec& spec : {grid3D(), grid2D()})
+    for (const GridSpec& spec : {test::offsetGrid3D(), test::offsetGrid2D()})
     {
         const bool planar = spec.flat(2);
         DensityGrid grid(spec);
@@ -121,7 +105,7 @@ TEST(MultilinearWeights, DensityGridSampleReproducesLinearRhoAndMomentumDensity)
 
 TEST(MultilinearWeights, FlatDirectionIsIgnoredWhenSampling)
 {
-    const GridSpec spec = grid2D();
+    const GridSpec spec = test::offsetGrid2D();
     const Eigen::Vector3d p(0.01, 0.03, 0.0005);
     const CornerWeights a = multilinearWeights(spec, p);
     const CornerWeights b = multilinearWeights(spec, Eigen::Vector3d(0.01, 0.03, 5.0));

@@ -9,6 +9,8 @@
 #include "grid/MultilinearWeights.hpp"
 #include "grid/SpreadLevel.hpp"
 
+#include "TestGrids.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -21,26 +23,6 @@ using namespace dropletFiber;
 
 namespace
 {
-
-// 3D, cells 8 x 6 x 4: ratio 3 does not divide them (the last level node beyond the box)
-GridSpec grid3D()
-{
-    GridSpec s;
-    s.lower = Eigen::Vector3d(-0.1, 0.2, 1.0);
-    s.upper = Eigen::Vector3d(0.3, 0.5, 1.7);
-    s.nodes = {{9, 7, 5}};
-    return s;
-}
-
-// 2D: one flat direction of thickness 1 mm
-GridSpec grid2D()
-{
-    GridSpec s;
-    s.lower = Eigen::Vector3d(-0.025, 0.0, 0.0);
-    s.upper = Eigen::Vector3d(0.025, 0.07, 0.001);
-    s.nodes = {{11, 15, 1}};
-    return s;
-}
 
 double boxVolume(const GridSpec& s)
 {
@@ -83,7 +65,7 @@ TEST(SpreadLevel, RatiosAreTwoPowersAndThreeTimesTwoPowers)
 
 TEST(SpreadLevel, LatticeReachesTheBox)
 {
-    const GridSpec g = grid3D();
+    const GridSpec g = test::offsetGrid3D();
     const SpreadLevel level(g, 3);
     // ceil(8 / 3) + 1, ceil(6 / 3) + 1, ceil(4 / 3) + 1 nodes, spacing 3 h
     EXPECT_EQ(level.spec().nodes, (std::array<int, 3>{{4, 3, 3}}));
@@ -92,14 +74,14 @@ TEST(SpreadLevel, LatticeReachesTheBox)
         EXPECT_NEAR(level.spec().spacing(d), 3.0 * g.spacing(d), 1e-15);
         EXPECT_GE(level.spec().upper[d], g.upper[d] - 1e-15);
     }
-    const SpreadLevel flat(grid2D(), 4);
+    const SpreadLevel flat(test::offsetGrid2D(), 4);
     EXPECT_EQ(flat.spec().nodes, (std::array<int, 3>{{4, 5, 1}}));
     EXPECT_DOUBLE_EQ(flat.spec().upper.z() - flat.spec().lower.z(), 0.001);
 }
 
 TEST(SpreadLevel, HatsArePartitionOfUnityAtEveryGridNode)
 {
-    for (const GridSpec& g : {grid3D(), grid2D()})
+    for (const GridSpec& g : {test::offsetGrid3D(), test::offsetGrid2D()})
     {
         for (int r : {1, 2, 3, 4, 6})
         {
@@ -115,7 +97,7 @@ TEST(SpreadLevel, HatsArePartitionOfUnityAtEveryGridNode)
 
 TEST(SpreadLevel, RestrictionKeepsTotalAndVolumesAddToTheBox)
 {
-    for (const GridSpec& g : {grid3D(), grid2D()})
+    for (const GridSpec& g : {test::offsetGrid3D(), test::offsetGrid2D()})
     {
         for (int r : {2, 3, 4})
         {
@@ -133,7 +115,7 @@ TEST(SpreadLevel, RestrictionKeepsTotalAndVolumesAddToTheBox)
 
 TEST(SpreadLevel, RestrictionAndProlongationAreAdjoint)
 {
-    const GridSpec g = grid3D();
+    const GridSpec g = test::offsetGrid3D();
     const SpreadLevel level(g, 3);
     const std::vector<double> q = randomField(g.nodeCount(), 11u);
     const std::vector<double> x = randomField(level.spec().nodeCount(), 12u);
@@ -147,7 +129,7 @@ TEST(SpreadLevel, RestrictionAndProlongationAreAdjoint)
 TEST(SpreadLevel, RestrictedGridWeightsAreThePointsLevelWeights)
 {
     std::mt19937 rng(5);
-    for (const GridSpec& g : {grid3D(), grid2D()})
+    for (const GridSpec& g : {test::offsetGrid3D(), test::offsetGrid2D()})
     {
         for (int r : {2, 3, 4})
         {
@@ -179,7 +161,7 @@ TEST(SpreadLevel, RestrictedGridWeightsAreThePointsLevelWeights)
 
 TEST(SpreadLevel, HalvingTheGridMapsLevelsOntoEachOther)
 {
-    const GridSpec coarse = grid3D();
+    const GridSpec coarse = test::offsetGrid3D();
     GridSpec fine = coarse;
     for (int d = 0; d < 3; ++d)
     {
@@ -209,7 +191,7 @@ TEST(SpreadLevel, HalvingTheGridMapsLevelsOntoEachOther)
 
 TEST(SpreadLevel, RatioOneIsTheGridItself)
 {
-    const GridSpec g = grid3D();
+    const GridSpec g = test::offsetGrid3D();
     const SpreadLevel level(g, 1);
     EXPECT_EQ(level.spec().nodes, g.nodes);
     const std::vector<double> q = randomField(g.nodeCount(), 3u);
@@ -221,8 +203,8 @@ TEST(SpreadLevel, RatioOneIsTheGridItself)
 
 TEST(SpreadLevel, BadRatioAndSizesAreRefused)
 {
-    EXPECT_THROW(SpreadLevel(grid3D(), 0), std::invalid_argument);
-    const SpreadLevel level(grid3D(), 2);
+    EXPECT_THROW(SpreadLevel(test::offsetGrid3D(), 0), std::invalid_argument);
+    const SpreadLevel level(test::offsetGrid3D(), 2);
     EXPECT_THROW(level.restrict(std::vector<double>(3)), std::invalid_argument);
     EXPECT_THROW(level.prolong(std::vector<double>(3)), std::invalid_argument);
 }

@@ -1,4 +1,4 @@
-// Test helper (not a test file): the small grids several grid tests deposit on, and the
+// Test helper (not a test file): the small grids several grid tests use, and the
 // random parcels they deposit, one definition each. grid2D: 3 x 2 cm, 1 mm spacing, one node layer 1 mm thick (31 x 21 nodes
 // unless told otherwise); grid3D: 2 x 1.5 x 1 cm, 1 mm spacing (21 x 16 x 11 nodes).
 #pragma once
@@ -52,6 +52,27 @@ inline GridSpec grid3D()
     s.lower = Eigen::Vector3d(0.0, 0.0, 0.0);
     s.upper = Eigen::Vector3d(0.02, 0.015, 0.01);
     s.nodes = {{21, 16, 11}};
+    return s;
+}
+
+// Grids off the origin whose cell counts 2, 3 and 4 do not all divide (multilinear weights,
+// spread levels): 0.4 x 0.3 x 0.7 m with 9 x 7 x 5 nodes; 5 x 7 cm with 11 x 15 nodes, one
+// layer 1 mm thick.
+inline GridSpec offsetGrid3D()
+{
+    GridSpec s;
+    s.lower = Eigen::Vector3d(-0.1, 0.2, 1.0);
+    s.upper = Eigen::Vector3d(0.3, 0.5, 1.7);
+    s.nodes = {{9, 7, 5}};
+    return s;
+}
+
+inline GridSpec offsetGrid2D()
+{
+    GridSpec s;
+    s.lower = Eigen::Vector3d(-0.025, 0.0, 0.0);
+    s.upper = Eigen::Vector3d(0.025, 0.07, 0.001);
+    s.nodes = {{11, 15, 1}};
     return s;
 }
 
