@@ -231,53 +231,48 @@ void Foam::functionObjects::dropletFiberCollision::checkEntries
 )
 {
     using namespace dropletFiber;
-    wordList entries;
-    for
+    checkKeys
     (
-        const wordList& stage :
-        {
-            sprayParcels::entries(), couplingGrid::entries(),
-            fiberCapture::entries(), fiberMotion::entries(),
-            couplingOutput::entries(), couplingRestart::entries()
-        }
-    )
-    {
-        entries = joinedKeys(entries, stage);
-    }
-    checkKeys(dict, joinedKeys(entries, openFoamKeys));
-    wordList fibersEntries;
-    for
+        dict,
+        joinedKeys
+        (
+            {
+                sprayParcels::entries(), couplingGrid::entries(),
+                fiberCapture::entries(), fiberMotion::entries(),
+                couplingOutput::entries(), couplingRestart::entries(),
+                openFoamKeys
+            }
+        )
+    );
+    checkKeys
     (
-        const wordList& stage :
-        {
-            fiberMotion::fibersEntries(), fiberPopulation::fibersEntries(),
-            airReaction::fibersEntries(), fiberLaydown::fibersEntries()
-        }
-    )
-    {
-        fibersEntries = joinedKeys(fibersEntries, stage);
-    }
-    checkKeys(fibersDict, fibersEntries);
+        fibersDict,
+        joinedKeys
+        (
+            {
+                fiberMotion::fibersEntries(), fiberPopulation::fibersEntries(),
+                airReaction::fibersEntries(), fiberLaydown::fibersEntries()
+            }
+        )
+    );
 }
 
 
 Foam::wordList
 Foam::functionObjects::dropletFiberCollision::stepColumns() const
 {
-    wordList columns(population_.stepColumns());
-    for
+    return dropletFiber::joinedKeys
     (
-        const wordList& stage :
         {
-            spray_.stepColumns(), grid_.stepColumns(), capture_.stepColumns(),
-            motion_.stepColumns(), laydown_.stepColumns(),
-            wordList{"wallTimeDeposition", "wallTimeCollision", "wallTimeFibers"}
+            population_.stepColumns(), spray_.stepColumns(),
+            grid_.stepColumns(), capture_.stepColumns(), motion_.stepColumns(),
+            laydown_.stepColumns(),
+            wordList
+            {
+                "wallTimeDeposition", "wallTimeCollision", "wallTimeFibers"
+            }
         }
-    )
-    {
-        columns = dropletFiber::joinedKeys(columns, stage);
-    }
-    return columns;
+    );
 }
 
 

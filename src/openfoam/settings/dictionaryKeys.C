@@ -147,4 +147,18 @@ Foam::wordList Foam::dropletFiber::joinedKeys
     return keys;
 }
 
+
+Foam::wordList Foam::dropletFiber::joinedKeys
+(
+    std::initializer_list<wordList> lists
+)
+{
+    wordList keys;
+    for (const wordList& list : lists)
+    {
+        keys.append(list);
+    }
+    return keys;
+}
+
 // ************************************************************************* //

@@ -134,12 +134,12 @@ void Foam::dropletFiber::couplingGrid::readWindowOutput(const dictionary& dict)
 void Foam::dropletFiber::couplingGrid::build
 (
     const dictionary& dict,
+    const dictionary& gridDict,
     const gridSettings& settings,
     const std::vector<::dropletFiber::FiberInjectorSpec>& injectors
 )
 {
     settings_ = settings;
-    const dictionary& gridDict = optionalSubDict(dict, "grid");
     blocks_.reset
     (
         checkedCoreCall
@@ -194,7 +194,7 @@ void Foam::dropletFiber::couplingGrid::read
         checkUnchanged(grid, gridDict);
         return;
     }
-    build(dict, grid, injectors);
+    build(dict, gridDict, grid, injectors);
     // A unit slip runs, warned once at the start
     warnImplausibleSpacing(gridDict, settings_, mesh_);
 }

@@ -91,7 +91,7 @@ Foam::wordList Foam::dropletFiber::couplingOutput::tableColumns
         return label(-1);
     };
     // Stable: the species in the order given
-    DynamicList<label> order(identity(columns.size()));
+    labelList order(identity(columns.size()));
     std::stable_sort
     (
         order.begin(), order.end(),

@@ -251,10 +251,10 @@ void Foam::dropletFiber::fiberPopulation::reportBalanceAtWrite
     {
         return;
     }
+    const fiberTotals& t = totals_;
     const scalar binderInAir = binderSums().values[2];
     const scalar glassInAir = mass() - binderInAir;
-    const scalar glassLost = totals_.massRemoved - totals_.binderRemoved;
-    const fiberTotals& t = totals_;
+    const scalar glassLost = t.massRemoved - t.binderRemoved;
     Info<< "    glass: injected " << t.massAdded << " kg = in the air "
         << glassInAir << " + laid " << t.glassLaid << " + lost " << glassLost
         << " (balance "
