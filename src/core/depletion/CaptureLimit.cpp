@@ -178,6 +178,19 @@ void CaptureLimit::addDemand(std::size_t node, double mass, double shadow, doubl
     entry.parts.push_back(DemandPart{mass, shadow, interceptors});
 }
 
+void CaptureLimit::addSpread(std::size_t node, double share, double depth)
+{
+    if (!(share >= 0.0) || !(depth >= 0.0) || !std::isfinite(share) || !std::isfinite(depth))
+    {
+        throw std::invalid_argument("CaptureLimit::addSpread: share and depth at node " + std::to_string(node)
+                                    + " must be finite and >= 0, got " + std::to_string(share) + " and "
+                                    + std::to_string(depth));
+    }
+    NodeDemand& entry = demand_[node];
+    entry.spreadShare += share;
+    entry.spreadDepth += depth;
+}
+
 std::vector<NodeMass> CaptureLimit::takeForeignDemand(const DensityGrid& grid)
 {
     std::vector<NodeMass> foreign;
@@ -260,7 +273,14 @@ CaptureLimitReport CaptureLimit::limit(const DensityGrid& grid)
         grid.windowTotal(node, sums);
         const int steps = grid.stepsInWindow();
         const double supply = steps > 0 ? sums[quantityMass] / steps : 0.0;
-        const double depth = supply > 0.0 ? depthOf(entry.parts, supply) : 0.0;
+        double depth = supply > 0.0 ? depthOf(entry.parts, supply) : 0.0;
+        entry.supply = supply;
+        if (entry.spreadShare > 0.0)
+        {
+            // The populations' parts, linear (P50): demand s_n P_n, depth P'_n
+            entry.total += supply * entry.spreadShare;
+            depth += supply > 0.0 ? entry.spreadDepth : 0.0;
+        }
         report.massDemanded += entry.total;
         report.nodesDemanded += entry.total > 0.0 ? 1 : 0;
         report.nodesLimited += entry.total > supply ? 1 : 0;
@@ -342,6 +362,17 @@ double CaptureLimit::grantedRatio(std::size_t node) const
                                 + " (no demand there, or grant() not called)");
     }
     return entry->second;
+}
+
+double CaptureLimit::grantedSupply(std::size_t node) const
+{
+    const auto entry = demand_.find(node);
+    const auto ratio = granted_.find(node);
+    if (entry == demand_.end() || ratio == granted_.end())
+    {
+        return 0.0;
+    }
+    return entry->second.supply * ratio->second;
 }
 
 double CaptureLimit::grantedMass(const SampleCapture& sample) const

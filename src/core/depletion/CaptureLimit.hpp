@@ -172,6 +172,10 @@ public:
     void addDemand(const SampleCapture& sample, double interceptors = 1.0);
     void addDemand(const SegmentCapture& segment, double interceptors = 1.0);
     void addDemand(std::size_t node, double mass, double shadow = 0.0, double interceptors = 1.0);
+    // Spread populations (docs/model.md sec. 12, SpreadPopulations.hpp) at an owned node:
+    // their swept fraction P_n of the node's mass per step (demand s_n P_n, linear) and
+    // their depth P'_n (added to x_n where s_n > 0). Added up over calls.
+    void addSpread(std::size_t node, double share, double depth);
     // The demand at nodes the grid does not own, moved out, in node order: each addDemand
     // call's part apart (the owner multiplies their survivals, P13), in the order added.
     std::vector<NodeMass> takeForeignDemand(const DensityGrid& grid);
@@ -209,6 +213,9 @@ public:
     // g_n of a node with demand (grant() on its owner); throws std::out_of_range for a node
     // without one.
     double grantedRatio(std::size_t node) const;
+    // s_n g_n: the granted mass per unit of swept fraction at a node (0 at a node without
+    // demand): a spread population's grant (SpreadPopulations.hpp, P51).
+    double grantedSupply(std::size_t node) const;
     // The sample's mass after the limit: sum_c d_sc g_{n_c}; momentum = that * velocity.
     double grantedMass(const SampleCapture& sample) const;
     // The segment's mass and momentum after the limit.
@@ -282,6 +289,8 @@ private:
     {
         double total = 0.0;
         std::vector<DemandPart> parts;
+        double spreadShare = 0.0, spreadDepth = 0.0; // P_n, P'_n (addSpread)
+        double supply = 0.0;                         // s_n, set by limit()
     };
     // The parts in value order and their total (the same bits whatever the order added).
     static void sortParts(NodeDemand& entry);

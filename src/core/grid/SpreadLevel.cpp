@@ -50,18 +50,44 @@ SpreadLevel::SpreadLevel(const GridSpec& grid, int ratio) : grid_(grid), level_(
         level_.nodes[d] = levelCells + 1;
         level_.upper[d] = grid_.lower[d] + levelCells * (ratio * grid_.spacing(d));
     }
-    std::vector<double> dual(grid_.nodeCount());
-    for (int k = 0; k < grid_.nodes[2]; ++k)
+    for (int d = 0; d < 3; ++d)
     {
-        for (int j = 0; j < grid_.nodes[1]; ++j)
+        std::vector<double>& axis = axisVolume_[static_cast<std::size_t>(d)];
+        axis.assign(static_cast<std::size_t>(level_.nodes[d]), 0.0);
+        if (grid_.flat(d))
         {
-            for (int i = 0; i < grid_.nodes[0]; ++i)
+            axis[0] = grid_.spacing(d);
+            continue;
+        }
+        const int last = grid_.nodes[d] - 1;
+        for (int fine = 0; fine <= last; ++fine)
+        {
+            const double width = (fine == 0 || fine == last ? 0.5 : 1.0) * grid_.spacing(d);
+            const AxisShare s = share(d, fine);
+            for (int a = 0; a < s.count; ++a)
             {
-                dual[grid_.flatIndex(i, j, k)] = grid_.dualVolume(i, j, k);
+                axis[static_cast<std::size_t>(s.coarse[static_cast<std::size_t>(a)])]
+                    += s.hat[static_cast<std::size_t>(a)] * width;
             }
         }
     }
-    volumes_ = restrict(dual);
+}
+
+double SpreadLevel::volume(std::size_t levelNode) const
+{
+    const std::array<int, 3> c = nodeIndicesOfFlat(level_.nodes, levelNode);
+    return axisVolume_[0][static_cast<std::size_t>(c[0])] * axisVolume_[1][static_cast<std::size_t>(c[1])]
+        * axisVolume_[2][static_cast<std::size_t>(c[2])];
+}
+
+std::vector<double> SpreadLevel::volumes() const
+{
+    std::vector<double> v(level_.nodeCount());
+    for (std::size_t c = 0; c < v.size(); ++c)
+    {
+        v[c] = volume(c);
+    }
+    return v;
 }
 
 double SpreadLevel::hat(int d, int coarse, int fine) const

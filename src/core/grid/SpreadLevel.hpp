@@ -31,6 +31,7 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <vector>
@@ -59,7 +60,15 @@ public:
     double hat(int d, int coarse, int fine) const;
 
     // V_C: the grid's dual volumes restricted, one per level node (flat index of spec()).
-    const std::vector<double>& volumes() const { return volumes_; }
+    std::vector<double> volumes() const;
+    // V_C of one level node (flat index of spec()): separable, a product of the directions'
+    // restricted dual widths (no grid-sized array is held).
+    double volume(std::size_t levelNode) const;
+
+    // Calls f(grid node flat index, hat) for every grid node that the hat of level node
+    // `levelNode` reaches (hat > 0), in flat order: (2 r - 1)^d nodes inside the box.
+    template <class F>
+    void forEachFineNode(std::size_t levelNode, F&& f) const;
 
     // restrict(q)_C = sum_n hat_C(g_n) q_n of a field on the grid's nodes (flat indices of
     // grid()): the total is kept.
@@ -90,7 +99,39 @@ private:
     GridSpec grid_;
     GridSpec level_;
     int ratio_ = 1;
-    std::vector<double> volumes_;
+    // Per direction and level index: the grid's dual widths restricted (the thickness in a
+    // flat direction)
+    std::array<std::vector<double>, 3> axisVolume_;
 };
+
+template <class F>
+void SpreadLevel::forEachFineNode(std::size_t levelNode, F&& f) const
+{
+    const std::array<int, 3> coarse = nodeIndicesOfFlat(level_.nodes, levelNode);
+    std::array<int, 3> lo{}, hi{};
+    for (int d = 0; d < 3; ++d)
+    {
+        const auto u = static_cast<std::size_t>(d);
+        if (grid_.flat(d))
+        {
+            lo[u] = hi[u] = 0;
+            continue;
+        }
+        lo[u] = std::max(0, ratio_ * (coarse[u] - 1) + 1);
+        hi[u] = std::min(grid_.nodes[d] - 1, ratio_ * (coarse[u] + 1) - 1);
+    }
+    for (int k = lo[2]; k <= hi[2]; ++k)
+    {
+        const double hk = hat(2, coarse[2], k);
+        for (int j = lo[1]; j <= hi[1]; ++j)
+        {
+            const double hjk = hat(1, coarse[1], j) * hk;
+            for (int i = lo[0]; i <= hi[0]; ++i)
+            {
+                f(grid_.flatIndex(i, j, k), hat(0, coarse[0], i) * hjk);
+            }
+        }
+    }
+}
 
 } // namespace dropletFiber

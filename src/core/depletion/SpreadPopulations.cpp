@@ -1,0 +1,141 @@
+// SpreadPopulations: a weighted fiber's population on its level (SpreadPopulations.hpp,
+// docs/model.md sec. 12): the count, the level's choice, the demand terms, the reading of a
+// level field.
+#include "depletion/SpreadPopulations.hpp"
+#include "depletion/SelfShadow.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace dropletFiber
+{
+
+namespace
+{
+constexpr double pi = 3.14159265358979323846;
+}
+
+SpreadPopulations::SpreadPopulations(const GridSpec& grid, double neighbours, int maxRatio)
+    : grid_(grid), neighbours_(neighbours)
+{
+    grid_.validate();
+    if (!(neighbours > 0.0) || !std::isfinite(neighbours))
+    {
+        throw std::invalid_argument("spread populations: neighbours must be finite and > 0, not "
+                                    + std::to_string(neighbours));
+    }
+    const int largest = maxRatio > 0 ? maxRatio : defaultMaxRatio(grid_);
+    for (const int ratio : spreadLevelRatios(largest))
+    {
+        if (static_cast<int>(levels_.size()) == maxLevels)
+        {
+            break;
+        }
+        levels_.emplace_back(grid_, ratio);
+    }
+}
+
+int SpreadPopulations::defaultMaxRatio(const GridSpec& grid)
+{
+    double extent = 0.0;
+    double spacing = 0.0;
+    for (int d = 0; d < 3; ++d)
+    {
+        if (!grid.flat(d) && grid.upper[d] - grid.lower[d] > extent)
+        {
+            extent = grid.upper[d] - grid.lower[d];
+            spacing = grid.spacing(d);
+        }
+    }
+    const int reach = static_cast<int>(std::ceil(0.5 * extent / spacing - 1e-9));
+    int ratio = 1;
+    for (const int r : spreadLevelRatios(std::max(1, 2 * reach)))
+    {
+        ratio = r;
+        if (r >= reach)
+        {
+            break;
+        }
+    }
+    return ratio;
+}
+
+void SpreadPopulations::addLength(const Eigen::Vector3d& centre, double length, LevelTerms& count) const
+{
+    for (int l = 0; l < levelCount(); ++l)
+    {
+        const CornerWeights w = level(l).weightsAt(centre);
+        for (int c = 0; c < w.count; ++c)
+        {
+            const auto u = static_cast<std::size_t>(c);
+            count.add(levelKey(l, w.node[u]), length * w.weight[u]);
+        }
+    }
+}
+
+LevelChoice SpreadPopulations::choose(const Eigen::Vector3d& centre, double ownLength,
+                                      const LevelTable& count) const
+{
+    LevelChoice choice;
+    for (int l = 0; l < levelCount(); ++l)
+    {
+        const SpreadLevel& lvl = level(l);
+        const CornerWeights w = lvl.weightsAt(centre);
+        // lambda^ at the centre: the count read per volume, the fiber's own deposit out
+        double lambda = 0.0;
+        for (int c = 0; c < w.count; ++c)
+        {
+            const auto u = static_cast<std::size_t>(c);
+            const double others = count.value(levelKey(l, w.node[u]), 0) - ownLength * w.weight[u];
+            lambda += w.weight[u] * std::max(0.0, others) / lvl.volume(w.node[u]);
+        }
+        double spacing = 0.0;
+        for (int d = 0; d < 3; ++d)
+        {
+            spacing = grid_.flat(d) ? spacing : std::max(spacing, lvl.spec().spacing(d));
+        }
+        choice.level = l;
+        choice.reach = pi * spacing * spacing / 3.0 * lambda;
+        if (choice.reach >= neighbours_)
+        {
+            choice.capped = false;
+            return choice;
+        }
+    }
+    choice.capped = true;
+    return choice;
+}
+
+void SpreadPopulations::addDemand(const Eigen::Vector3d& point, int level, double volume,
+                                  const Eigen::Vector3d& strip, double fibers, LevelTerms& demand) const
+{
+    const SpreadLevel& lvl = this->level(level);
+    const CornerWeights w = lvl.weightsAt(point);
+    // P54: the population's strip (N + 1) q_d on its level, shadowing itself and its line
+    const std::array<double, 8> sigma = selfShadow(lvl.spec(), w, (fibers + 1.0) * strip);
+    for (int c = 0; c < w.count; ++c)
+    {
+        const auto u = static_cast<std::size_t>(c);
+        const double part = volume * w.weight[u];
+        const double terms[2] = {part, part * (1.0 + sigma[u])};
+        demand.add(levelKey(level, w.node[u]), terms);
+    }
+}
+
+double SpreadPopulations::readLevel(const Eigen::Vector3d& point, int level, const LevelTable& table,
+                                    int column) const
+{
+    const SpreadLevel& lvl = this->level(level);
+    const CornerWeights w = lvl.weightsAt(point);
+    double sum = 0.0;
+    for (int c = 0; c < w.count; ++c)
+    {
+        const auto u = static_cast<std::size_t>(c);
+        sum += w.weight[u] * table.value(levelKey(level, w.node[u]), column) / lvl.volume(w.node[u]);
+    }
+    return sum;
+}
+
+} // namespace dropletFiber

@@ -1,0 +1,165 @@
+// SpreadPopulations: the N - 1 physical fibers a weighted computed fiber stands for, spread
+// around it and acting on the spray as what they are (docs/model.md sec. 12, P49-P54).
+//
+// Per step, on the levels of the coupling grid (SpreadLevel: spacing H = r h):
+//  1. Count (P52). Every computed fiber's length at its centre, on every level's nodes with
+//     multilinear weights (addLength): the computed fibers' length per volume, lambda_C =
+//     count_C / V_C, each computed fiber once whatever its weight.
+//  2. Level (P52, P53). A weighted fiber's population takes the finest level on which
+//     pi (H^2 / 3) lambda^ >= k (`neighbours`), lambda^ the count interpolated at the fiber's
+//     centre less the fiber's own (choose): its kernel, sigma = H / sqrt(3), reaches k
+//     other computed fibers. None does: the coarsest level, marked capped.
+//  3. Demand (P50, P53, P54). A collision sample s of swept volume kappa_s (eq. 9's mass
+//     over the density it read) stands for N - 1 spread fibers: on its level's nodes C,
+//     share_C += (N - 1) kappa_s w_sC and depth_C += that times (1 + sigma~_sC), sigma~ the
+//     self-shadow of a strip (N + 1) q_d on the level (P54; SelfShadow.hpp). A grid node n
+//     then holds the populations' swept fraction and depth
+//         P_n = sum_C hat_C(g_n) share_C / V_C,   P'_n = sum_C hat_C(g_n) depth_C / V_C
+//     (prolong): its demand grows by s_n P_n and its depth by P'_n (CaptureLimit::addSpread)
+//     and the parcels cross the grid's depths as before (P14).
+//  4. Grant (P51). With the grid's grants g_n, a level node's grant G_C = sum_n hat_C(g_n)
+//     s_n g_n (restrictToLevels over CaptureLimit::grantedSupply) and the sample's
+//     population captures (N - 1) kappa_s sum_C w_sC G_C / V_C (readLevel): over all
+//     samples, sum_n g_n s_n P_n, the populations' part of sum_n g_n d_n = sum_n R_n.
+//
+// Every table is keyed by level node (LevelTable), so that in a parallel run the parts of
+// a level node from several processors add up at one owner; each step here is local to
+// the keys and grid nodes it is given.
+#pragma once
+
+#include "grid/GridSpec.hpp"
+#include "grid/LevelTable.hpp"
+#include "grid/MultilinearWeights.hpp"
+#include "grid/SpreadLevel.hpp"
+
+#include <Eigen/Core>
+
+#include <cstddef>
+#include <vector>
+
+namespace dropletFiber
+{
+
+// A grid node's share of the populations: P_n and P'_n of the step (prolong).
+struct NodeSpread
+{
+    std::size_t node = 0;
+    double share = 0.0;
+    double depth = 0.0;
+};
+
+// The level a population takes (choose).
+struct LevelChoice
+{
+    int level = 0;
+    double reach = 0.0;  // nu = pi (H^2 / 3) lambda^: the other computed fibers its kernel reaches
+    bool capped = false; // no level reached `neighbours`: the coarsest allowed
+};
+
+class SpreadPopulations
+{
+public:
+    // Levels of ratio 1, 2, 3, 4, 6, ... up to maxRatio (defaultMaxRatio when 0); neighbours
+    // k > 0. Throws std::invalid_argument.
+    SpreadPopulations(const GridSpec& grid, double neighbours, int maxRatio = 0);
+
+    // The ratio whose spacing first reaches half the box's largest active extent.
+    static int defaultMaxRatio(const GridSpec& grid);
+
+    int levelCount() const { return static_cast<int>(levels_.size()); }
+    const SpreadLevel& level(int l) const { return levels_[static_cast<std::size_t>(l)]; }
+    double neighbours() const { return neighbours_; }
+    const GridSpec& grid() const { return grid_; }
+
+    // --- 1. count -------------------------------------------------------------------------
+    // A computed fiber of `length` with its centre at `centre`, on every level (width 1).
+    void addLength(const Eigen::Vector3d& centre, double length, LevelTerms& count) const;
+
+    // --- 2. level -------------------------------------------------------------------------
+    // The finest level whose kernel reaches k other computed fibers at the fiber's centre
+    // (count: the summed table of every computed fiber's addLength, its own included).
+    LevelChoice choose(const Eigen::Vector3d& centre, double ownLength, const LevelTable& count) const;
+
+    // --- 3. demand ------------------------------------------------------------------------
+    // A sample of N = fibers physical fibers on `level`: volume = (N - 1) kappa_s (m^3),
+    // strip = the computed fiber's q_d (stripAcrossFlow; zero: no shadow). Terms of width 2
+    // (share, depth).
+    void addDemand(const Eigen::Vector3d& point, int level, double volume, const Eigen::Vector3d& strip,
+                   double fibers, LevelTerms& demand) const;
+    // P_n and P'_n of the grid nodes the table's level nodes reach and keep(node) accepts,
+    // in node order (each node's terms in key order).
+    template <class Keep>
+    std::vector<NodeSpread> prolong(const LevelTable& demand, Keep&& keep) const;
+
+    // --- 4. grant -------------------------------------------------------------------------
+    // Per key of `keys`: sum over the grid nodes of its hat that keep accepts of hat x
+    // value(node) (width 1).
+    template <class Keep, class Value>
+    LevelTable restrictToLevels(const LevelTable& keys, Keep&& keep, Value&& value) const;
+    // sum_C w_C table_C[column] / V_C at the point on `level`: a level field read per volume.
+    double readLevel(const Eigen::Vector3d& point, int level, const LevelTable& table, int column = 0) const;
+
+private:
+    GridSpec grid_;
+    double neighbours_;
+    std::vector<SpreadLevel> levels_;
+};
+
+template <class Keep>
+std::vector<NodeSpread> SpreadPopulations::prolong(const LevelTable& demand, Keep&& keep) const
+{
+    std::vector<NodeSpread> terms;
+    for (std::size_t i = 0; i < demand.keys.size(); ++i)
+    {
+        const LevelKey key = demand.keys[i];
+        const SpreadLevel& lvl = level(levelOfKey(key));
+        const std::size_t coarse = nodeOfKey(key);
+        const double volume = lvl.volume(coarse);
+        const double share = demand.values[2 * i] / volume;
+        const double depth = demand.values[2 * i + 1] / volume;
+        lvl.forEachFineNode(coarse, [&](std::size_t node, double hat) {
+            if (keep(node))
+            {
+                terms.push_back(NodeSpread{node, hat * share, hat * depth});
+            }
+        });
+    }
+    std::stable_sort(terms.begin(), terms.end(),
+                     [](const NodeSpread& a, const NodeSpread& b) { return a.node < b.node; });
+    std::vector<NodeSpread> nodes;
+    for (const NodeSpread& t : terms)
+    {
+        if (!nodes.empty() && nodes.back().node == t.node)
+        {
+            nodes.back().share += t.share;
+            nodes.back().depth += t.depth;
+            continue;
+        }
+        nodes.push_back(t);
+    }
+    return nodes;
+}
+
+template <class Keep, class Value>
+LevelTable SpreadPopulations::restrictToLevels(const LevelTable& keys, Keep&& keep, Value&& value) const
+{
+    LevelTable table;
+    table.width = 1;
+    table.keys = keys.keys;
+    table.values.assign(keys.keys.size(), 0.0);
+    for (std::size_t i = 0; i < keys.keys.size(); ++i)
+    {
+        const SpreadLevel& lvl = level(levelOfKey(keys.keys[i]));
+        double sum = 0.0;
+        lvl.forEachFineNode(nodeOfKey(keys.keys[i]), [&](std::size_t node, double hat) {
+            if (keep(node))
+            {
+                sum += hat * value(node);
+            }
+        });
+        table.values[i] = sum;
+    }
+    return table;
+}
+
+} // namespace dropletFiber
