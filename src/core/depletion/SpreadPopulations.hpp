@@ -117,12 +117,14 @@ std::vector<NodeSpread> SpreadPopulations::prolong(const LevelTable& demand, Kee
         const double volume = lvl.volume(coarse);
         const double share = demand.values[2 * i] / volume;
         const double depth = demand.values[2 * i + 1] / volume;
-        lvl.forEachFineNode(coarse, [&](std::size_t node, double hat) {
-            if (keep(node))
-            {
-                terms.push_back(NodeSpread{node, hat * share, hat * depth});
-            }
-        });
+        lvl.forEachFineNode(coarse,
+                            [&](std::size_t node, double hat)
+                            {
+                                if (keep(node))
+                                {
+                                    terms.push_back(NodeSpread{node, hat * share, hat * depth});
+                                }
+                            });
     }
     std::stable_sort(terms.begin(), terms.end(),
                      [](const NodeSpread& a, const NodeSpread& b) { return a.node < b.node; });
@@ -151,12 +153,14 @@ LevelTable SpreadPopulations::restrictToLevels(const LevelTable& keys, Keep&& ke
     {
         const SpreadLevel& lvl = level(levelOfKey(keys.keys[i]));
         double sum = 0.0;
-        lvl.forEachFineNode(nodeOfKey(keys.keys[i]), [&](std::size_t node, double hat) {
-            if (keep(node))
-            {
-                sum += hat * value(node);
-            }
-        });
+        lvl.forEachFineNode(nodeOfKey(keys.keys[i]),
+                            [&](std::size_t node, double hat)
+                            {
+                                if (keep(node))
+                                {
+                                    sum += hat * value(node);
+                                }
+                            });
         table.values[i] = sum;
     }
     return table;

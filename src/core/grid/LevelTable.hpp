@@ -19,8 +19,14 @@ inline LevelKey levelKey(int level, std::size_t node)
 {
     return (static_cast<LevelKey>(node) << 6) | static_cast<LevelKey>(level);
 }
-inline int levelOfKey(LevelKey key) { return static_cast<int>(key & 63u); }
-inline std::size_t nodeOfKey(LevelKey key) { return static_cast<std::size_t>(key >> 6); }
+inline int levelOfKey(LevelKey key)
+{
+    return static_cast<int>(key & 63u);
+}
+inline std::size_t nodeOfKey(LevelKey key)
+{
+    return static_cast<std::size_t>(key >> 6);
+}
 
 // The largest level count a key holds.
 constexpr int maxLevels = 64;
@@ -28,8 +34,8 @@ constexpr int maxLevels = 64;
 struct LevelTable
 {
     int width = 1;
-    std::vector<LevelKey> keys;  // ascending, unique
-    std::vector<double> values;  // width per key
+    std::vector<LevelKey> keys; // ascending, unique
+    std::vector<double> values; // width per key
 
     std::size_t size() const { return keys.size(); }
     // The key's values, nullptr where the table has none.

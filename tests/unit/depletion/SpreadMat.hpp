@@ -24,20 +24,20 @@ namespace test
 
 struct SpreadMatResult
 {
-    double penetration = 0.0;  // mean over the lanes of prod (1 - c_p)
-    double theory = 0.0;       // exp(-S), S = M N c / W
-    double captured = 0.0;     // the fibers' granted mass (lines and populations), kg
-    double removed = 0.0;      // sum c_p m_p, kg
-    double meanRatio = 0.0;    // the populations' mean H / h (0 without)
-    int capped = 0;            // populations that reached no level's k
+    double penetration = 0.0; // mean over the lanes of prod (1 - c_p)
+    double theory = 0.0;      // exp(-S), S = M N c / W
+    double captured = 0.0;    // the fibers' granted mass (lines and populations), kg
+    double removed = 0.0;     // sum c_p m_p, kg
+    double meanRatio = 0.0;   // the populations' mean H / h (0 without)
+    int capped = 0;           // populations that reached no level's k
 };
 
 struct SpreadMat
 {
-    double width = 0.75, height = 1.0;     // the box, m
+    double width = 0.75, height = 1.0;      // the box, m
     double slabLow = 0.25, slabHigh = 0.75; // the mat's extent in y, m
     double h = 1.0 / 32.0;
-    double strip = 1e-4;                   // c = 2 (r_F + r_p), m
+    double strip = 1e-4; // c = 2 (r_F + r_p), m
     double dropletRadius = 1e-5;
     double S = 1.0;
     double weight = 10.0; // N
@@ -49,7 +49,8 @@ struct SpreadMat
         GridSpec s;
         s.lower = Eigen::Vector3d(0.0, 0.0, 0.0);
         s.upper = Eigen::Vector3d(width, height, h);
-        s.nodes = {{static_cast<int>(std::lround(width / h)) + 1, static_cast<int>(std::lround(height / h)) + 1, 1}};
+        s.nodes = {
+            {static_cast<int>(std::lround(width / h)) + 1, static_cast<int>(std::lround(height / h)) + 1, 1}};
         return s;
     }
 
@@ -87,7 +88,8 @@ struct SpreadMat
         std::vector<Eigen::Vector3d> centres;
         for (int f = 0; f < fiberCount(); ++f)
         {
-            centres.emplace_back(width * unit(rng), slabLow + (slabHigh - slabLow) * unit(rng), 0.5 * thickness);
+            centres.emplace_back(width * unit(rng), slabLow + (slabHigh - slabLow) * unit(rng),
+                                 0.5 * thickness);
         }
         CaptureLimit limit;
         std::vector<SegmentCapture> lines;

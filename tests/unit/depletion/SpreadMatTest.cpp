@@ -23,7 +23,7 @@ constexpr int mats = 8;
 
 struct MeanOverMats
 {
-    double ratio = 0.0;   // mean of P / exp(-S)
+    double ratio = 0.0; // mean of P / exp(-S)
     double lowest = 1e9, highest = 0.0;
     double balance = 0.0; // the largest |captured - removed| / removed
     double meanRatio = 0.0;
@@ -61,10 +61,11 @@ TEST(SpreadMat, PenetrationWithinThreePercentOfExpMinusSAtEverySpacingAndWeight)
             {
                 const MeanOverMats spread = meanOverMats(S, N, inverse, true);
                 const MeanOverMats today = meanOverMats(S, N, inverse, false);
-                std::printf("S %.2f N %5.0f 1/h %4.0f: spread %.4f (%.4f-%.4f, H/h %.1f)  P40 alone %.4f\n", S,
-                            N, inverse, spread.ratio, spread.lowest, spread.highest, spread.meanRatio,
+                std::printf("S %.2f N %5.0f 1/h %4.0f: spread %.4f (%.4f-%.4f, H/h %.1f)  P40 alone %.4f\n",
+                            S, N, inverse, spread.ratio, spread.lowest, spread.highest, spread.meanRatio,
                             today.ratio);
-                EXPECT_LT(std::abs(spread.ratio - 1.0), 0.03) << "S " << S << " N " << N << " 1/h " << inverse;
+                EXPECT_LT(std::abs(spread.ratio - 1.0), 0.03)
+                    << "S " << S << " N " << N << " 1/h " << inverse;
                 EXPECT_LT(spread.balance, 1e-12) << "S " << S << " N " << N << " 1/h " << inverse;
                 EXPECT_LT(today.balance, 1e-12) << "S " << S << " N " << N << " 1/h " << inverse;
             }
