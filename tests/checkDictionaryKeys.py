@@ -101,6 +101,7 @@ KEY_LISTS = {
     "restartKeys": [""],
     "gridKeys": ["grid"],
     "collisionKeys": ["collision"],
+    "spreadKeys": ["collision.spread"],
     "airDict": ["air"],
     "materialKeys": ["fibers", INJECTOR, FIXED],
     # fibers: each stage's of the fibers

@@ -40,6 +40,11 @@ RealisedCapture::NodeParts RealisedCapture::summed(Terms terms)
     return parts;
 }
 
+void RealisedCapture::addNode(std::size_t node, double granted, double realised)
+{
+    nodes_[node].emplace_back(granted, realised);
+}
+
 void RealisedCapture::scaleRemoval(CaptureLimit& limit) const
 {
     for (const auto& [node, terms] : nodes_)

@@ -39,6 +39,9 @@ public:
     // CaptureLimit::addDemand): each realises the same hits, N times one fiber's (P41).
     void add(const SampleCapture& sample, double realisedOverGranted, const CaptureLimit& limit,
              double interceptors = 1.0);
+    // A node's part that no sample carries: a spread population's granted and realised mass
+    // there (SpreadPopulations.hpp; kg), added to the node's terms.
+    void addNode(std::size_t node, double granted, double realised);
     // q_n on every node a sample was added for (CaptureLimit::scaleRemoval; all samples of
     // the step must have been added, with ratio 0 for those that caught nothing).
     void scaleRemoval(CaptureLimit& limit) const;

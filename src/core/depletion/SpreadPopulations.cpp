@@ -70,9 +70,40 @@ void SpreadPopulations::addLength(const Eigen::Vector3d& centre, double length, 
         for (int c = 0; c < w.count; ++c)
         {
             const auto u = static_cast<std::size_t>(c);
-            count.add(levelKey(l, w.node[u]), length * w.weight[u]);
+            const double terms[2] = {length * w.weight[u], w.weight[u]};
+            count.add(levelKey(l, w.node[u]), terms);
         }
     }
+}
+
+double SpreadPopulations::reachOn(int l, const Eigen::Vector3d& centre, double ownLength,
+                                  const LevelTable& count) const
+{
+    const SpreadLevel& lvl = level(l);
+    const CornerWeights w = lvl.weightsAt(centre);
+    // lambda^ and n^ at the centre: the counts read per volume, the fiber's own out
+    double lambda = 0.0, number = 0.0;
+    for (int c = 0; c < w.count; ++c)
+    {
+        const auto u = static_cast<std::size_t>(c);
+        const double* counted = count.find(levelKey(l, w.node[u]));
+        const double length = counted ? counted[0] - ownLength * w.weight[u] : 0.0;
+        const double fibers = counted ? counted[1] - (ownLength > 0.0 ? w.weight[u] : 0.0) : 0.0;
+        lambda += w.weight[u] * std::max(0.0, length) / lvl.volume(w.node[u]);
+        number += w.weight[u] * std::max(0.0, fibers) / lvl.volume(w.node[u]);
+    }
+    double spacing = 0.0;
+    for (int d = 0; d < 3; ++d)
+    {
+        spacing = grid_.flat(d) ? spacing : std::max(spacing, lvl.spec().spacing(d));
+    }
+    // The fibers that meet a ball of radius sigma (Steiner: the ball grown by a segment of
+    // length L has the volume 4/3 pi sigma^3 + pi sigma^2 L); on a grid with a flat
+    // direction the fibers span it and a disc meets pi sigma^2 lambda of them
+    const double sigma = spacing / std::sqrt(3.0);
+    const double inside
+        = grid_.activeDimensions() == 3 ? 4.0 / 3.0 * pi * sigma * sigma * sigma * number : 0.0;
+    return pi * sigma * sigma * lambda + inside;
 }
 
 LevelChoice SpreadPopulations::choose(const Eigen::Vector3d& centre, double ownLength,
@@ -81,26 +112,10 @@ LevelChoice SpreadPopulations::choose(const Eigen::Vector3d& centre, double ownL
     LevelChoice choice;
     for (int l = 0; l < levelCount(); ++l)
     {
-        const SpreadLevel& lvl = level(l);
-        const CornerWeights w = lvl.weightsAt(centre);
-        // lambda^ at the centre: the count read per volume, the fiber's own deposit out
-        double lambda = 0.0;
-        for (int c = 0; c < w.count; ++c)
-        {
-            const auto u = static_cast<std::size_t>(c);
-            const double others = count.value(levelKey(l, w.node[u]), 0) - ownLength * w.weight[u];
-            lambda += w.weight[u] * std::max(0.0, others) / lvl.volume(w.node[u]);
-        }
-        double spacing = 0.0;
-        for (int d = 0; d < 3; ++d)
-        {
-            spacing = grid_.flat(d) ? spacing : std::max(spacing, lvl.spec().spacing(d));
-        }
         choice.level = l;
-        choice.reach = pi * spacing * spacing / 3.0 * lambda;
+        choice.reach = reachOn(l, centre, ownLength, count);
         if (choice.reach >= neighbours_)
         {
-            choice.capped = false;
             return choice;
         }
     }
@@ -121,6 +136,17 @@ void SpreadPopulations::addDemand(const Eigen::Vector3d& point, int level, doubl
         const double part = volume * w.weight[u];
         const double terms[2] = {part, part * (1.0 + sigma[u])};
         demand.add(levelKey(level, w.node[u]), terms);
+    }
+}
+
+void SpreadPopulations::addAtLevel(const Eigen::Vector3d& point, int level, double amount,
+                                   LevelTerms& terms) const
+{
+    const CornerWeights w = this->level(level).weightsAt(point);
+    for (int c = 0; c < w.count; ++c)
+    {
+        const auto u = static_cast<std::size_t>(c);
+        terms.add(levelKey(level, w.node[u]), amount * w.weight[u]);
     }
 }
 

@@ -2,13 +2,14 @@
 // around it and acting on the spray as what they are (docs/model.md sec. 12, P49-P54).
 //
 // Per step, on the levels of the coupling grid (SpreadLevel: spacing H = r h):
-//  1. Count (P52). Every computed fiber's length at its centre, on every level's nodes with
-//     multilinear weights (addLength): the computed fibers' length per volume, lambda_C =
-//     count_C / V_C, each computed fiber once whatever its weight.
+//  1. Count (P52). Every computed fiber's length and number at its centre, on every level's
+//     nodes with multilinear weights (addLength): the computed fibers' length and number
+//     per volume, lambda_C and n_C, each computed fiber once whatever its weight.
 //  2. Level (P52, P53). A weighted fiber's population takes the finest level on which
-//     pi (H^2 / 3) lambda^ >= k (`neighbours`), lambda^ the count interpolated at the fiber's
-//     centre less the fiber's own (choose): its kernel, sigma = H / sqrt(3), reaches k
-//     other computed fibers. None does: the coarsest level, marked capped.
+//     pi sigma^2 lambda^ + 4/3 pi sigma^3 n^ >= k (`neighbours`; sigma = H / sqrt(3); the
+//     second term in 3D only), lambda^ and n^ the counts interpolated at the fiber's centre
+//     less the fiber's own (choose): its kernel reaches k other computed fibers (the
+//     fibers a ball of radius sigma meets). None does: the coarsest level, marked capped.
 //  3. Demand (P50, P53, P54). A collision sample s of swept volume kappa_s (eq. 9's mass
 //     over the density it read) stands for N - 1 spread fibers: on its level's nodes C,
 //     share_C += (N - 1) kappa_s w_sC and depth_C += that times (1 + sigma~_sC), sigma~ the
@@ -72,13 +73,17 @@ public:
     const GridSpec& grid() const { return grid_; }
 
     // --- 1. count -------------------------------------------------------------------------
-    // A computed fiber of `length` with its centre at `centre`, on every level (width 1).
+    // A computed fiber of `length` with its centre at `centre`, on every level (width 2:
+    // length, number).
     void addLength(const Eigen::Vector3d& centre, double length, LevelTerms& count) const;
 
     // --- 2. level -------------------------------------------------------------------------
     // The finest level whose kernel reaches k other computed fibers at the fiber's centre
     // (count: the summed table of every computed fiber's addLength, its own included).
     LevelChoice choose(const Eigen::Vector3d& centre, double ownLength, const LevelTable& count) const;
+    // The other computed fibers the kernel of level l reaches at the centre: pi sigma^2
+    // lambda^ + 4/3 pi sigma^3 n^ (ownLength 0: a point that is no fiber, nothing taken out).
+    double reachOn(int l, const Eigen::Vector3d& centre, double ownLength, const LevelTable& count) const;
 
     // --- 3. demand ------------------------------------------------------------------------
     // A sample of N = fibers physical fibers on `level`: volume = (N - 1) kappa_s (m^3),
@@ -86,8 +91,12 @@ public:
     // (share, depth).
     void addDemand(const Eigen::Vector3d& point, int level, double volume, const Eigen::Vector3d& strip,
                    double fibers, LevelTerms& demand) const;
+    // amount w_C on the level's nodes at the point (width 1): e.g. the realised hits'
+    // r_s (N - 1) kappa_s of a sample.
+    void addAtLevel(const Eigen::Vector3d& point, int level, double amount, LevelTerms& terms) const;
     // P_n and P'_n of the grid nodes the table's level nodes reach and keep(node) accepts,
-    // in node order (each node's terms in key order).
+    // in node order (each node's terms in key order). A table of width 1 (a level field
+    // without depth) gives its prolongation in share, depth 0.
     template <class Keep>
     std::vector<NodeSpread> prolong(const LevelTable& demand, Keep&& keep) const;
 
@@ -115,8 +124,9 @@ std::vector<NodeSpread> SpreadPopulations::prolong(const LevelTable& demand, Kee
         const SpreadLevel& lvl = level(levelOfKey(key));
         const std::size_t coarse = nodeOfKey(key);
         const double volume = lvl.volume(coarse);
-        const double share = demand.values[2 * i] / volume;
-        const double depth = demand.values[2 * i + 1] / volume;
+        const auto w = static_cast<std::size_t>(demand.width);
+        const double share = demand.values[w * i] / volume;
+        const double depth = w > 1 ? demand.values[w * i + 1] / volume : 0.0;
         lvl.forEachFineNode(coarse,
                             [&](std::size_t node, double hat)
                             {

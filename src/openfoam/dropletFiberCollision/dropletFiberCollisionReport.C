@@ -59,6 +59,7 @@ void Foam::functionObjects::dropletFiberCollision::writeAtWriteTime()
     laydown_.reportAtWrite();
     population_.reportBalanceAtWrite(capture_.captured());
     capture_.reportBinderBalance();
+    capture_.reportSpread();
     statistics_.reportBalance(Info, type() + " " + name(), time_.timeName());
     spray_.reportCloudBalance(capture_.step().airborne, capture_.captured());
     grid_.reportAtWrite();

@@ -86,7 +86,8 @@ std::vector<double> Foam::dropletFiber::gridBlocks::grantCapture
     const double dt,
     ::dropletFiber::CaptureLimitReport& report,
     std::vector<double>& captured,
-    parallelStatistics& statistics
+    parallelStatistics& statistics,
+    spreadStep* spread
 )
 {
     const auto what = parallelStatistics::traffic::gridQueries;
@@ -142,10 +143,27 @@ std::vector<double> Foam::dropletFiber::gridBlocks::grantCapture
             }
         }
     }
+    // The spread populations' demand on the nodes owned here (sec. 12)
+    spreadLevels_ = nullptr;
+    spreadHeld_ = ::dropletFiber::LevelTable();
+    if (spread)
+    {
+        spreadOntoNodes(grid, *spread, statistics);
+    }
     // P13 on the nodes owned here, the parcels' removal (P14), then each
     // request's granted part back
     report = limit.limit(grid);
     captured = removeCaptured(grid, limit, parcels, dt, report, statistics);
+    if (spread)
+    {
+        spread->grants =
+            restrictOverBlocks
+            (
+                spread->demand,
+                [&](const std::size_t n) { return limit.grantedSupply(n); },
+                statistics
+            );
+    }
     return grantedMasses(limit, points, massShares, requests, statistics);
 }
 

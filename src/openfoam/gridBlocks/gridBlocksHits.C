@@ -25,7 +25,8 @@ std::vector<double> Foam::dropletFiber::gridBlocks::realiseCapture
     const std::vector<double>& realisedOverGranted,
     std::vector<double>& cut,
     bool& fellShort,
-    parallelStatistics& statistics
+    parallelStatistics& statistics,
+    spreadStep* spread
 )
 {
     ::dropletFiber::CaptureLimit& limit = limit_;
@@ -65,6 +66,10 @@ std::vector<double> Foam::dropletFiber::gridBlocks::realiseCapture
             }
         }
     }
+    if (spread)
+    {
+        realiseSpread(*spread, realised, statistics);
+    }
     realised.scaleRemoval(limit);
     // x_p, the parcels' summed parts (their clamped terms: addShortfall)
     const std::vector<double> summedParts = realisedFractions(limit, statistics);
@@ -91,6 +96,19 @@ std::vector<double> Foam::dropletFiber::gridBlocks::realiseCapture
                 limit, unremoved, summedParts, realisedOverGranted, ratios,
                 statistics
             );
+        if (spread)
+        {
+            spread->cut =
+                restrictOverBlocks
+                (
+                    spread->demand,
+                    [&](const std::size_t n)
+                    {
+                        return limit.grantedSupply(n)*limit.unremovedShare(n);
+                    },
+                    statistics
+                );
+        }
     }
     return fraction;
 }

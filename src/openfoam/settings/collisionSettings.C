@@ -17,8 +17,11 @@ using namespace Foam;
 const wordList collisionKeys
 {
     "sampling", "samplesPerSegment", "radiusAverage", "depletion", "mode",
-    "seed"
+    "seed", "spread"
 };
+
+//- The entries of collision.spread: read by readSpreadSettings
+const wordList spreadKeys{"active", "neighbours", "maxSpacing"};
 
 
 //- Sample points per segment: midpoint 1 (the paper); integrated:
@@ -117,6 +120,25 @@ bool Foam::dropletFiber::readDepletion(const dictionary& dict)
     const dictionary collisionDict = optionalSubDict(dict, "collision");
     checkKeys(collisionDict, collisionKeys);
     return getSwitch(collisionDict, "depletion", true);
+}
+
+
+Foam::dropletFiber::spreadSettings Foam::dropletFiber::readSpreadSettings
+(
+    const dictionary& dict
+)
+{
+    // The populations of weighted fibers (docs/model.md sec. 12): on by
+    // default, a kernel reaching `neighbours` other computed fibers, levels
+    // up to maxSpacing (0: half the grid box's largest extent)
+    const dictionary collisionDict = optionalSubDict(dict, "collision");
+    const dictionary spreadDict = optionalSubDict(collisionDict, "spread");
+    checkKeys(spreadDict, spreadKeys);
+    spreadSettings settings;
+    settings.active = getSwitch(spreadDict, "active", true);
+    settings.neighbours = getPositive(spreadDict, "neighbours", 8);
+    settings.maxSpacing = getNonNegative(spreadDict, "maxSpacing", 0);
+    return settings;
 }
 
 

@@ -110,7 +110,7 @@ struct SpreadMat
             = stripAcrossFlow(strip, Eigen::Vector3d(0.0, 0.0, thickness), Eigen::Vector3d(0.0, speed, 0.0));
         if (populations)
         {
-            LevelTerms count(1), terms(2);
+            LevelTerms count(2), terms(2);
             for (const Eigen::Vector3d& c : centres)
             {
                 spreads.addLength(c, thickness, count);

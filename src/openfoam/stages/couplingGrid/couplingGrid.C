@@ -358,13 +358,14 @@ std::vector<double> Foam::dropletFiber::couplingGrid::grantCapture
     const scalar dt,
     ::dropletFiber::CaptureLimitReport& report,
     std::vector<double>& captured,
-    parallelStatistics& statistics
+    parallelStatistics& statistics,
+    spreadStep* spread
 )
 {
     return blocks_->grantCapture
     (
         *grid_, points, shares, interceptors, strips, parcels, dt, report,
-        captured, statistics
+        captured, statistics, spread
     );
 }
 
@@ -375,12 +376,13 @@ std::vector<double> Foam::dropletFiber::couplingGrid::realiseCapture
     const std::vector<double>& ratios,
     std::vector<double>& cut,
     bool& fellShort,
-    parallelStatistics& statistics
+    parallelStatistics& statistics,
+    spreadStep* spread
 )
 {
     return blocks_->realiseCapture
     (
-        parcels, ratios, cut, fellShort, statistics
+        parcels, ratios, cut, fellShort, statistics, spread
     );
 }
 

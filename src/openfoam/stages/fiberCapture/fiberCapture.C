@@ -147,6 +147,7 @@ void Foam::dropletFiber::fiberCapture::read
 )
 {
     collision_ = readCollisionSettings(dict);
+    spread_ = readSpreadSettings(dict);
     const bool depletion = readDepletion(dict);
     if (running && depletion != depletion_)
     {

@@ -65,14 +65,31 @@ Foam::dropletFiber::fiberCapture::limitCapture
             demanded += interceptors[s]*sampleMasses[s];
         }
     }
+    // Spread populations (sec. 12): the lines ask as one fiber each, the
+    // populations on their levels
+    const bool spread = spreads(held);
+    const std::vector<Eigen::Vector3d> strips =
+        stripsAcrossFlow(held, fields, samplesPerSegment);
+    if (spread)
+    {
+        spreadDemand
+        (
+            held, grid, points, fields, sampleMasses, strips,
+            samplesPerSegment, statistics
+        );
+    }
     ::dropletFiber::CaptureLimitReport report;
-    const std::vector<double> granted =
+    std::vector<double> granted =
         grid.grantCapture
         (
-            points, shares, held.weighted ? &interceptors : nullptr,
-            stripsAcrossFlow(held, fields, samplesPerSegment), parcels, dt,
-            report, capturedFraction_, statistics
+            points, shares, held.weighted && !spread ? &interceptors : nullptr,
+            strips, parcels, dt, report, capturedFraction_, statistics,
+            spread ? &spreadStep_ : nullptr
         );
+    if (spread)
+    {
+        granted = spreadGranted(granted, strips);
+    }
     step_ = depletionSummary();
     step_.demanded = demanded;
     step_.nodesLimited = label(report.nodesLimited);
