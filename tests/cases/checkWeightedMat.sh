@@ -13,6 +13,10 @@
 #   --parallel: the weighted mat at the first S also on 2 ranks (cut across the mat),
 #   its table the serial run's to 1e-8; with 40 um droplets (6 um ones follow the air,
 #   whose parallel solution differs from the serial one at the solver's tolerance).
+#   --spacings: the first S with weight 100 (46 fibers) on grids of 2, 1 and 0.5 mm and,
+#   for contrast, at 0.5 mm with collision.spread off (P40 alone); checkWeightedSpacings.py
+#   checks the three spread runs the same penetration within 2 % and each within 3 % of
+#   exp(-S), and the run without spread off them by more than 10 %.
 #   --restart: the weighted mat at the first S run to 15 ms, restarted to the end:
 #   its state holds the weights, the table goes on with the same physical fibers,
 #   and the capture, once the parcels flying at the restart passed the mat, is the
@@ -25,6 +29,7 @@ mode=serial
 case "${1:-}" in
     --parallel) mode=parallel; shift ;;
     --restart) mode=restart; shift ;;
+    --spacings) mode=spacings; shift ;;
 esac
 caseDir="$1"; work="$2"; shift 2
 here="$(cd "${0%/*}" && pwd)"
@@ -37,12 +42,13 @@ PY=/usr/bin/python3; [ -x "$PY" ] || PY=python3
 depths=("$@"); [ "${#depths[@]}" -gt 0 ] || depths=(1 2.302585092994046 4.6)
 matOptions=(--fiberRadius 2e-6 --dropletDiameter 6e-6)
 
-# prepare NAME S WEIGHT: a copy of the case with its mat, on the 2 mm grid
+# prepare NAME S WEIGHT [NODES]: a copy of the case with its mat, on the 2 mm grid (or
+# the grid NODES)
 prepare() {
     local run="$work/$1"
     cp -r "$caseDir" "$run"
     "$PY" "$run/makeMat.py" "$run" "$2" 0.5 1 --represents "$3" "${matOptions[@]}"
-    foamDictionary -entry functions/dropletFiber/grid/nodes -set "(9 11 1)" \
+    foamDictionary -entry functions/dropletFiber/grid/nodes -set "${4:-(9 11 1)}" \
         "$run/system/controlDict" > /dev/null
     echo "$run"
 }
@@ -69,6 +75,20 @@ parallel)
     "$serial/Allrun" > /dev/null; checkRanClean "$serial"
     "$parallel/Allrun" -parallel > /dev/null; checkRanClean "$parallel"
     "$PY" "$here/compareTables.py" "$serial/$table" "$parallel/$table" 1e-8
+    ;;
+spacings)
+    cases=()
+    for nodes in "(9 11 1)" "(17 21 1)" "(33 41 1)"; do
+        run=$(prepare "h${nodes//[^0-9]/_}" "${depths[0]}" 100 "$nodes")
+        "$run/Allrun" > /dev/null; checkRanClean "$run"
+        cases+=("$run")
+    done
+    run=$(prepare withoutSpread "${depths[0]}" 100 "(33 41 1)")
+    foamDictionary -entry functions/dropletFiber/collision -add "{ spread { active false; } }" \
+        "$run/system/controlDict" > /dev/null
+    grep -q "active *false" "$run/system/controlDict" || die "collision.spread not switched off"
+    "$run/Allrun" > /dev/null; checkRanClean "$run"
+    "$PY" "$here/checkWeightedSpacings.py" --dropletDiameter 6e-6 "${cases[@]}" -- "$run"
     ;;
 restart)
     whole=$(prepare whole "${depths[0]}" 5)

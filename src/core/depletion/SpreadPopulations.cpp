@@ -17,14 +17,20 @@ namespace
 constexpr double pi = 3.14159265358979323846;
 }
 
-SpreadPopulations::SpreadPopulations(const GridSpec& grid, double neighbours, int maxRatio)
-    : grid_(grid), neighbours_(neighbours)
+SpreadPopulations::SpreadPopulations(const GridSpec& grid, double neighbours, int maxRatio,
+                                     double maxClustering)
+    : grid_(grid), neighbours_(neighbours), maxClustering_(maxClustering)
 {
     grid_.validate();
     if (!(neighbours > 0.0) || !std::isfinite(neighbours))
     {
         throw std::invalid_argument("spread populations: neighbours must be finite and > 0, not "
                                     + std::to_string(neighbours));
+    }
+    if (!(maxClustering >= 0.0) || !std::isfinite(maxClustering))
+    {
+        throw std::invalid_argument("spread populations: maxClustering must be finite and >= 0, not "
+                                    + std::to_string(maxClustering));
     }
     const int largest = maxRatio > 0 ? maxRatio : defaultMaxRatio(grid_);
     for (const int ratio : spreadLevelRatios(largest))
@@ -107,19 +113,31 @@ double SpreadPopulations::reachOn(int l, const Eigen::Vector3d& centre, double o
 }
 
 LevelChoice SpreadPopulations::choose(const Eigen::Vector3d& centre, double ownLength,
-                                      const LevelTable& count) const
+                                      const LevelTable& count, double opacity) const
 {
     LevelChoice choice;
     for (int l = 0; l < levelCount(); ++l)
     {
+        double spacing = 0.0;
+        for (int d = 0; d < 3; ++d)
+        {
+            spacing = grid_.flat(d) ? spacing : std::max(spacing, level(l).spec().spacing(d));
+        }
         choice.level = l;
+        choice.eps = opacity / spacing;
         choice.reach = reachOn(l, centre, ownLength, count);
+        if (choice.eps <= maxClustering_)
+        {
+            choice.why = LevelChoice::Why::thin;
+            return choice;
+        }
         if (choice.reach >= neighbours_)
         {
+            choice.why = LevelChoice::Why::reached;
             return choice;
         }
     }
-    choice.capped = true;
+    choice.why = LevelChoice::Why::capped;
     return choice;
 }
 

@@ -5,11 +5,12 @@
 //  1. Count (P52). Every computed fiber's length and number at its centre, on every level's
 //     nodes with multilinear weights (addLength): the computed fibers' length and number
 //     per volume, lambda_C and n_C, each computed fiber once whatever its weight.
-//  2. Level (P52, P53). A weighted fiber's population takes the finest level on which
-//     pi sigma^2 lambda^ + 4/3 pi sigma^3 n^ >= k (`neighbours`; sigma = H / sqrt(3); the
-//     second term in 3D only), lambda^ and n^ the counts interpolated at the fiber's centre
-//     less the fiber's own (choose): its kernel reaches k other computed fibers (the
-//     fibers a ball of radius sigma meets). None does: the coarsest level, marked capped.
+//  2. Level (P52, P53). A weighted fiber's population takes the finest level on which it
+//     is thin, (N - 1) c / (4 H) <= maxClustering (P55), or on which pi sigma^2 lambda^ +
+//     4/3 pi sigma^3 n^ >= k (`neighbours`; sigma = H / sqrt(3); the second term in 3D
+//     only), lambda^ and n^ the counts interpolated at the fiber's centre less the fiber's
+//     own (choose): its kernel reaches k other computed fibers (the fibers a ball of radius
+//     sigma meets). Neither: the coarsest level, marked capped.
 //  3. Demand (P50, P53, P54). A collision sample s of swept volume kappa_s (eq. 9's mass
 //     over the density it read) stands for N - 1 spread fibers: on its level's nodes C,
 //     share_C += (N - 1) kappa_s w_sC and depth_C += that times (1 + sigma~_sC), sigma~ the
@@ -49,20 +50,28 @@ struct NodeSpread
     double depth = 0.0;
 };
 
-// The level a population takes (choose).
+// The level a population takes (choose), and why there.
 struct LevelChoice
 {
+    enum class Why
+    {
+        thin,    // its clustering eps is small enough on this level (P55)
+        reached, // its kernel reaches `neighbours` other computed fibers (P52)
+        capped   // neither on any level: the coarsest allowed
+    };
     int level = 0;
-    double reach = 0.0;  // nu = pi (H^2 / 3) lambda^: the other computed fibers its kernel reaches
-    bool capped = false; // no level reached `neighbours`: the coarsest allowed
+    double reach = 0.0; // the other computed fibers its kernel reaches (reachOn)
+    double eps = 0.0;   // its clustering on the level, (N - 1) c / (4 H)
+    Why why = Why::thin;
 };
 
 class SpreadPopulations
 {
 public:
     // Levels of ratio 1, 2, 3, 4, 6, ... up to maxRatio (defaultMaxRatio when 0); neighbours
-    // k > 0. Throws std::invalid_argument.
-    SpreadPopulations(const GridSpec& grid, double neighbours, int maxRatio = 0);
+    // k > 0; maxClustering >= 0, the clustering eps a population may keep on its level.
+    // Throws std::invalid_argument.
+    SpreadPopulations(const GridSpec& grid, double neighbours, int maxRatio = 0, double maxClustering = 0.05);
 
     // The ratio whose spacing first reaches half the box's largest active extent.
     static int defaultMaxRatio(const GridSpec& grid);
@@ -78,9 +87,13 @@ public:
     void addLength(const Eigen::Vector3d& centre, double length, LevelTerms& count) const;
 
     // --- 2. level -------------------------------------------------------------------------
-    // The finest level whose kernel reaches k other computed fibers at the fiber's centre
-    // (count: the summed table of every computed fiber's addLength, its own included).
-    LevelChoice choose(const Eigen::Vector3d& centre, double ownLength, const LevelTable& count) const;
+    // The finest level on which the population is thin, (N - 1) c / (4 H) <= maxClustering
+    // (its clustering loss P55 is small: no need to spread it wider and blur the veil), or
+    // its kernel reaches k other computed fibers at the fiber's centre (no holes between
+    // populations); opacity = (N - 1) c / 4 [m], c the fiber's strip 2 (r_F + <r>). count:
+    // the summed table of every computed fiber's addLength, its own included.
+    LevelChoice choose(const Eigen::Vector3d& centre, double ownLength, const LevelTable& count,
+                       double opacity) const;
     // The other computed fibers the kernel of level l reaches at the centre: pi sigma^2
     // lambda^ + 4/3 pi sigma^3 n^ (ownLength 0: a point that is no fiber, nothing taken out).
     double reachOn(int l, const Eigen::Vector3d& centre, double ownLength, const LevelTable& count) const;
@@ -111,6 +124,7 @@ public:
 private:
     GridSpec grid_;
     double neighbours_;
+    double maxClustering_;
     std::vector<SpreadLevel> levels_;
 };
 

@@ -21,7 +21,7 @@ const wordList collisionKeys
 };
 
 //- The entries of collision.spread: read by readSpreadSettings
-const wordList spreadKeys{"active", "neighbours", "maxSpacing"};
+const wordList spreadKeys{"active", "neighbours", "maxClustering", "maxSpacing"};
 
 
 //- Sample points per segment: midpoint 1 (the paper); integrated:
@@ -129,14 +129,16 @@ Foam::dropletFiber::spreadSettings Foam::dropletFiber::readSpreadSettings
 )
 {
     // The populations of weighted fibers (docs/model.md sec. 12): on by
-    // default, a kernel reaching `neighbours` other computed fibers, levels
-    // up to maxSpacing (0: half the grid box's largest extent)
+    // default, each on the finest level where it is thin (clustering eps at
+    // most maxClustering) or its kernel reaches `neighbours` other computed
+    // fibers, levels up to maxSpacing (0: half the grid box's largest extent)
     const dictionary collisionDict = optionalSubDict(dict, "collision");
     const dictionary spreadDict = optionalSubDict(collisionDict, "spread");
     checkKeys(spreadDict, spreadKeys);
     spreadSettings settings;
     settings.active = getSwitch(spreadDict, "active", true);
     settings.neighbours = getPositive(spreadDict, "neighbours", 8);
+    settings.maxClustering = getNonNegative(spreadDict, "maxClustering", 0.05);
     settings.maxSpacing = getNonNegative(spreadDict, "maxSpacing", 0);
     return settings;
 }

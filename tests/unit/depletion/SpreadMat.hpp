@@ -43,6 +43,7 @@ struct SpreadMat
     double weight = 10.0; // N
     bool spread = true;
     double neighbours = 8.0;
+    double maxClustering = 0.05;
 
     GridSpec grid() const
     {
@@ -101,7 +102,7 @@ struct SpreadMat
             limit.addDemand(lines.back(), populations ? 1.0 : weight);
         }
         SpreadMatResult result;
-        const SpreadPopulations spreads(spec, neighbours);
+        const SpreadPopulations spreads(spec, neighbours, 0, maxClustering);
         LevelTable demand;
         std::vector<LevelChoice> choices;
         // The swept volume of one fiber over the step, its strip across the flow
@@ -118,10 +119,10 @@ struct SpreadMat
             const LevelTable counted = count.summed();
             for (const Eigen::Vector3d& c : centres)
             {
-                choices.push_back(spreads.choose(c, thickness, counted));
+                choices.push_back(spreads.choose(c, thickness, counted, (weight - 1.0) * strip / 4.0));
                 spreads.addDemand(c, choices.back().level, (weight - 1.0) * kappa, q, weight, terms);
                 result.meanRatio += spreads.level(choices.back().level).ratio() / double(centres.size());
-                result.capped += choices.back().capped ? 1 : 0;
+                result.capped += choices.back().why == LevelChoice::Why::capped ? 1 : 0;
             }
             demand = terms.summed();
             for (const NodeSpread& n : spreads.prolong(demand, [](std::size_t) { return true; }))

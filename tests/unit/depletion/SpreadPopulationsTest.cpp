@@ -124,8 +124,9 @@ TEST(SpreadPopulations, ChosenKernelReachesTheNeighboursADirectCountFinds)
         // Probes away from the faces (the count is the box's there)
         const Eigen::Vector3d probe = g.lower + Eigen::Vector3d(0.5, 0.5, 0.5)
             + 0.6 * Eigen::Vector3d(unit(rng), unit(rng), unit(rng));
-        const LevelChoice choice = spreads.choose(probe, 0.0, counted);
-        ASSERT_FALSE(choice.capped);
+        // Opaque populations (eps 10 / H): the level by the count alone
+        const LevelChoice choice = spreads.choose(probe, 0.0, counted, 10.0);
+        ASSERT_EQ(choice.why, LevelChoice::Why::reached);
         EXPECT_GE(choice.reach, 8.0);
         if (choice.level > 0)
         {
@@ -143,6 +144,26 @@ TEST(SpreadPopulations, ChosenKernelReachesTheNeighboursADirectCountFinds)
     }
     // The mean over 200 probes of counts of about 10: a few per cent of sampling error
     EXPECT_NEAR(found / reach, 1.0, 0.1) << "mean reach " << reach / probes << ", found " << found / probes;
+}
+
+TEST(SpreadPopulations, ThinPopulationsStayOnTheFinestLevelThatKeepsThemThin)
+{
+    // eps = (N - 1) c / (4 H) <= 0.05: the finest such level, whatever the count
+    const GridSpec g = box3D(32, 1.6); // h = 0.05
+    const SpreadPopulations spreads(g, 8.0);
+    const LevelTable none;
+    const Eigen::Vector3d centre(0.9, 0.6, 1.1);
+    const LevelChoice thin = spreads.choose(centre, 0.1, none, 0.04 * 0.05);
+    EXPECT_EQ(thin.level, 0);
+    EXPECT_EQ(thin.why, LevelChoice::Why::thin);
+    // 0.049 * 0.15: H = 0.15 (ratio 3) is the first that keeps it below 0.05
+    const LevelChoice wider = spreads.choose(centre, 0.1, none, 0.049 * 0.15);
+    EXPECT_EQ(spreads.level(wider.level).ratio(), 3);
+    EXPECT_NEAR(wider.eps, 0.049, 1e-12);
+    // Never thin and no other fibers: capped at the coarsest level
+    const LevelChoice capped = spreads.choose(centre, 0.1, none, 100.0);
+    EXPECT_EQ(capped.why, LevelChoice::Why::capped);
+    EXPECT_EQ(capped.level, spreads.levelCount() - 1);
 }
 
 TEST(SpreadPopulations, LevelTermsSumPerKeyInKeyOrder)
@@ -170,6 +191,7 @@ TEST(SpreadPopulations, BadNeighboursAreRefused)
     const GridSpec g = box3D(8, 1.0);
     EXPECT_THROW(SpreadPopulations(g, 0.0), std::invalid_argument);
     EXPECT_THROW(SpreadPopulations(g, std::nan("")), std::invalid_argument);
+    EXPECT_THROW(SpreadPopulations(g, 8.0, 0, -0.1), std::invalid_argument);
     // The default coarsest level: its spacing first reaches half the box
     const SpreadPopulations spreads(g, 8.0);
     EXPECT_EQ(spreads.level(spreads.levelCount() - 1).ratio(), 4);

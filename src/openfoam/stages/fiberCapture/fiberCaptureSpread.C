@@ -42,6 +42,29 @@ bool sameGrid(const ::dropletFiber::GridSpec& a, const ::dropletFiber::GridSpec&
 {
     return a.lower == b.lower && a.upper == b.upper && a.nodes == b.nodes;
 }
+
+// The widest strip c = 2 (r_F + <r>) of a fiber's samples (their q_d sum to c), from
+// sample `first` and segment `segment` on
+double widestStrip
+(
+    const std::vector<Eigen::Vector3d>& strips,
+    std::size_t first,
+    const ::dropletFiber::Fiber& fiber,
+    const std::vector<int>& samplesPerSegment,
+    std::size_t segment
+)
+{
+    double widest = 0;
+    for (Eigen::Index j = 0; j < fiber.segmentCount(); ++j)
+    {
+        for (int s = 0; s < samplesPerSegment[segment]; ++s)
+        {
+            widest = std::max(widest, strips[first++].sum());
+        }
+        ++segment;
+    }
+    return widest;
+}
 }
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -76,7 +99,10 @@ void Foam::dropletFiber::fiberCapture::spreadDemand
             spread_.maxSpacing > 0 ? max(1, int(std::floor(spread_.maxSpacing/h + 1e-9))) : 0;
         populations_.reset
         (
-            new ::dropletFiber::SpreadPopulations(spec, spread_.neighbours, maxRatio)
+            new ::dropletFiber::SpreadPopulations
+            (
+                spec, spread_.neighbours, maxRatio, spread_.maxClustering
+            )
         );
     }
     const ::dropletFiber::SpreadPopulations& levels = *populations_;
@@ -98,7 +124,7 @@ void Foam::dropletFiber::fiberCapture::spreadDemand
     spreadStep_.populations = populations_.get();
     spreadPoints_ = points;
     sampleLevel_.assign(points.size(), 0);
-    sampleCapped_.assign(points.size(), 0);
+    sampleWhy_.assign(points.size(), ::dropletFiber::LevelChoice::Why::thin);
     sampleVolume_.assign(points.size(), 0.0);
     sampleFibers_.assign(points.size(), 1.0);
     ::dropletFiber::LevelTerms terms(2);
@@ -108,9 +134,14 @@ void Foam::dropletFiber::fiberCapture::spreadDemand
     {
         const ::dropletFiber::Fiber& fiber = held.fibers[f];
         const scalar N = fiber.represents();
+        const std::size_t first = next;
         const ::dropletFiber::LevelChoice choice =
             N > 1
-          ? levels.choose(shape[f].first, shape[f].second, counted)
+          ? levels.choose
+            (
+                shape[f].first, shape[f].second, counted,
+                (N - 1)*widestStrip(strips, first, fiber, samplesPerSegment, segment)/4
+            )
           : ::dropletFiber::LevelChoice();
         for (Eigen::Index j = 0; j < fiber.segmentCount(); ++j)
         {
@@ -123,7 +154,7 @@ void Foam::dropletFiber::fiberCapture::spreadDemand
                 }
                 // The swept volume kappa_s of eq. 9: its mass over the density read
                 sampleLevel_[next] = choice.level;
-                sampleCapped_[next] = choice.capped ? 1 : 0;
+                sampleWhy_[next] = choice.why;
                 sampleVolume_[next] = (N - 1)*sampleMasses[next]/fields[next].rho;
                 levels.addDemand
                 (
@@ -166,8 +197,9 @@ std::vector<double> Foam::dropletFiber::fiberCapture::spreadGranted
             const scalar c = strips[s].sum();
             resolution_.captured += G;
             resolution_.sigma += G*sigma;
-            resolution_.capped += sampleCapped_[s] ? G : 0;
-            resolution_.grid += level == 0 ? G : 0;
+            using why = ::dropletFiber::LevelChoice::Why;
+            resolution_.capped += sampleWhy_[s] == why::capped ? G : 0;
+            resolution_.thin += sampleWhy_[s] == why::thin ? G : 0;
             resolution_.eps += G*(sampleFibers_[s] - 1)*c/(4*H);
             resolution_.sigmaMin = min(resolution_.sigmaMin, sigma);
             resolution_.sigmaMax = max(resolution_.sigmaMax, sigma);
@@ -237,7 +269,7 @@ void Foam::dropletFiber::fiberCapture::reportSpread()
     sums[0] = resolution_.captured;
     sums[1] = resolution_.sigma;
     sums[2] = resolution_.capped;
-    sums[3] = resolution_.grid;
+    sums[3] = resolution_.thin;
     sums[4] = resolution_.eps;
     Pstream::listCombineGather(sums, plusEqOp<scalar>());
     Pstream::listCombineScatter(sums);
@@ -250,13 +282,14 @@ void Foam::dropletFiber::fiberCapture::reportSpread()
     }
     const scalar capped = sums[2]/sums[0];
     const scalar eps = sums[4]/sums[0];
-    const scalar onGrid = sums[3]/sums[0];
+    const scalar thin = sums[3]/sums[0];
     Info<< type() << " " << name() << " spread populations at time "
-        << time_.timeName() << " (docs/model.md sec. 12, P57; weighted by"
+        << time_.timeName() << " (docs/model.md sec. 12, P57; shares of"
         << " their capture since the last write):" << nl
         << "    kernel sigma / h " << sums[1]/sums[0] << " (" << sigmaMin
-        << " to " << sigmaMax << "), capped " << capped
-        << ", on the grid's own level " << onGrid << ", clustering eps "
+        << " to " << sigmaMax << "); thin on their level " << thin
+        << ", reaching " << spread_.neighbours << " other computed fibers "
+        << 1 - thin - capped << ", capped " << capped << "; clustering eps "
         << eps << nl << endl;
     if (capped > 0.05)
     {
@@ -276,12 +309,6 @@ void Foam::dropletFiber::fiberCapture::reportSpread()
             << " the populations are opaque on their levels (clustering eps "
             << eps << " > 0.25): the capture may be low by up to eps where"
             << " the veil is thin (docs/model.md sec. 12, P55)." << endl;
-    }
-    if (onGrid > 0.5)
-    {
-        Info<< "    more than half of it on the grid's own level: the coupling"
-            << " grid is coarser than the populations need and the capture"
-            << " follows its spacing" << nl << endl;
     }
 }
 
