@@ -36,3 +36,21 @@ set_tests_properties(case.fiberCurtain.restart.parallel PROPERTIES LABELS "case"
 add_test(NAME case.fiberCurtain.coupledWithoutSource
   COMMAND ${CASES}/checkCoupledWithoutSource.sh ${CASES}/fiberCurtain ${RUN}/coupledWithoutSource)
 set_tests_properties(case.fiberCurtain.coupledWithoutSource PROPERTIES LABELS "case" TIMEOUT 300)
+
+# The populations' drag spread over their kernels' cells (docs/model.md sec. 12, P56;
+# collision.spread.maxClustering 0: the levels by the count, above the grid's own): the
+# same budgets every step (the air gets exactly what the fibers lose), the log says how
+# much was spread, and 2 ranks give the serial run's tables (1e-8)
+foreach(mode serial parallel)
+  add_test(NAME case.fiberCurtain.spreadDrag.${mode}
+    COMMAND ${CASES}/runEdited.sh ${CASES}/fiberCurtain ${RUN}/fiberCurtain.spreadDrag.${mode} ${mode}
+      "functions/dropletFiber/collision { spread { maxClustering 0; } }" --
+      bash -c "'${PYTHON3}' '${CASES}/checkFiberCurtain.py' \"$0\" && grep -q 'of which spread with the weighted fibers. populations over their kernels. cells (-\\?[0-9]' \"$0\"/log.pimpleFoam")
+  set_tests_properties(case.fiberCurtain.spreadDrag.${mode} PROPERTIES LABELS "case" TIMEOUT 180
+    PROCESSORS $<IF:$<STREQUAL:${mode},serial>,1,2> FIXTURES_SETUP fiberCurtain.spreadDrag.${mode})
+endforeach()
+add_test(NAME case.fiberCurtain.spreadDrag.serialEqualsParallel
+  COMMAND ${PYTHON3} ${CASES}/checkFiberCurtainSame.py ${RUN}/fiberCurtain.spreadDrag.serial
+    ${RUN}/fiberCurtain.spreadDrag.parallel 1e-8)
+set_tests_properties(case.fiberCurtain.spreadDrag.serialEqualsParallel PROPERTIES LABELS "case" TIMEOUT 60
+  FIXTURES_REQUIRED "fiberCurtain.spreadDrag.serial;fiberCurtain.spreadDrag.parallel")

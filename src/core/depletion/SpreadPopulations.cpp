@@ -126,7 +126,7 @@ LevelChoice SpreadPopulations::choose(const Eigen::Vector3d& centre, double ownL
         choice.level = l;
         choice.eps = opacity / spacing;
         choice.reach = reachOn(l, centre, ownLength, count);
-        if (choice.eps <= maxClustering_)
+        if (maxClustering_ > 0.0 && choice.eps <= maxClustering_)
         {
             choice.why = LevelChoice::Why::thin;
             return choice;

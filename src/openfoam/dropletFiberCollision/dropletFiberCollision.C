@@ -217,6 +217,7 @@ void Foam::functionObjects::dropletFiberCollision::advanceFibers
     const scalar dt
 )
 {
+    capture_.handPopulations(reaction_);
     population_.advance(motion_, dt, capture, statistics_, reaction_);
     capture_.countCaptured(population_.fibers(), capture);
     population_.removeLaid(laydown_.layDown(population_.fibers()));

@@ -16,33 +16,10 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "gridBlocks.H"
+#include "levelSums.H"
 
 #include <algorithm>
 #include <utility>
-
-namespace
-{
-// Terms of a received list: (key, width values) after each other
-void addReceived
-(
-    const Foam::List<Foam::scalar>& in,
-    const int width,
-    ::dropletFiber::LevelTerms& terms,
-    std::vector<std::pair<::dropletFiber::LevelKey, Foam::label>>* from,
-    const Foam::label proci
-)
-{
-    for (Foam::label i = 0; i + width < in.size(); i += width + 1)
-    {
-        const auto key = ::dropletFiber::LevelKey(in[i]);
-        terms.add(key, in.cdata() + i + 1);
-        if (from)
-        {
-            from->emplace_back(key, proci);
-        }
-    }
-}
-}
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -177,72 +154,23 @@ void Foam::dropletFiber::gridBlocks::realiseSpread
     parallelStatistics& statistics
 )
 {
-    if (!Pstream::parRun())
+    const auto owner = [&](const ::dropletFiber::LevelKey key)
     {
-        return local;
-    }
-    const auto what = parallelStatistics::traffic::gridQueries;
-    const int width = local.width;
-    forAll(outgoing_, proci)
+        return levelOwner(levels, key);
+    };
+    levelReceivers blocks;
+    if (toBlocks)
     {
-        outgoing_[proci].clear();
-    }
-    for (std::size_t i = 0; i < local.keys.size(); ++i)
-    {
-        DynamicList<scalar>& out = outgoing_[levelOwner(levels, local.keys[i])];
-        out.append(scalar(local.keys[i]));
-        for (int c = 0; c < width; ++c)
+        blocks = [&](const ::dropletFiber::LevelKey key, std::vector<int>& to)
         {
-            out.append(local.values[i*width + c]);
-        }
+            levelBlocks(levels, key, to);
+        };
     }
-    // At the owners: the terms in processor order, each key's givers
-    const List<List<scalar>> received = exchangeLists(statistics, what);
-    ::dropletFiber::LevelTerms terms(width);
-    std::vector<std::pair<::dropletFiber::LevelKey, label>> givers;
-    forAll(received, proci)
-    {
-        addReceived(received[proci], width, terms, &givers, proci);
-    }
-    const ::dropletFiber::LevelTable sums = terms.summed();
-    std::stable_sort
+    return sumOverProcessors
     (
-        givers.begin(), givers.end(),
-        [](const auto& a, const auto& b) { return a.first < b.first; }
+        local, owner, blocks, statistics,
+        parallelStatistics::traffic::gridQueries
     );
-    forAll(outgoing_, proci)
-    {
-        outgoing_[proci].clear();
-    }
-    std::size_t g = 0;
-    for (std::size_t i = 0; i < sums.keys.size(); ++i)
-    {
-        const ::dropletFiber::LevelKey key = sums.keys[i];
-        holders_.clear();
-        for (; g < givers.size() && givers[g].first == key; ++g)
-        {
-            holders_.push_back(int(givers[g].second));
-        }
-        if (toBlocks)
-        {
-            levelBlocks(levels, key, holders_);
-        }
-        for (const int proci : holders_)
-        {
-            outgoing_[proci].append(scalar(key));
-            for (int c = 0; c < width; ++c)
-            {
-                outgoing_[proci].append(sums.values[i*width + c]);
-            }
-        }
-    }
-    const List<List<scalar>> answers = exchangeLists(statistics, what);
-    ::dropletFiber::LevelTerms whole(width);
-    forAll(answers, proci)
-    {
-        addReceived(answers[proci], width, whole, nullptr, proci);
-    }
-    return whole.summed();
 }
 
 

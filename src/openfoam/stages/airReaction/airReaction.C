@@ -205,6 +205,8 @@ void Foam::dropletFiber::airReaction::startStep()
     cellCoefficient_ = Zero;
     fiberDrag_ = Zero;
     outside_ = Zero;
+    spreadOnAir_ = Zero;
+    spreadReturned_ = Zero;
 }
 
 
@@ -213,15 +215,23 @@ void Foam::dropletFiber::airReaction::addDrag
     const airSampler& sampler,
     const Eigen::Matrix3Xd& force,
     const Eigen::VectorXd& coefficient,
-    parallelStatistics& statistics
+    parallelStatistics& statistics,
+    const dragPointFibers* fibers
 )
 {
     // The air feels the opposite of the fibers' drag, in the cell each
-    // point's air was sampled in (on the processor that answered for it)
+    // point's air was sampled in (on the processor that answered for it);
+    // the spread populations' part over their kernels' cells (P56)
     vector outsideOnAir(Zero);
+    Eigen::Matrix3Xd onAir = -force;
+    Eigen::VectorXd pointCoefficient = coefficient;
+    if (fibers && populations_)
+    {
+        spreadPopulationDrag(*fibers, onAir, pointCoefficient, statistics);
+    }
     sampler.spreadToCells
     (
-        -force, coefficient, cellForce_, cellCoefficient_, outsideOnAir,
+        onAir, pointCoefficient, cellForce_, cellCoefficient_, outsideOnAir,
         statistics
     );
     const Eigen::Vector3d total = force.rowwise().sum();
@@ -263,6 +273,7 @@ void Foam::dropletFiber::airReaction::finishStep
                 << " " << onAir << " N (on the fibers " << onFibers
                 << " N, of points outside the mesh " << outside << " N)"
                 << nl;
+            reportSpreadDrag();
         }
         return;
     }

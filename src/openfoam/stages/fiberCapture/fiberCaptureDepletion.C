@@ -68,6 +68,7 @@ Foam::dropletFiber::fiberCapture::limitCapture
     // Spread populations (sec. 12): the lines ask as one fiber each, the
     // populations on their levels
     const bool spread = spreads(held);
+    spreadStep_ = spreadStep();
     const std::vector<Eigen::Vector3d> strips =
         stripsAcrossFlow(held, fields, samplesPerSegment);
     if (spread)

@@ -122,6 +122,7 @@ void Foam::dropletFiber::fiberCapture::spreadDemand
     // P53, P54: each weighted fiber's level, its samples' terms there
     spreadStep_ = spreadStep();
     spreadStep_.populations = populations_.get();
+    fiberLevel_.clear();
     spreadPoints_ = points;
     sampleLevel_.assign(points.size(), 0);
     sampleWhy_.assign(points.size(), ::dropletFiber::LevelChoice::Why::thin);
@@ -143,6 +144,10 @@ void Foam::dropletFiber::fiberCapture::spreadDemand
                 (N - 1)*widestStrip(strips, first, fiber, samplesPerSegment, segment)/4
             )
           : ::dropletFiber::LevelChoice();
+        if (N > 1)
+        {
+            fiberLevel_[held.id[f]] = choice.level;
+        }
         for (Eigen::Index j = 0; j < fiber.segmentCount(); ++j)
         {
             for (int s = 0; s < samplesPerSegment[segment]; ++s, ++next)
@@ -262,6 +267,20 @@ void Foam::dropletFiber::fiberCapture::spreadCut
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::dropletFiber::fiberCapture::handPopulations
+(
+    airReaction& reaction
+) const
+{
+    if (spreadStep_.populations)
+    {
+        reaction.spreadLike(populations_.get(), fiberLevel_);
+        return;
+    }
+    reaction.spreadLike(nullptr, {});
+}
+
 
 void Foam::dropletFiber::fiberCapture::reportSpread()
 {

@@ -14,6 +14,44 @@ Description
 #include "fiberMotion.H"
 #include "PstreamReduceOps.H"
 
+// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
+
+namespace
+{
+
+// Per drag point its fiber's id, weight and position: the air sample's
+// points (immobile false) or every point of the immobile fibers (true)
+Foam::dropletFiber::dragPointFibers pointFibers
+(
+    const std::vector<::dropletFiber::Fiber>& fibers,
+    const std::vector<Foam::label>& ids,
+    const bool immobile
+)
+{
+    Foam::dropletFiber::dragPointFibers points;
+    points.position =
+        immobile ? Eigen::Matrix3Xd(3, 0) : ::dropletFiber::airSamplePoints(fibers);
+    for (std::size_t f = 0; f < fibers.size(); ++f)
+    {
+        const ::dropletFiber::Fiber& fiber = fibers[f];
+        const Eigen::Index n =
+            immobile
+          ? (fiber.immobile() ? fiber.pointCount() : 0)
+          : ::dropletFiber::airSamplePointCount(fiber);
+        if (immobile && n)
+        {
+            points.position.conservativeResize(3, points.position.cols() + n);
+            points.position.rightCols(n) = fiber.positions();
+        }
+        points.id.insert(points.id.end(), std::size_t(n), ids[f]);
+        points.represents.insert(points.represents.end(), std::size_t(n), fiber.represents());
+    }
+    return points;
+}
+
+} // End anonymous namespace
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 void Foam::dropletFiber::fiberMotion::handMovingDrag
@@ -45,7 +83,8 @@ void Foam::dropletFiber::fiberMotion::handMovingDrag
             coefficient.segment(layout.firstPoint[f], n) *= fiber.represents();
         }
     }
-    reaction.addDrag(*air_, force, coefficient, statistics);
+    dragPointFibers fibers = pointFibers(held.fibers, held.id, false);
+    reaction.addDrag(*air_, force, coefficient, statistics, &fibers);
 }
 
 
@@ -101,9 +140,11 @@ void Foam::dropletFiber::fiberMotion::handImmobileDrag
             first += fiber.pointCount();
         }
     }
+    dragPointFibers fibers = pointFibers(held.fibers, held.id, true);
     reaction.addDrag
     (
-        *immobileAir_, drag.impulse, drag.coefficientTime, statistics
+        *immobileAir_, drag.impulse, drag.coefficientTime, statistics,
+        &fibers
     );
 }
 
