@@ -94,21 +94,8 @@ std::vector<double> Foam::dropletFiber::gridBlocks::realiseCapture
             cutSamples
             (
                 limit, unremoved, summedParts, realisedOverGranted, ratios,
-                statistics
+                statistics, spread
             );
-        if (spread)
-        {
-            spread->cut =
-                restrictOverBlocks
-                (
-                    spread->demand,
-                    [&](const std::size_t n)
-                    {
-                        return limit.grantedSupply(n)*limit.unremovedShare(n);
-                    },
-                    statistics
-                );
-        }
     }
     return fraction;
 }
@@ -240,10 +227,25 @@ std::vector<double> Foam::dropletFiber::gridBlocks::cutSamples
     const std::vector<double>& summedParts,
     const std::vector<double>& realisedOverGranted,
     const List<List<scalar>>& remoteRatios,
-    parallelStatistics& statistics
+    parallelStatistics& statistics,
+    spreadStep* spread
 )
 {
     addShortfalls(limit, unremoved, summedParts, statistics);
+    if (spread)
+    {
+        // The populations' cut on their levels (their samples read it)
+        spread->cut =
+            restrictOverBlocks
+            (
+                spread->demand,
+                [&](const std::size_t n)
+                {
+                    return limit.grantedSupply(n)*limit.unremovedShare(n);
+                },
+                statistics
+            );
+    }
     // Each sample's cut: this block's corners, then the owners' answers
     std::vector<double> cut(grantLocal_.size(), 0.0);
     for (std::size_t p = 0; p < grantLocal_.size(); ++p)

@@ -84,21 +84,14 @@ void Foam::dropletFiber::fiberCapture::countHits
         {
             ratios[s] = granted[s] > 0 ? hitMass[s]/granted[s] : 0;
         }
-        const bool spread = spreads(held);
-        if (spread)
-        {
-            spreadRealised(ratios);
-        }
+        spreadRealised(ratios);
         capturedFraction_ =
             grid.realiseCapture
             (
                 parcels, ratios, cut, fellShort, statistics,
-                spread ? &spreadStep_ : nullptr
+                spreadStep_.populations ? &spreadStep_ : nullptr
             );
-        if (spread)
-        {
-            spreadCut(ratios, cut);
-        }
+        spreadCut(ratios, cut);
     }
     if (discrete)
     {

@@ -75,15 +75,11 @@ bool Foam::dropletFiber::fiberCapture::spreads(const heldFibers& held) const
 }
 
 
-void Foam::dropletFiber::fiberCapture::spreadDemand
+::dropletFiber::LevelTable Foam::dropletFiber::fiberCapture::countFibers
 (
     const heldFibers& held,
     couplingGrid& grid,
-    const std::vector<Eigen::Vector3d>& points,
-    const std::vector<::dropletFiber::DropletFieldValue>& fields,
-    const std::vector<double>& sampleMasses,
-    const std::vector<Eigen::Vector3d>& strips,
-    const std::vector<int>& samplesPerSegment,
+    std::vector<std::pair<Eigen::Vector3d, double>>& shape,
     parallelStatistics& statistics
 )
 {
@@ -108,7 +104,7 @@ void Foam::dropletFiber::fiberCapture::spreadDemand
     const ::dropletFiber::SpreadPopulations& levels = *populations_;
     // P52: every computed fiber in the box counted once at its centre
     ::dropletFiber::LevelTerms count(2);
-    std::vector<std::pair<Eigen::Vector3d, double>> shape(held.size());
+    shape.assign(held.size(), {Eigen::Vector3d::Zero(), 0.0});
     for (std::size_t f = 0; f < held.size(); ++f)
     {
         shape[f] = centreAndLength(held.fibers[f]);
@@ -117,8 +113,26 @@ void Foam::dropletFiber::fiberCapture::spreadDemand
             levels.addLength(shape[f].first, shape[f].second, count);
         }
     }
+    return grid.sumLevelTable(levels, count.summed(), false, statistics);
+}
+
+
+void Foam::dropletFiber::fiberCapture::spreadDemand
+(
+    const heldFibers& held,
+    couplingGrid& grid,
+    const std::vector<Eigen::Vector3d>& points,
+    const std::vector<::dropletFiber::DropletFieldValue>& fields,
+    const std::vector<double>& sampleMasses,
+    const std::vector<Eigen::Vector3d>& strips,
+    const std::vector<int>& samplesPerSegment,
+    parallelStatistics& statistics
+)
+{
+    std::vector<std::pair<Eigen::Vector3d, double>> shape;
     const ::dropletFiber::LevelTable counted =
-        grid.sumLevelTable(levels, count.summed(), false, statistics);
+        countFibers(held, grid, shape, statistics);
+    const ::dropletFiber::SpreadPopulations& levels = *populations_;
     // P53, P54: each weighted fiber's level, its samples' terms there
     spreadStep_ = spreadStep();
     spreadStep_.populations = populations_.get();
@@ -223,6 +237,10 @@ void Foam::dropletFiber::fiberCapture::spreadRealised
     const std::vector<double>& ratios
 )
 {
+    if (!spreadStep_.populations)
+    {
+        return;
+    }
     ::dropletFiber::LevelTerms terms(1);
     for (std::size_t s = 0; s < ratios.size(); ++s)
     {
@@ -245,7 +263,7 @@ void Foam::dropletFiber::fiberCapture::spreadCut
     std::vector<double>& cut
 ) const
 {
-    if (cut.empty())
+    if (cut.empty() || !spreadStep_.populations)
     {
         return;
     }
