@@ -375,6 +375,22 @@ double CaptureLimit::grantedSupply(std::size_t node) const
     return entry->second.supply * ratio->second;
 }
 
+void CaptureLimit::grantedSupplies(const IndexBox& region, bool unremoved, std::vector<double>& values) const
+{
+    values.assign(region.empty() ? 0 : region.nodeCount(), 0.0);
+    for (const auto& [node, entry] : demand_)
+    {
+        const std::array<int, 3> at = nodeIndicesOfFlat(gridNodes_, node);
+        const auto ratio = granted_.find(node);
+        if (!region.holds(at[0], at[1], at[2]) || ratio == granted_.end())
+        {
+            continue;
+        }
+        const double supply = entry.supply * ratio->second;
+        values[flatIndexInBox(region, at[0], at[1], at[2])] = unremoved ? supply * unremovedShare(node) : supply;
+    }
+}
+
 double CaptureLimit::grantedMass(const SampleCapture& sample) const
 {
     double mass = 0.0;

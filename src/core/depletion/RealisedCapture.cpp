@@ -42,15 +42,40 @@ RealisedCapture::NodeParts RealisedCapture::summed(Terms terms)
 
 void RealisedCapture::addNode(std::size_t node, double granted, double realised)
 {
-    nodes_[node].emplace_back(granted, realised);
+    if (!spread_.empty() && spread_.back().first >= node)
+    {
+        throw std::invalid_argument("RealisedCapture::addNode: nodes must come in increasing order");
+    }
+    NodeParts parts;
+    parts.granted = granted;
+    parts.realised = realised;
+    spread_.emplace_back(node, parts);
+}
+
+RealisedCapture::NodeParts RealisedCapture::spreadAt(std::size_t node) const
+{
+    const auto at = std::lower_bound(spread_.begin(), spread_.end(), node,
+                                     [](const auto& entry, std::size_t n) { return entry.first < n; });
+    return at != spread_.end() && at->first == node ? at->second : NodeParts{};
 }
 
 void RealisedCapture::scaleRemoval(CaptureLimit& limit) const
 {
+    // The samples' nodes (with the populations' part there), then the populations' own
     for (const auto& [node, terms] : nodes_)
     {
-        const NodeParts parts = summed(terms);
+        NodeParts parts = summed(terms);
+        const NodeParts spread = spreadAt(node);
+        parts.granted += spread.granted;
+        parts.realised += spread.realised;
         if (parts.granted > 0.0)
+        {
+            limit.scaleRemoval(node, parts.realised / parts.granted);
+        }
+    }
+    for (const auto& [node, parts] : spread_)
+    {
+        if (nodes_.count(node) == 0 && parts.granted > 0.0)
         {
             limit.scaleRemoval(node, parts.realised / parts.granted);
         }
@@ -64,13 +89,17 @@ double RealisedCapture::realisedMass() const
     {
         sum += summed(entry.second).realised;
     }
+    for (const auto& entry : spread_)
+    {
+        sum += entry.second.realised;
+    }
     return sum;
 }
 
 double RealisedCapture::realisedAt(std::size_t node) const
 {
     const auto entry = nodes_.find(node);
-    return entry == nodes_.end() ? 0.0 : summed(entry->second).realised;
+    return (entry == nodes_.end() ? 0.0 : summed(entry->second).realised) + spreadAt(node).realised;
 }
 
 double realisedRemoval(double summedParts)

@@ -32,15 +32,20 @@ namespace dropletFiber
 class RealisedCapture
 {
 public:
-    void clear() { nodes_.clear(); }
+    void clear()
+    {
+        nodes_.clear();
+        spread_.clear();
+    }
     // Sample's realised over granted mass (>= 0), over its nodes' granted parts (every
     // node of sample must have a granted ratio in limit: the owned part of a sample).
     // interceptors: the physical fibers behind the sample (its demand's weight in
     // CaptureLimit::addDemand): each realises the same hits, N times one fiber's (P41).
     void add(const SampleCapture& sample, double realisedOverGranted, const CaptureLimit& limit,
              double interceptors = 1.0);
-    // A node's part that no sample carries: a spread population's granted and realised mass
-    // there (SpreadPopulations.hpp; kg), added to the node's terms.
+    // A node's part that no sample carries: the spread populations' granted and realised
+    // mass there (SpreadPopulations.hpp; kg), one call per node in increasing node order.
+    // Throws std::invalid_argument out of order.
     void addNode(std::size_t node, double granted, double realised);
     // q_n on every node a sample was added for (CaptureLimit::scaleRemoval; all samples of
     // the step must have been added, with ratio 0 for those that caught nothing).
@@ -61,6 +66,10 @@ private:
     using Terms = std::vector<std::pair<double, double>>;
     static NodeParts summed(Terms terms);
     std::map<std::size_t, Terms> nodes_; // node order: the same sums on every run
+    // The populations' parts (addNode), by node in increasing order
+    std::vector<std::pair<std::size_t, NodeParts>> spread_;
+    // The populations' part at a node (zero where none)
+    NodeParts spreadAt(std::size_t node) const;
 };
 
 // The fraction a parcel loses from its summed parts of sum_n r_pn q_n / m_p: at most 1,

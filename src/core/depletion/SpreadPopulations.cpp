@@ -168,6 +168,59 @@ void SpreadPopulations::addAtLevel(const Eigen::Vector3d& point, int level, doub
     }
 }
 
+IndexBox SpreadPopulations::reach(const LevelTable& table) const
+{
+    IndexBox box;
+    for (const LevelKey key : table.keys)
+    {
+        box = box.united(level(levelOfKey(key)).hatBox(nodeOfKey(key)));
+    }
+    return box;
+}
+
+void SpreadPopulations::prolongOnto(const LevelTable& table, const IndexBox& region, std::vector<double>& share,
+                                    std::vector<double>& depth) const
+{
+    const std::size_t count = region.empty() ? 0 : region.nodeCount();
+    const bool withDepth = table.width > 1;
+    share.assign(count, 0.0);
+    depth.assign(withDepth ? count : 0, 0.0);
+    const auto w = static_cast<std::size_t>(table.width);
+    for (std::size_t i = 0; i < table.keys.size() && count > 0; ++i)
+    {
+        const SpreadLevel& lvl = level(levelOfKey(table.keys[i]));
+        const std::size_t coarse = nodeOfKey(table.keys[i]);
+        const double volume = lvl.volume(coarse);
+        const double s = table.values[w * i] / volume;
+        const double x = withDepth ? table.values[w * i + 1] / volume : 0.0;
+        lvl.forEachFineNodeIn(coarse, region, [&](std::size_t at, double hat) {
+            share[at] += hat * s;
+            if (withDepth)
+            {
+                depth[at] += hat * x;
+            }
+        });
+    }
+}
+
+LevelTable SpreadPopulations::restrictFrom(const LevelTable& keys, const IndexBox& region,
+                                           const std::vector<double>& values) const
+{
+    LevelTable table;
+    table.width = 1;
+    table.keys = keys.keys;
+    table.values.assign(keys.keys.size(), 0.0);
+    for (std::size_t i = 0; i < keys.keys.size() && !region.empty(); ++i)
+    {
+        double sum = 0.0;
+        level(levelOfKey(keys.keys[i]))
+            .forEachFineNodeIn(nodeOfKey(keys.keys[i]), region,
+                               [&](std::size_t at, double hat) { sum += hat * values[at]; });
+        table.values[i] = sum;
+    }
+    return table;
+}
+
 double SpreadPopulations::readLevel(const Eigen::Vector3d& point, int level, const LevelTable& table,
                                     int column) const
 {

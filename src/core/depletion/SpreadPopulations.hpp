@@ -113,11 +113,21 @@ public:
     template <class Keep>
     std::vector<NodeSpread> prolong(const LevelTable& demand, Keep&& keep) const;
 
+    // The grid nodes the table's level nodes reach (grid indices; empty: none).
+    IndexBox reach(const LevelTable& table) const;
+    // P_n (and P'_n for a table of width 2) of the nodes of `region` (grid indices), dense
+    // over it in flatIndexInBox order (resized and zeroed; depth left empty for width 1).
+    void prolongOnto(const LevelTable& table, const IndexBox& region, std::vector<double>& share,
+                     std::vector<double>& depth) const;
+
     // --- 4. grant -------------------------------------------------------------------------
     // Per key of `keys`: sum over the grid nodes of its hat that keep accepts of hat x
     // value(node) (width 1).
     template <class Keep, class Value>
     LevelTable restrictToLevels(const LevelTable& keys, Keep&& keep, Value&& value) const;
+    // The same over a field dense on `region` (flatIndexInBox order): sum over the region's
+    // nodes of the hat of each key of `keys` of hat x values (width 1).
+    LevelTable restrictFrom(const LevelTable& keys, const IndexBox& region, const std::vector<double>& values) const;
     // sum_C w_C table_C[column] / V_C at the point on `level`: a level field read per volume.
     double readLevel(const Eigen::Vector3d& point, int level, const LevelTable& table, int column = 0) const;
 

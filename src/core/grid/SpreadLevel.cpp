@@ -73,6 +73,19 @@ SpreadLevel::SpreadLevel(const GridSpec& grid, int ratio) : grid_(grid), level_(
     }
 }
 
+IndexBox SpreadLevel::hatBox(std::size_t levelNode) const
+{
+    const std::array<int, 3> c = nodeIndicesOfFlat(level_.nodes, levelNode);
+    IndexBox box;
+    for (int d = 0; d < 3; ++d)
+    {
+        const auto u = static_cast<std::size_t>(d);
+        box.lo[u] = grid_.flat(d) ? 0 : std::max(0, ratio_ * (c[u] - 1) + 1);
+        box.hi[u] = grid_.flat(d) ? 0 : std::min(grid_.nodes[d] - 1, ratio_ * (c[u] + 1) - 1);
+    }
+    return box;
+}
+
 double SpreadLevel::volume(std::size_t levelNode) const
 {
     const std::array<int, 3> c = nodeIndicesOfFlat(level_.nodes, levelNode);

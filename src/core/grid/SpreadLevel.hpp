@@ -70,6 +70,14 @@ public:
     template <class F>
     void forEachFineNode(std::size_t levelNode, F&& f) const;
 
+    // The grid nodes (grid indices) that the hat of level node `levelNode` reaches.
+    IndexBox hatBox(std::size_t levelNode) const;
+    // Calls f(index in `region`'s flat order, hat) for the nodes of the hat of level node
+    // `levelNode` inside `region` (grid indices), row by row: the hats per direction are
+    // evaluated once (separable), the region's values touched in memory order.
+    template <class F>
+    void forEachFineNodeIn(std::size_t levelNode, const IndexBox& region, F&& f) const;
+
     // restrict(q)_C = sum_n hat_C(g_n) q_n of a field on the grid's nodes (flat indices of
     // grid()): the total is kept.
     std::vector<double> restrict(const std::vector<double>& fine) const;
@@ -103,6 +111,39 @@ private:
     // flat direction)
     std::array<std::vector<double>, 3> axisVolume_;
 };
+
+template <class F>
+void SpreadLevel::forEachFineNodeIn(std::size_t levelNode, const IndexBox& region, F&& f) const
+{
+    const IndexBox box = hatBox(levelNode).intersected(region);
+    if (box.empty())
+    {
+        return;
+    }
+    const std::array<int, 3> coarse = nodeIndicesOfFlat(level_.nodes, levelNode);
+    std::array<std::vector<double>, 3> hats;
+    for (int d = 0; d < 3; ++d)
+    {
+        const auto u = static_cast<std::size_t>(d);
+        for (int i = box.lo[u]; i <= box.hi[u]; ++i)
+        {
+            hats[u].push_back(hat(d, coarse[u], i));
+        }
+    }
+    for (int k = box.lo[2]; k <= box.hi[2]; ++k)
+    {
+        const double hk = hats[2][static_cast<std::size_t>(k - box.lo[2])];
+        for (int j = box.lo[1]; j <= box.hi[1]; ++j)
+        {
+            const double hjk = hats[1][static_cast<std::size_t>(j - box.lo[1])] * hk;
+            std::size_t at = flatIndexInBox(region, box.lo[0], j, k);
+            for (std::size_t i = 0; i < hats[0].size(); ++i, ++at)
+            {
+                f(at, hats[0][i] * hjk);
+            }
+        }
+    }
+}
 
 template <class F>
 void SpreadLevel::forEachFineNode(std::size_t levelNode, F&& f) const

@@ -146,6 +146,7 @@ std::vector<double> Foam::dropletFiber::gridBlocks::grantCapture
     // The spread populations' demand on the nodes owned here (sec. 12)
     spreadLevels_ = nullptr;
     spreadHeld_ = ::dropletFiber::LevelTable();
+    spreadRegion_ = ::dropletFiber::IndexBox();
     if (spread)
     {
         spreadOntoNodes(grid, *spread, statistics);
@@ -156,13 +157,7 @@ std::vector<double> Foam::dropletFiber::gridBlocks::grantCapture
     captured = removeCaptured(grid, limit, parcels, dt, report, statistics);
     if (spread)
     {
-        spread->grants =
-            restrictOverBlocks
-            (
-                spread->demand,
-                [&](const std::size_t n) { return limit.grantedSupply(n); },
-                statistics
-            );
+        spread->grants = restrictOverBlocks(spread->demand, false, statistics);
     }
     return grantedMasses(limit, points, massShares, requests, statistics);
 }

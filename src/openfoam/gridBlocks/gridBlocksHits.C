@@ -235,16 +235,7 @@ std::vector<double> Foam::dropletFiber::gridBlocks::cutSamples
     if (spread)
     {
         // The populations' cut on their levels (their samples read it)
-        spread->cut =
-            restrictOverBlocks
-            (
-                spread->demand,
-                [&](const std::size_t n)
-                {
-                    return limit.grantedSupply(n)*limit.unremovedShare(n);
-                },
-                statistics
-            );
+        spread->cut = restrictOverBlocks(spread->demand, true, statistics);
     }
     // Each sample's cut: this block's corners, then the owners' answers
     std::vector<double> cut(grantLocal_.size(), 0.0);

@@ -82,10 +82,41 @@ void Foam::dropletFiber::gridBlocks::spreadOntoNodes
     const ::dropletFiber::SpreadPopulations& levels = *spread.populations;
     spreadLevels_ = spread.populations;
     spreadHeld_ = sumLevelTable(levels, spread.demand, true, statistics);
-    const auto owned = [&](const std::size_t n) { return grid.owns(n); };
-    for (const auto& node : levels.prolong(spreadHeld_, owned))
+    // P_n and P'_n over the owned nodes the hats reach, in node order
+    spreadRegion_ = owned_.intersected(levels.reach(spreadHeld_));
+    std::vector<double> share, depth;
+    levels.prolongOnto(spreadHeld_, spreadRegion_, share, depth);
+    forEachRegionNode
+    (
+        [&](const std::size_t at, const std::size_t node)
+        {
+            if (share[at] > 0)
+            {
+                limit_.addSpread(node, share[at], depth[at]);
+            }
+        }
+    );
+}
+
+
+template<class F>
+void Foam::dropletFiber::gridBlocks::forEachRegionNode(F&& f) const
+{
+    const ::dropletFiber::IndexBox& r = spreadRegion_;
+    if (r.empty())
     {
-        limit_.addSpread(node.node, node.share, node.depth);
+        return;
+    }
+    std::size_t at = 0;
+    for (int k = r.lo[2]; k <= r.hi[2]; ++k)
+    {
+        for (int j = r.lo[1]; j <= r.hi[1]; ++j)
+        {
+            for (int i = r.lo[0]; i <= r.hi[0]; ++i, ++at)
+            {
+                f(at, spec_.flatIndex(i, j, k));
+            }
+        }
     }
 }
 
@@ -93,16 +124,17 @@ void Foam::dropletFiber::gridBlocks::spreadOntoNodes
 ::dropletFiber::LevelTable Foam::dropletFiber::gridBlocks::restrictOverBlocks
 (
     const ::dropletFiber::LevelTable& asked,
-    const std::function<double(std::size_t)>& value,
+    const bool unremoved,
     parallelStatistics& statistics
 )
 {
     const ::dropletFiber::SpreadPopulations& levels = *spreadLevels_;
-    const auto owned = [&](const std::size_t n) { return ownerOf(n) == Pstream::myProcNo(); };
     // This block's part at the level nodes it holds, a zero term at the
     // keys asked: the sums come back to both
+    std::vector<double> values;
+    limit_.grantedSupplies(spreadRegion_, unremoved, values);
     ::dropletFiber::LevelTerms terms(1);
-    terms.add(levels.restrictToLevels(spreadHeld_, owned, value));
+    terms.add(levels.restrictFrom(spreadHeld_, spreadRegion_, values));
     for (const ::dropletFiber::LevelKey key : asked.keys)
     {
         terms.add(key, 0.0);
@@ -123,24 +155,20 @@ void Foam::dropletFiber::gridBlocks::realiseSpread
     const ::dropletFiber::SpreadPopulations& levels = *spread.populations;
     const ::dropletFiber::LevelTable ratios =
         sumLevelTable(levels, spread.realised, true, statistics);
-    const auto owned = [&](const std::size_t n) { return ownerOf(n) == Pstream::myProcNo(); };
-    const auto granted = levels.prolong(spreadHeld_, owned);
-    const auto hits = levels.prolong(ratios, owned);
-    std::size_t h = 0;
-    for (const auto& node : granted)
-    {
-        while (h < hits.size() && hits[h].node < node.node)
+    std::vector<double> granted, hits, none, supply;
+    levels.prolongOnto(spreadHeld_, spreadRegion_, granted, none);
+    levels.prolongOnto(ratios, spreadRegion_, hits, none);
+    limit_.grantedSupplies(spreadRegion_, false, supply);
+    forEachRegionNode
+    (
+        [&](const std::size_t at, const std::size_t node)
         {
-            ++h;
+            if (supply[at] > 0 && granted[at] > 0)
+            {
+                realised.addNode(node, supply[at]*granted[at], supply[at]*hits[at]);
+            }
         }
-        const double supply = limit_.grantedSupply(node.node);
-        const double r =
-            h < hits.size() && hits[h].node == node.node ? hits[h].share : 0;
-        if (supply > 0)
-        {
-            realised.addNode(node.node, supply*node.share, supply*r);
-        }
-    }
+    );
 }
 
 
