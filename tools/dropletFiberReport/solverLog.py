@@ -65,6 +65,9 @@ class SolverLog:
         self.ended = False
         # the function object's conservation lines at its last write time
         self.conservation = {}
+        # the spread populations' resolution at its last write time (docs/model.md sec. 12,
+        # P57): time, sigma / h (mean, min, max), shares thin, reaching, capped, eps
+        self.spread = None
         self._read(open(path, errors="replace").read().split("\n"))
 
     def _read(self, lines):
@@ -88,6 +91,9 @@ class SolverLog:
                 what = {"parcel mass": "parcel mass = grid + outside",
                         "fiber mass": "fiber mass = added + captured - removed"}[m.group(1)]
                 self.conservation[what] = float(m.group(2))
+            m = re.match(r"^dropletFiberCollision \S+ spread populations at time (\S+) ", line)
+            if m and i + 1 < len(lines):
+                self.spread = _spread_figures(float(m.group(1)), lines[i + 1])
             if line.strip() == "End":
                 self.ended = True
             m = re.match(r"^Cloud: (\S+)\s*$", line)
@@ -106,6 +112,19 @@ class SolverLog:
                 i = j
                 continue
             i += 1
+
+
+def _spread_figures(time, line):
+    """P57's figures from the line after the heading (None if it does not read)"""
+    m = re.match(r"^\s+kernel sigma / h " + NUMBER + r" \(" + NUMBER + " to " + NUMBER + r"\); thin on their level "
+                 + NUMBER + r", reaching \S+ other computed fibers " + NUMBER + r", capped " + NUMBER
+                 + r"; clustering eps " + NUMBER, line)
+    if not m:
+        return None
+    names = ("sigma", "sigmaMin", "sigmaMax", "thin", "reaching", "capped", "eps")
+    figures = dict(zip(names, (float(v) for v in m.groups())))
+    figures["time"] = time
+    return figures
 
 
 def sprayed_at(history, time):

@@ -48,6 +48,7 @@ class Summary:
         self._species()
         self.line("  fiber mass now                 %s kg" % _g(last["fiberMass"]))
         self._conservation()
+        self._spread()
         self._fiber_load()
         self._siblings()
         self._wall_time()
@@ -111,6 +112,26 @@ class Summary:
         for what, value in sorted(r.log.conservation.items()):
             self.line("  conservation: %-40s balance %.3g kg" % (what, value))
             self.check(abs(value) <= 1e-9 * scale, what + " (1e-9)")
+
+    def _spread(self):
+        """The weighted fibers' spread populations at the last write time (P57); a warning
+        where the capture is set by holes (capped above 5 %) or the populations are opaque
+        at their level (eps above 0.25)"""
+        r = self.report
+        if r.log is None or r.log.spread is None:
+            return
+        f = r.log.spread
+        self.line("  spread populations (t = %g s)  kernel sigma/h %.3g (%.3g to %.3g); of their capture thin %.3g,"
+                  " reaching k others %.3g, capped %.3g; clustering eps %.3g"
+                  % (f["time"], f["sigma"], f["sigmaMin"], f["sigmaMax"], f["thin"], f["reaching"], f["capped"],
+                     f["eps"]))
+        if f["capped"] > 0.05:
+            self.line("  warning: %.3g of the weighted fibers' capture from populations that reach too few computed"
+                      " fibers: the capture is set by holes in the veil (more computed fibers, or a larger"
+                      " collision.spread.maxSpacing)" % f["capped"])
+        if f["eps"] > 0.25:
+            self.line("  warning: the populations are opaque on their levels (eps %.3g > 0.25): where the veil is"
+                      " thin the capture may be low by up to eps (docs/model.md sec. 12, P55)" % f["eps"])
 
     def _fiber_load(self):
         load = fiber_load(self.report.fibers)

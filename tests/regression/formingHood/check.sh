@@ -12,6 +12,7 @@
 #   order of operations), so a larger difference is a change of behaviour, while
 #   round-off from another compiler or library stays far below it;
 #   maxSegmentLengthError is round-off by nature and is checked to stay < 1e-10;
+# - the spread populations' resolution in the log and in the report;
 # - the picture was written.
 #
 # Usage: check.sh WORK_DIR [--update]
@@ -30,6 +31,10 @@ grep -q "Balance closed" "$work/log.Allrun" || die "the binder balance did not c
 grep -q "fibers.turbulence: ornsteinUhlenbeck" "$log" || die "the fibers' turbulent air is not on"
 grep -q "Selecting dispersion model stochasticDispersionRAS" "$log" || die "the droplets do not disperse"
 [ -f "$work/formingHood.png" ] || die "no picture"
+# The weighted fibers' spread populations (docs/model.md sec. 12): the log's resolution
+# lines at write times, and the report's summary of them
+grep -q "spread populations at time 0.15 " "$log" || die "no spread populations' line at 0.15 s"
+grep -q "spread populations (t = 0.15 s)" "$work/dropletFiberReport.txt" || die "the report does not say how the populations spread"
 table="$work/postProcessing/dropletFiber/0/dropletFiber.dat"
 compareWithReference "$table" "$here/reference.parallel.dat" "$update"
 "$PY" - "$table" "$log" <<'PYEOF'

@@ -328,24 +328,27 @@ void Foam::dropletFiber::fiberCapture::reportSpread()
         << ", reaching " << spread_.neighbours << " other computed fibers "
         << 1 - thin - capped << ", capped " << capped << "; clustering eps "
         << eps << nl << endl;
-    if (capped > 0.05)
+    if (capped > 0.05 && !warnedHoles_)
     {
+        warnedHoles_ = true;
         WarningInFunction
             << type() << " " << name() << ": at time " << time_.timeName()
             << " " << capped << " of the weighted fibers' capture comes from"
             << " populations whose kernel reached fewer than "
             << spread_.neighbours << " other computed fibers on the coarsest"
             << " level: the capture is set by holes in the veil. More computed"
-            << " fibers per second, or a larger collision.spread.maxSpacing."
-            << endl;
+            << " fibers per second, or a larger collision.spread.maxSpacing"
+            << " (warned once; the write times' lines give the share)." << endl;
     }
-    if (eps > 0.25)
+    if (eps > 0.25 && !warnedOpaque_)
     {
+        warnedOpaque_ = true;
         WarningInFunction
             << type() << " " << name() << ": at time " << time_.timeName()
             << " the populations are opaque on their levels (clustering eps "
             << eps << " > 0.25): the capture may be low by up to eps where"
-            << " the veil is thin (docs/model.md sec. 12, P55)." << endl;
+            << " the veil is thin (docs/model.md sec. 12, P55; warned once)."
+            << endl;
     }
 }
 
