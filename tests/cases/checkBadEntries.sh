@@ -57,6 +57,11 @@ expectError collision "{ sampling everywhere; }" "Entry 'sampling' is 'everywher
 expectError collision "{ depletion maybe; }" "Entry 'depletion' is 'maybe': allowed are true or false"
 expectError collision "{ mode poisson; }" "Entry 'mode' is 'poisson': allowed are 2\\(expected discrete\\)"
 expectError collision "{ mode discrete; seed -3; }" "Entry 'seed' is -3"
+# The spread populations (docs/model.md sec. 12): read whether or not a fiber is weighted
+expectError collision "{ spread { neighbours 0; } }" "Entry 'neighbours' is 0: allowed are finite values > 0"
+expectError collision "{ spread { maxClustering -0.1; } }" "Entry 'maxClustering' is -0.1: allowed are finite values >= 0"
+expectError collision "{ spread { maxSpacing -1; } }" "Entry 'maxSpacing' is -1: allowed are finite values >= 0"
+expectError collision "{ spread { active perhaps; } }" "Entry 'active' is 'perhaps': allowed are true or false"
 expectError air "{ rho -1.2; }" "Entry 'rho' is -1.2"
 expectError air "{ mu noSuchField; }" "Entry 'mu' names field 'noSuchField', which does not exist"
 # A field of the wrong kind is named as such
@@ -129,6 +134,7 @@ expectError clouds "(kinematicCloud kinematicCloud)" \
 unknown() { echo "Entry '$1' in dictionary '[^']*$2' is not known: $3"; }
 expectError grid/spacng 0.002 "$(unknown spacng grid "did you mean 'spacing'\\?")"
 expectError collision "{ samplng integrated; }" "$(unknown samplng collision "did you mean 'sampling'\\?")"
+expectError collision "{ spread { neighbors 4; } }" "$(unknown neighbors collision.spread "did you mean 'neighbours'\\?")"
 expectError air "{ rhoo 1.2; }" "$(unknown rhoo air "did you mean 'rho'\\?")"
 expectError air "{ temperature 300; }" "$(unknown temperature air "allowed are U, rho, mu\\.")"
 expectError fibers/radus 1e-4 "$(unknown radus fibers "did you mean 'radius'\\?")"

@@ -19,6 +19,12 @@ fo=functions/dropletFiber
 tryAs() {
     local path="$1" value="$2" how=-add
     cp system/controlDict.good system/controlDict
+    # a parent the case does not give (collision for collision/spread): added empty
+    if [ "${path%/*}" != "$path" ] \
+        && ! foamDictionary system/controlDict -entry "$fo/${path%/*}" > /dev/null 2>&1
+    then
+        foamDictionary system/controlDict -entry "$fo/${path%/*}" -add "{}" > /dev/null
+    fi
     foamDictionary system/controlDict -entry "$fo/$path" > /dev/null 2>&1 && how=-set
     foamDictionary system/controlDict -entry "$fo/$path" "$how" "$value" > /dev/null \
         || { echo "FAILED: cannot set $path to $value"; checksFailed=$((checksFailed + 1)); return; }
