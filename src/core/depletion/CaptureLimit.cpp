@@ -387,7 +387,8 @@ void CaptureLimit::grantedSupplies(const IndexBox& region, bool unremoved, std::
             continue;
         }
         const double supply = entry.supply * ratio->second;
-        values[flatIndexInBox(region, at[0], at[1], at[2])] = unremoved ? supply * unremovedShare(node) : supply;
+        values[flatIndexInBox(region, at[0], at[1], at[2])]
+            = unremoved ? supply * unremovedShare(node) : supply;
     }
 }
 

@@ -178,8 +178,8 @@ IndexBox SpreadPopulations::reach(const LevelTable& table) const
     return box;
 }
 
-void SpreadPopulations::prolongOnto(const LevelTable& table, const IndexBox& region, std::vector<double>& share,
-                                    std::vector<double>& depth) const
+void SpreadPopulations::prolongOnto(const LevelTable& table, const IndexBox& region,
+                                    std::vector<double>& share, std::vector<double>& depth) const
 {
     const std::size_t count = region.empty() ? 0 : region.nodeCount();
     const bool withDepth = table.width > 1;
@@ -193,13 +193,15 @@ void SpreadPopulations::prolongOnto(const LevelTable& table, const IndexBox& reg
         const double volume = lvl.volume(coarse);
         const double s = table.values[w * i] / volume;
         const double x = withDepth ? table.values[w * i + 1] / volume : 0.0;
-        lvl.forEachFineNodeIn(coarse, region, [&](std::size_t at, double hat) {
-            share[at] += hat * s;
-            if (withDepth)
-            {
-                depth[at] += hat * x;
-            }
-        });
+        lvl.forEachFineNodeIn(coarse, region,
+                              [&](std::size_t at, double hat)
+                              {
+                                  share[at] += hat * s;
+                                  if (withDepth)
+                                  {
+                                      depth[at] += hat * x;
+                                  }
+                              });
     }
 }
 

@@ -127,7 +127,8 @@ public:
     LevelTable restrictToLevels(const LevelTable& keys, Keep&& keep, Value&& value) const;
     // The same over a field dense on `region` (flatIndexInBox order): sum over the region's
     // nodes of the hat of each key of `keys` of hat x values (width 1).
-    LevelTable restrictFrom(const LevelTable& keys, const IndexBox& region, const std::vector<double>& values) const;
+    LevelTable restrictFrom(const LevelTable& keys, const IndexBox& region,
+                            const std::vector<double>& values) const;
     // sum_C w_C table_C[column] / V_C at the point on `level`: a level field read per volume.
     double readLevel(const Eigen::Vector3d& point, int level, const LevelTable& table, int column = 0) const;
 

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "gridBlocks.H"
+#include "levelSums.H"
 #include "boundBox.H"
 #include "FixedList.H"
 #include "UOPstream.H"
@@ -147,28 +148,11 @@ Foam::dropletFiber::gridBlocks::exchangeLists
     const parallelStatistics::traffic what
 )
 {
-    buffers_.clear();
-    forAll(outgoing_, proci)
-    {
-        if (!outgoing_[proci].empty())
-        {
-            UOPstream os(proci, buffers_);
-            os  << static_cast<const UList<scalar>&>(outgoing_[proci]);
-            statistics.countSent(outgoing_[proci].byteSize(), what);
-        }
-    }
-    labelList recvSizes;
-    buffers_.finishedSends(recvSizes);
-    List<List<scalar>> received(Pstream::nProcs());
-    forAll(recvSizes, proci)
-    {
-        if (recvSizes[proci] > 0)
-        {
-            UIPstream is(proci, buffers_);
-            is  >> received[proci];
-        }
-    }
-    return received;
+    return
+        ::Foam::dropletFiber::exchangeLists
+        (
+            outgoing_, buffers_, statistics, what
+        );
 }
 
 

@@ -39,15 +39,36 @@ void addReceived
 }
 
 
-// Send each processor its list, return what came (collective)
-List<List<scalar>> exchange
+// Appends a key and its values to a list
+void append
+(
+    DynamicList<scalar>& out,
+    const ::dropletFiber::LevelKey key,
+    const double* values,
+    const int width
+)
+{
+    out.append(scalar(key));
+    for (int c = 0; c < width; ++c)
+    {
+        out.append(values[c]);
+    }
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * //
+
+Foam::List<Foam::List<Foam::scalar>> Foam::dropletFiber::exchangeLists
 (
     const List<DynamicList<scalar>>& outgoing,
+    PstreamBuffers& buffers,
     parallelStatistics& statistics,
     const parallelStatistics::traffic what
 )
 {
-    PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
+    buffers.clear();
     forAll(outgoing, proci)
     {
         if (!outgoing[proci].empty())
@@ -71,27 +92,6 @@ List<List<scalar>> exchange
     return received;
 }
 
-
-// Appends a key and its values to a list
-void append
-(
-    DynamicList<scalar>& out,
-    const ::dropletFiber::LevelKey key,
-    const double* values,
-    const int width
-)
-{
-    out.append(scalar(key));
-    for (int c = 0; c < width; ++c)
-    {
-        out.append(values[c]);
-    }
-}
-
-} // End anonymous namespace
-
-
-// * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * //
 
 ::dropletFiber::LevelTable Foam::dropletFiber::sumOverProcessors
 (
@@ -117,7 +117,9 @@ void append
         );
     }
     // At the owners: the terms in processor order, each key's givers
-    const List<List<scalar>> received = exchange(outgoing, statistics, what);
+    PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
+    const List<List<scalar>> received =
+        exchangeLists(outgoing, buffers, statistics, what);
     ::dropletFiber::LevelTerms terms(width);
     std::vector<std::pair<::dropletFiber::LevelKey, label>> givers;
     forAll(received, proci)
@@ -153,7 +155,8 @@ void append
             append(outgoing[proci], key, sums.values.data() + i*width, width);
         }
     }
-    const List<List<scalar>> answers = exchange(outgoing, statistics, what);
+    const List<List<scalar>> answers =
+        exchangeLists(outgoing, buffers, statistics, what);
     ::dropletFiber::LevelTerms whole(width);
     forAll(answers, proci)
     {
