@@ -2,7 +2,7 @@
 #include "grid/LevelTable.hpp"
 
 #include <algorithm>
-#include <numeric>
+#include <utility>
 #include <stdexcept>
 #include <string>
 
@@ -40,18 +40,23 @@ void LevelTerms::add(const LevelTable& table)
 
 LevelTable LevelTerms::summed() const
 {
-    std::vector<std::size_t> order(keys_.size());
-    std::iota(order.begin(), order.end(), std::size_t{0});
-    std::stable_sort(order.begin(), order.end(),
-                     [this](std::size_t a, std::size_t b) { return keys_[a] < keys_[b]; });
+    // (key, position) pairs: sorted by key, then by the order added
+    std::vector<std::pair<LevelKey, std::size_t>> order(keys_.size());
+    for (std::size_t i = 0; i < keys_.size(); ++i)
+    {
+        order[i] = {keys_[i], i};
+    }
+    std::sort(order.begin(), order.end());
     LevelTable table;
     table.width = width_;
     const auto w = static_cast<std::size_t>(width_);
-    for (const std::size_t i : order)
+    table.keys.reserve(order.size());
+    table.values.reserve(order.size() * w);
+    for (const auto& [key, i] : order)
     {
-        if (table.keys.empty() || table.keys.back() != keys_[i])
+        if (table.keys.empty() || table.keys.back() != key)
         {
-            table.keys.push_back(keys_[i]);
+            table.keys.push_back(key);
             table.values.insert(table.values.end(), values_.begin() + static_cast<std::ptrdiff_t>(i * w),
                                 values_.begin() + static_cast<std::ptrdiff_t>((i + 1) * w));
             continue;
