@@ -364,17 +364,6 @@ double CaptureLimit::grantedRatio(std::size_t node) const
     return entry->second;
 }
 
-double CaptureLimit::grantedSupply(std::size_t node) const
-{
-    const auto entry = demand_.find(node);
-    const auto ratio = granted_.find(node);
-    if (entry == demand_.end() || ratio == granted_.end())
-    {
-        return 0.0;
-    }
-    return entry->second.supply * ratio->second;
-}
-
 void CaptureLimit::grantedSupplies(const IndexBox& region, bool unremoved, std::vector<double>& values) const
 {
     values.assign(region.empty() ? 0 : region.nodeCount(), 0.0);

@@ -213,11 +213,9 @@ public:
     // g_n of a node with demand (grant() on its owner); throws std::out_of_range for a node
     // without one.
     double grantedRatio(std::size_t node) const;
-    // s_n g_n: the granted mass per unit of swept fraction at a node (0 at a node without
-    // demand): a spread population's grant (SpreadPopulations.hpp, P51).
-    double grantedSupply(std::size_t node) const;
-    // The same, dense over `region` (grid indices, flatIndexInBox order; 0 where no demand),
-    // times the node's unremovedShare where `unremoved` (the populations' cut, P33).
+    // s_n g_n, the granted mass per unit of swept fraction (a spread population's grant,
+    // SpreadPopulations.hpp, P51), dense over `region` (grid indices, flatIndexInBox order;
+    // 0 where no demand), times the node's unremovedShare where `unremoved` (P33).
     void grantedSupplies(const IndexBox& region, bool unremoved, std::vector<double>& values) const;
     // The sample's mass after the limit: sum_c d_sc g_{n_c}; momentum = that * velocity.
     double grantedMass(const SampleCapture& sample) const;

@@ -68,6 +68,16 @@ int SpreadPopulations::defaultMaxRatio(const GridSpec& grid)
     return ratio;
 }
 
+double SpreadPopulations::largestSpacing(const GridSpec& grid)
+{
+    double spacing = 0.0;
+    for (int d = 0; d < 3; ++d)
+    {
+        spacing = grid.flat(d) ? spacing : std::max(spacing, grid.spacing(d));
+    }
+    return spacing;
+}
+
 void SpreadPopulations::addLength(const Eigen::Vector3d& centre, double length, LevelTerms& count) const
 {
     for (int l = 0; l < levelCount(); ++l)
@@ -98,11 +108,7 @@ double SpreadPopulations::reachOn(int l, const Eigen::Vector3d& centre, double o
         lambda += w.weight[u] * std::max(0.0, length) / lvl.volume(w.node[u]);
         number += w.weight[u] * std::max(0.0, fibers) / lvl.volume(w.node[u]);
     }
-    double spacing = 0.0;
-    for (int d = 0; d < 3; ++d)
-    {
-        spacing = grid_.flat(d) ? spacing : std::max(spacing, lvl.spec().spacing(d));
-    }
+    const double spacing = levelSpacing(l);
     // The fibers that meet a ball of radius sigma (Steiner: the ball grown by a segment of
     // length L has the volume 4/3 pi sigma^3 + pi sigma^2 L); on a grid with a flat
     // direction the fibers span it and a disc meets pi sigma^2 lambda of them
@@ -118,13 +124,8 @@ LevelChoice SpreadPopulations::choose(const Eigen::Vector3d& centre, double ownL
     LevelChoice choice;
     for (int l = 0; l < levelCount(); ++l)
     {
-        double spacing = 0.0;
-        for (int d = 0; d < 3; ++d)
-        {
-            spacing = grid_.flat(d) ? spacing : std::max(spacing, level(l).spec().spacing(d));
-        }
         choice.level = l;
-        choice.eps = opacity / spacing;
+        choice.eps = opacity / levelSpacing(l);
         choice.reach = reachOn(l, centre, ownLength, count);
         if (maxClustering_ > 0.0 && choice.eps <= maxClustering_)
         {

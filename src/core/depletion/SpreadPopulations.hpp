@@ -17,10 +17,10 @@
 //     self-shadow of a strip (N + 1) q_d on the level (P54; SelfShadow.hpp). A grid node n
 //     then holds the populations' swept fraction and depth
 //         P_n = sum_C hat_C(g_n) share_C / V_C,   P'_n = sum_C hat_C(g_n) depth_C / V_C
-//     (prolong): its demand grows by s_n P_n and its depth by P'_n (CaptureLimit::addSpread)
+//     (prolongOnto): its demand grows by s_n P_n and its depth by P'_n (CaptureLimit::addSpread)
 //     and the parcels cross the grid's depths as before (P14).
 //  4. Grant (P51). With the grid's grants g_n, a level node's grant G_C = sum_n hat_C(g_n)
-//     s_n g_n (restrictToLevels over CaptureLimit::grantedSupply) and the sample's
+//     s_n g_n (restrictFrom over CaptureLimit::grantedSupplies) and the sample's
 //     population captures (N - 1) kappa_s sum_C w_sC G_C / V_C (readLevel): over all
 //     samples, sum_n g_n s_n P_n, the populations' part of sum_n g_n d_n = sum_n R_n.
 //
@@ -41,14 +41,6 @@
 
 namespace dropletFiber
 {
-
-// A grid node's share of the populations: P_n and P'_n of the step (prolong).
-struct NodeSpread
-{
-    std::size_t node = 0;
-    double share = 0.0;
-    double depth = 0.0;
-};
 
 // The level a population takes (choose), and why there.
 struct LevelChoice
@@ -75,6 +67,10 @@ public:
 
     // The ratio whose spacing first reaches half the box's largest active extent.
     static int defaultMaxRatio(const GridSpec& grid);
+    // The grid's largest spacing over its active directions.
+    static double largestSpacing(const GridSpec& grid);
+    // H of level l: its largest spacing over the active directions (the kernel's scale).
+    double levelSpacing(int l) const { return level(l).ratio() * largestSpacing(grid_); }
 
     int levelCount() const { return static_cast<int>(levels_.size()); }
     const SpreadLevel& level(int l) const { return levels_[static_cast<std::size_t>(l)]; }
@@ -107,12 +103,6 @@ public:
     // amount w_C on the level's nodes at the point (width 1): e.g. the realised hits'
     // r_s (N - 1) kappa_s of a sample.
     void addAtLevel(const Eigen::Vector3d& point, int level, double amount, LevelTerms& terms) const;
-    // P_n and P'_n of the grid nodes the table's level nodes reach and keep(node) accepts,
-    // in node order (each node's terms in key order). A table of width 1 (a level field
-    // without depth) gives its prolongation in share, depth 0.
-    template <class Keep>
-    std::vector<NodeSpread> prolong(const LevelTable& demand, Keep&& keep) const;
-
     // The grid nodes the table's level nodes reach (grid indices; empty: none).
     IndexBox reach(const LevelTable& table) const;
     // P_n (and P'_n for a table of width 2) of the nodes of `region` (grid indices), dense
@@ -121,12 +111,8 @@ public:
                      std::vector<double>& depth) const;
 
     // --- 4. grant -------------------------------------------------------------------------
-    // Per key of `keys`: sum over the grid nodes of its hat that keep accepts of hat x
-    // value(node) (width 1).
-    template <class Keep, class Value>
-    LevelTable restrictToLevels(const LevelTable& keys, Keep&& keep, Value&& value) const;
-    // The same over a field dense on `region` (flatIndexInBox order): sum over the region's
-    // nodes of the hat of each key of `keys` of hat x values (width 1).
+    // Per key of `keys`: sum over the nodes of `region` (grid indices) of its hat x values
+    // (dense over the region, flatIndexInBox order; width 1).
     LevelTable restrictFrom(const LevelTable& keys, const IndexBox& region,
                             const std::vector<double>& values) const;
     // sum_C w_C table_C[column] / V_C at the point on `level`: a level field read per volume.
@@ -138,67 +124,5 @@ private:
     double maxClustering_;
     std::vector<SpreadLevel> levels_;
 };
-
-template <class Keep>
-std::vector<NodeSpread> SpreadPopulations::prolong(const LevelTable& demand, Keep&& keep) const
-{
-    std::vector<NodeSpread> terms;
-    for (std::size_t i = 0; i < demand.keys.size(); ++i)
-    {
-        const LevelKey key = demand.keys[i];
-        const SpreadLevel& lvl = level(levelOfKey(key));
-        const std::size_t coarse = nodeOfKey(key);
-        const double volume = lvl.volume(coarse);
-        const auto w = static_cast<std::size_t>(demand.width);
-        const double share = demand.values[w * i] / volume;
-        const double depth = w > 1 ? demand.values[w * i + 1] / volume : 0.0;
-        lvl.forEachFineNode(coarse,
-                            [&](std::size_t node, double hat)
-                            {
-                                if (keep(node))
-                                {
-                                    terms.push_back(NodeSpread{node, hat * share, hat * depth});
-                                }
-                            });
-    }
-    std::stable_sort(terms.begin(), terms.end(),
-                     [](const NodeSpread& a, const NodeSpread& b) { return a.node < b.node; });
-    std::vector<NodeSpread> nodes;
-    for (const NodeSpread& t : terms)
-    {
-        if (!nodes.empty() && nodes.back().node == t.node)
-        {
-            nodes.back().share += t.share;
-            nodes.back().depth += t.depth;
-            continue;
-        }
-        nodes.push_back(t);
-    }
-    return nodes;
-}
-
-template <class Keep, class Value>
-LevelTable SpreadPopulations::restrictToLevels(const LevelTable& keys, Keep&& keep, Value&& value) const
-{
-    LevelTable table;
-    table.width = 1;
-    table.keys = keys.keys;
-    table.values.assign(keys.keys.size(), 0.0);
-    for (std::size_t i = 0; i < keys.keys.size(); ++i)
-    {
-        const SpreadLevel& lvl = level(levelOfKey(keys.keys[i]));
-        double sum = 0.0;
-        lvl.forEachFineNode(nodeOfKey(keys.keys[i]),
-                            [&](std::size_t node, double hat)
-                            {
-                                if (keep(node))
-                                {
-                                    sum += hat * value(node);
-                                }
-                            });
-        table.values[i] = sum;
-    }
-    return table;
-}
 
 } // namespace dropletFiber

@@ -183,4 +183,9 @@ bool GridSpec::contains(const Eigen::Vector3d& point) const
     return true;
 }
 
+bool sameLattice(const GridSpec& a, const GridSpec& b)
+{
+    return a.lower == b.lower && a.upper == b.upper && a.nodes == b.nodes;
+}
+
 } // namespace dropletFiber

@@ -195,4 +195,8 @@ struct GridSpec
     bool contains(const Eigen::Vector3d& point) const;
 };
 
+// Whether two grids are the same lattice (box and node counts), e.g. to rebuild what was
+// derived from one when a run's grid changes.
+bool sameLattice(const GridSpec& a, const GridSpec& b);
+
 } // namespace dropletFiber

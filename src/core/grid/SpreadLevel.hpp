@@ -65,11 +65,6 @@ public:
     // restricted dual widths (no grid-sized array is held).
     double volume(std::size_t levelNode) const;
 
-    // Calls f(grid node flat index, hat) for every grid node that the hat of level node
-    // `levelNode` reaches (hat > 0), in flat order: (2 r - 1)^d nodes inside the box.
-    template <class F>
-    void forEachFineNode(std::size_t levelNode, F&& f) const;
-
     // The grid nodes (grid indices) that the hat of level node `levelNode` reaches.
     IndexBox hatBox(std::size_t levelNode) const;
     // Calls f(index in `region`'s flat order, hat) for the nodes of the hat of level node
@@ -140,36 +135,6 @@ void SpreadLevel::forEachFineNodeIn(std::size_t levelNode, const IndexBox& regio
             for (std::size_t i = 0; i < hats[0].size(); ++i, ++at)
             {
                 f(at, hats[0][i] * hjk);
-            }
-        }
-    }
-}
-
-template <class F>
-void SpreadLevel::forEachFineNode(std::size_t levelNode, F&& f) const
-{
-    const std::array<int, 3> coarse = nodeIndicesOfFlat(level_.nodes, levelNode);
-    std::array<int, 3> lo{}, hi{};
-    for (int d = 0; d < 3; ++d)
-    {
-        const auto u = static_cast<std::size_t>(d);
-        if (grid_.flat(d))
-        {
-            lo[u] = hi[u] = 0;
-            continue;
-        }
-        lo[u] = std::max(0, ratio_ * (coarse[u] - 1) + 1);
-        hi[u] = std::min(grid_.nodes[d] - 1, ratio_ * (coarse[u] + 1) - 1);
-    }
-    for (int k = lo[2]; k <= hi[2]; ++k)
-    {
-        const double hk = hat(2, coarse[2], k);
-        for (int j = lo[1]; j <= hi[1]; ++j)
-        {
-            const double hjk = hat(1, coarse[1], j) * hk;
-            for (int i = lo[0]; i <= hi[0]; ++i)
-            {
-                f(grid_.flatIndex(i, j, k), hat(0, coarse[0], i) * hjk);
             }
         }
     }

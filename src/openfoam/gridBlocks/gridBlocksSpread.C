@@ -53,21 +53,9 @@ void Foam::dropletFiber::gridBlocks::levelBlocks
     std::vector<int>& blocks
 ) const
 {
-    const ::dropletFiber::SpreadLevel& level =
-        levels.level(::dropletFiber::levelOfKey(key));
-    const int r = level.ratio();
-    const std::array<int, 3> c =
-        ::dropletFiber::nodeIndicesOfFlat
-        (
-            level.spec().nodes, ::dropletFiber::nodeOfKey(key)
-        );
-    ::dropletFiber::IndexBox hat;
-    for (int d = 0; d < 3; ++d)
-    {
-        hat.lo[d] = spec_.flat(d) ? 0 : std::max(0, r*(c[d] - 1) + 1);
-        hat.hi[d] =
-            spec_.flat(d) ? 0 : std::min(spec_.nodes[d] - 1, r*(c[d] + 1) - 1);
-    }
+    const ::dropletFiber::IndexBox hat =
+        levels.level(::dropletFiber::levelOfKey(key))
+       .hatBox(::dropletFiber::nodeOfKey(key));
     partition_.holdersOf(hat, -1, blocks);
 }
 

@@ -125,9 +125,14 @@ struct SpreadMat
                 result.capped += choices.back().why == LevelChoice::Why::capped ? 1 : 0;
             }
             demand = terms.summed();
-            for (const NodeSpread& n : spreads.prolong(demand, [](std::size_t) { return true; }))
+            std::vector<double> share, depth;
+            spreads.prolongOnto(demand, wholeBox(spec.nodes), share, depth);
+            for (std::size_t n = 0; n < share.size(); ++n)
             {
-                limit.addSpread(n.node, n.share, n.depth);
+                if (share[n] > 0.0)
+                {
+                    limit.addSpread(n, share[n], depth[n]);
+                }
             }
         }
         limit.limit(density);
@@ -148,8 +153,9 @@ struct SpreadMat
             result.removed += fraction[p] * parcelMass(parcels[p]);
         }
         // The fibers' grants: lines (N each without populations), populations on their level
-        const LevelTable grants = spreads.restrictToLevels(
-            demand, [](std::size_t) { return true; }, [&](std::size_t n) { return limit.grantedSupply(n); });
+        std::vector<double> supplies;
+        limit.grantedSupplies(wholeBox(spec.nodes), false, supplies);
+        const LevelTable grants = spreads.restrictFrom(demand, wholeBox(spec.nodes), supplies);
         for (std::size_t f = 0; f < lines.size(); ++f)
         {
             result.captured += (populations ? 1.0 : weight) * limit.granted(lines[f]).mass;

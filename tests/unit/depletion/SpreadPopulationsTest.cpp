@@ -29,6 +29,18 @@ double dualVolume(const GridSpec& g, std::size_t node)
     return g.dualVolume(i[0], i[1], i[2]);
 }
 
+// f(n) at every node of g, in flat order (a field dense over the whole grid)
+template <class F>
+std::vector<double> field(const GridSpec& g, F&& f)
+{
+    std::vector<double> values(g.nodeCount());
+    for (std::size_t n = 0; n < values.size(); ++n)
+    {
+        values[n] = f(n);
+    }
+    return values;
+}
+
 // Distance from point p to the segment a-b
 double distanceToSegment(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b)
 {
@@ -51,10 +63,12 @@ TEST(SpreadPopulations, SweptVolumeIsKeptOnTheGridOnEveryLevel)
                           terms);
         const LevelTable demand = terms.summed();
         double swept = 0.0, deepest = 0.0;
-        for (const NodeSpread& n : spreads.prolong(demand, [](std::size_t) { return true; }))
+        std::vector<double> share, depth;
+        spreads.prolongOnto(demand, wholeBox(g.nodes), share, depth);
+        for (std::size_t n = 0; n < share.size(); ++n)
         {
-            swept += dualVolume(g, n.node) * n.share;
-            deepest = std::max(deepest, n.depth / n.share);
+            swept += dualVolume(g, n) * share[n];
+            deepest = share[n] > 0.0 ? std::max(deepest, depth[n] / share[n]) : deepest;
         }
         EXPECT_NEAR(swept, 2.5e-7, 1e-12 * 2.5e-7) << "level " << l;
         // The shadow factor 1 + sigma~ of a strip (N + 1) q on the level: above 1, and
@@ -75,21 +89,21 @@ TEST(SpreadPopulations, GrantsReadBackAreTheGridsMeanOverTheKernel)
         LevelTerms terms(2);
         spreads.addDemand(point, l, 1.0, Eigen::Vector3d::Zero(), 2.0, terms);
         const LevelTable keys = terms.summed();
-        const auto all = [](std::size_t) { return true; };
-        const LevelTable constant
-            = spreads.restrictToLevels(keys, all, [&](std::size_t n) { return 3.0 * dualVolume(g, n); });
+        const LevelTable constant = spreads.restrictFrom(
+            keys, wholeBox(g.nodes), field(g, [&](std::size_t n) { return 3.0 * dualVolume(g, n); }));
         EXPECT_NEAR(spreads.readLevel(point, l, constant), 3.0, 1e-12) << "level " << l;
     }
     // Level 0 is the grid itself: the read is the multilinear interpolant
     LevelTerms terms(2);
     spreads.addDemand(point, 0, 1.0, Eigen::Vector3d::Zero(), 2.0, terms);
-    const LevelTable linear = spreads.restrictToLevels(
-        terms.summed(), [](std::size_t) { return true; },
-        [&](std::size_t n)
-        {
-            const std::array<int, 3> i = nodeIndicesOfFlat(g.nodes, n);
-            return (1.0 + 2.0 * g.nodePosition(i[0], i[1], i[2]).x()) * dualVolume(g, n);
-        });
+    const LevelTable linear = spreads.restrictFrom(
+        terms.summed(), wholeBox(g.nodes),
+        field(g,
+              [&](std::size_t n)
+              {
+                  const std::array<int, 3> i = nodeIndicesOfFlat(g.nodes, n);
+                  return (1.0 + 2.0 * g.nodePosition(i[0], i[1], i[2]).x()) * dualVolume(g, n);
+              }));
     EXPECT_NEAR(spreads.readLevel(point, 0, linear), 1.0 + 2.0 * point.x(), 1e-12);
 }
 

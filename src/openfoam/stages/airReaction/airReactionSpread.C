@@ -24,16 +24,6 @@ Description
 
 #include <algorithm>
 
-namespace
-{
-
-bool sameGrid(const ::dropletFiber::GridSpec& a, const ::dropletFiber::GridSpec& b)
-{
-    return a.lower == b.lower && a.upper == b.upper && a.nodes == b.nodes;
-}
-
-}
-
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 void Foam::dropletFiber::airReaction::binCells()
@@ -157,7 +147,7 @@ void Foam::dropletFiber::airReaction::spreadPopulationDrag
     parallelStatistics& statistics
 )
 {
-    if (!cellsBinned_ || !sameGrid(binnedFor_, populations_->grid()))
+    if (!cellsBinned_ || !::dropletFiber::sameLattice(binnedFor_, populations_->grid()))
     {
         binCells();
     }

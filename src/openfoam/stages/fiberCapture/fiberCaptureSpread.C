@@ -38,10 +38,6 @@ std::pair<Eigen::Vector3d, double> centreAndLength(const ::dropletFiber::Fiber& 
     return {length > 0 ? Eigen::Vector3d(centre/length) : Eigen::Vector3d(x.col(0)), length};
 }
 
-bool sameGrid(const ::dropletFiber::GridSpec& a, const ::dropletFiber::GridSpec& b)
-{
-    return a.lower == b.lower && a.upper == b.upper && a.nodes == b.nodes;
-}
 
 // The widest strip c = 2 (r_F + <r>) of a fiber's samples (their q_d sum to c), from
 // sample `first` and segment `segment` on
@@ -84,13 +80,9 @@ bool Foam::dropletFiber::fiberCapture::spreads(const heldFibers& held) const
 )
 {
     const ::dropletFiber::GridSpec& spec = grid.spec();
-    if (!populations_ || !sameGrid(populations_->grid(), spec))
+    if (!populations_ || !::dropletFiber::sameLattice(populations_->grid(), spec))
     {
-        scalar h = 0;
-        for (int d = 0; d < 3; ++d)
-        {
-            h = spec.flat(d) ? h : max(h, spec.spacing(d));
-        }
+        const scalar h = ::dropletFiber::SpreadPopulations::largestSpacing(spec);
         const int maxRatio =
             spread_.maxSpacing > 0 ? max(1, int(std::floor(spread_.maxSpacing/h + 1e-9))) : 0;
         populations_.reset
@@ -195,11 +187,7 @@ std::vector<double> Foam::dropletFiber::fiberCapture::spreadGranted
 )
 {
     const ::dropletFiber::SpreadPopulations& levels = *populations_;
-    scalar h = 0;
-    for (int d = 0; d < 3; ++d)
-    {
-        h = levels.grid().flat(d) ? h : max(h, levels.grid().spacing(d));
-    }
+    const scalar h = levels.levelSpacing(0);
     std::vector<double> granted(lines.size(), 0.0);
     for (std::size_t s = 0; s < lines.size(); ++s)
     {
@@ -211,7 +199,7 @@ std::vector<double> Foam::dropletFiber::fiberCapture::spreadGranted
             const scalar G = lines[s] + population;
             granted[s] = G/sampleFibers_[s];
             // P57: weighted by the sample's capture
-            const scalar H = levels.level(level).ratio()*h;
+            const scalar H = levels.levelSpacing(level);
             const scalar sigma = H/std::sqrt(3.0)/h;
             const scalar c = strips[s].sum();
             resolution_.captured += G;
