@@ -31,6 +31,10 @@ struct FiberState
     // each the same in every respect (path, shape, captured mass per length, hits); the
     // spray loses N times what the fiber captures. The state's masses are one fiber's.
     double represents = 1.0;
+    // The half-width [m] of the hat its population (the represents - 1 others) was spread
+    // over at the last step its centre was inside the coupling grid (docs/model.md sec.
+    // 12): how the population lies on the belt when laid (sec. 11, P59); 0 without one.
+    double populationSpread = 0.0;
     // Turbulent velocity fluctuation u' [m/s] per point (TurbulentAir, docs/model.md
     // sec. 8): part of the state so that a restart continues the same realisation;
     // empty (0 columns) without turbulence, or before the first turbulent step.

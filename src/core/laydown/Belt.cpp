@@ -57,6 +57,8 @@ LaidFiber layFiber(const Fiber& fiber, const Belt& belt, double time, long id)
         const Eigen::Vector3d t = ends / endToEnd;
         laid.orientation = Eigen::Vector3d(t.dot(ec), t.dot(ea), t.dot(belt.normal));
     }
+    laid.endToEnd = endToEnd;
+    laid.spread = fiber.state().populationSpread;
     laid.length = fiber.length();
     laid.binderMass = fiber.totalCapturedMass();
     laid.glassMass = fiber.totalMass() - laid.binderMass;

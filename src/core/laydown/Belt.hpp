@@ -45,12 +45,16 @@ struct LaidFiber
     double across = 0.0, along = 0.0;                      // m, the belt's frame (above)
     Eigen::Vector3d orientation = Eigen::Vector3d::Zero(); // unit end-to-end, (across, along, normal)
     double length = 0.0;                                   // m
+    double endToEnd = 0.0;                                 // m, between its ends
     double glassMass = 0.0;                                // kg, without binder
     double binderMass = 0.0;                               // kg, captured
     double represents = 1.0;
     double bareFraction = 0.0;   // of its length, no binder
     double sigmaVariation = 0.0; // CoV of its captured mass per length
     long id = -1;                // the fiber's birth number
+    // The half-width of its population's hat [m] (FiberState::populationSpread; 0: the
+    // represents fibers all lie on its line)
+    double spread = 0.0;
 };
 
 // The record of a fiber laid at `time` (its centre's foot on the plane).

@@ -7,7 +7,7 @@ namespace dropletFiber
 {
 
 MatMap::MatMap(double cell, double acrossMin, double acrossMax)
-    : cell_(cell), acrossMin_(acrossMin), acrossMax_(acrossMax)
+    : cell_(cell), acrossMin_(acrossMin), acrossMax_(acrossMax), lattice_{cell, acrossMin, acrossMax}
 {
     if (!(cell > 0.0))
         throw std::invalid_argument("MatMap: the cell size must be > 0");
@@ -15,20 +15,11 @@ MatMap::MatMap(double cell, double acrossMin, double acrossMax)
         throw std::invalid_argument("MatMap: the belt's width must be > 0");
 }
 
-long MatMap::widthColumns() const
-{
-    return static_cast<long>(std::ceil((acrossMax_ - acrossMin_) / cell_ - 1e-9));
-}
+long MatMap::widthColumns() const { return lattice_.columns(); }
 
-long MatMap::column(double across) const
-{
-    return static_cast<long>(std::floor((across - acrossMin_) / cell_));
-}
+long MatMap::column(double across) const { return lattice_.column(across); }
 
-long MatMap::row(double along) const
-{
-    return static_cast<long>(std::floor(along / cell_));
-}
+long MatMap::row(double along) const { return lattice_.row(along); }
 
 double orientationOrder(const Eigen::Vector3d& orientation)
 {
@@ -40,25 +31,80 @@ double orientationOrder(const Eigen::Vector3d& orientation)
 
 void MatMap::add(const LaidFiber& fiber)
 {
-    MatCell& c = cells_[{column(fiber.across), row(fiber.along)}];
+    const std::vector<CellShare> shares = footprint(fiber, lattice_);
+    // Its own line and its population (P59); without a spread all N on the line
     const double n = fiber.represents;
-    c.glass += n * fiber.glassMass;
-    c.binder += n * fiber.binderMass;
-    c.fibers += n;
-    c.orientationSum += n * fiber.glassMass * orientationOrder(fiber.orientation);
+    const bool spread = fiber.spread > 0.0 && n > 1.0;
+    const double onLine = spread ? 1.0 : n, spreadOut = spread ? n - 1.0 : 0.0;
+    const double order = orientationOrder(fiber.orientation);
+    // Its glass and binder per cell, per column and on the map, for the error sums
+    std::vector<double> glass(shares.size());
+    std::map<long, std::pair<double, double>> column;
+    double total = 0.0;
+    for (std::size_t k = 0; k < shares.size(); ++k)
+    {
+        const double physical = onLine * shares[k].line + spreadOut * shares[k].population;
+        glass[k] = physical * fiber.glassMass;
+        auto& [g, b] = column[shares[k].column];
+        g += glass[k];
+        b += physical * fiber.binderMass;
+        total += glass[k];
+    }
+    for (std::size_t k = 0; k < shares.size(); ++k)
+    {
+        const double physical = onLine * shares[k].line + spreadOut * shares[k].population;
+        const double g = glass[k], b = physical * fiber.binderMass;
+        const auto& [G, B] = column[shares[k].column];
+        MatCell& c = cells_[{shares[k].column, shares[k].row}];
+        c.glass += g;
+        c.binder += b;
+        c.fibers += physical;
+        c.orientationSum += g * order;
+        c.glassSquares += g * g;
+        c.binderSquares += b * b;
+        c.glassBinder += g * b;
+        c.glassColumn += g * G;
+        c.binderColumn += b * B;
+        c.glassBinderColumn += g * B;
+        c.glassTotal += g * total;
+        c.computed += physical / n;
+    }
+}
+
+std::array<double, MatCell::sumCount> MatCell::sums() const
+{
+    return {glass,       binder,      fibers,      orientationSum,    glassSquares, binderSquares,
+            glassBinder, glassColumn, binderColumn, glassBinderColumn, glassTotal,   computed};
+}
+
+void MatCell::setSums(const std::array<double, sumCount>& v)
+{
+    glass = v[0];
+    binder = v[1];
+    fibers = v[2];
+    orientationSum = v[3];
+    glassSquares = v[4];
+    binderSquares = v[5];
+    glassBinder = v[6];
+    glassColumn = v[7];
+    binderColumn = v[8];
+    glassBinderColumn = v[9];
+    glassTotal = v[10];
+    computed = v[11];
 }
 
 MatCell MatMap::total() const
 {
-    MatCell t;
+    std::array<double, MatCell::sumCount> t{};
     for (const auto& [key, c] : cells_)
     {
-        t.glass += c.glass;
-        t.binder += c.binder;
-        t.fibers += c.fibers;
-        t.orientationSum += c.orientationSum;
+        const auto v = c.sums();
+        for (int k = 0; k < MatCell::sumCount; ++k)
+            t[static_cast<std::size_t>(k)] += v[static_cast<std::size_t>(k)];
     }
-    return t;
+    MatCell total;
+    total.setSums(t);
+    return total;
 }
 
 std::vector<double> MatMap::acrossProfile(long rowFrom, long rowTo) const
@@ -77,7 +123,7 @@ std::vector<double> MatMap::acrossProfile(long rowFrom, long rowTo) const
     // The last column may be cut by the belt's edge: its area is what lies on the belt
     for (long i = 0; i < columns; ++i)
     {
-        const double width = std::min(cell_, acrossMax_ - (acrossMin_ + i * cell_));
+        const double width = lattice_.columnWidth(i);
         profile[static_cast<std::size_t>(i)] /= width * cell_ * static_cast<double>(rows);
     }
     return profile;

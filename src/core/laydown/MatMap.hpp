@@ -1,6 +1,10 @@
 // MatMap: the primary mat on the belt as a map of square cells across x along the belt
 // (docs/model.md sec. 11): per cell the glass and binder laid there and the physical
-// fibers, each laid fiber counted `represents` times in the cell of its centre's foot.
+// fibers, each laid fiber spread over the cells of its footprint (Footprint.hpp: its own
+// line along its length, its population around it). With them the sums its statistical
+// error needs (P60): every computed fiber is an independent draw, so a sum of the fibers'
+// contributions c_i has the variance sum c_i^2, and a column's, sum C_i^2 (C_i a fiber's
+// part of the column), kept per cell as sum c_i C_i.
 // Figures per cell: glass and binder area weight (kg/m^2), LOI = binder / (glass +
 // binder), fibers per m^2, and the orientation order <cos 2 theta> (glass-weighted,
 // theta the angle of a fiber's projection on the belt to the belt's motion: 1 all along
@@ -11,7 +15,9 @@
 #pragma once
 
 #include "laydown/Belt.hpp"
+#include "laydown/Footprint.hpp"
 
+#include <array>
 #include <map>
 #include <utility>
 #include <vector>
@@ -25,6 +31,21 @@ struct MatCell
     double binder = 0.0;         // kg
     double fibers = 0.0;         // physical fibers
     double orientationSum = 0.0; // sum of glass x cos 2 theta
+    // The error sums (kg^2) over the computed fibers i, c_i its glass (g) or binder (b)
+    // here, C_i its glass or binder in this column of the map, T_i its glass on the map
+    double glassSquares = 0.0;  // sum g_i^2
+    double binderSquares = 0.0; // sum b_i^2
+    double glassBinder = 0.0;   // sum g_i b_i
+    double glassColumn = 0.0;   // sum g_i G_i
+    double binderColumn = 0.0;  // sum b_i B_i
+    double glassBinderColumn = 0.0; // sum g_i B_i
+    double glassTotal = 0.0;    // sum g_i T_i
+    double computed = 0.0;      // the computed fibers behind it: sum of their shares here
+
+    // The sums in restart order (the state's lists); setSums reads them back.
+    static constexpr int sumCount = 12;
+    std::array<double, sumCount> sums() const;
+    void setSums(const std::array<double, sumCount>& values);
 };
 
 class MatMap
@@ -39,7 +60,9 @@ public:
     // The columns across the belt's width [acrossMin, acrossMax].
     long widthColumns() const;
 
+    // Lays the fiber over its footprint (and adds its error sums).
     void add(const LaidFiber& fiber);
+    const MapLattice& lattice() const { return lattice_; }
 
     // (column, row) -> cell, in order.
     using Cells = std::map<std::pair<long, long>, MatCell>;
@@ -62,6 +85,7 @@ public:
 private:
     double cell_;
     double acrossMin_, acrossMax_;
+    MapLattice lattice_;
     Cells cells_;
 };
 
