@@ -18,7 +18,10 @@ long MapLattice::column(double across) const
     return static_cast<long>(std::floor((across - acrossMin) / cell));
 }
 
-long MapLattice::row(double along) const { return static_cast<long>(std::floor(along / cell)); }
+long MapLattice::row(double along) const
+{
+    return static_cast<long>(std::floor(along / cell));
+}
 
 double MapLattice::columnWidth(long i) const
 {
@@ -115,8 +118,8 @@ std::vector<std::pair<long, double>> acrossHat(double x, double h, const MapLatt
 {
     const double left = lattice.acrossMin, right = lattice.acrossMax;
     // The columns the hat covers, with what it folds back over an edge
-    const auto columnOf = [&lattice](double across)
-    { return std::clamp(lattice.column(across), 0L, lattice.columns() - 1); };
+    const auto columnOf
+        = [&lattice](double across) { return std::clamp(lattice.column(across), 0L, lattice.columns() - 1); };
     long lo = columnOf(x - h), hi = columnOf(x + h);
     if (x - h < left)
         hi = std::max(hi, columnOf(2.0 * left - x + h));
@@ -128,9 +131,9 @@ std::vector<std::pair<long, double>> acrossHat(double x, double h, const MapLatt
     {
         const double a = left + static_cast<double>(i) * lattice.cell;
         const double b = a + lattice.columnWidth(i);
-        const double w = hatIntegral(b - x, h) - hatIntegral(a - x, h)
-                       + hatIntegral(2.0 * left - a - x, h) - hatIntegral(2.0 * left - b - x, h)
-                       + hatIntegral(2.0 * right - a - x, h) - hatIntegral(2.0 * right - b - x, h);
+        const double w = hatIntegral(b - x, h) - hatIntegral(a - x, h) + hatIntegral(2.0 * left - a - x, h)
+            - hatIntegral(2.0 * left - b - x, h) + hatIntegral(2.0 * right - a - x, h)
+            - hatIntegral(2.0 * right - b - x, h);
         weights.emplace_back(i, w);
         sum += w;
     }

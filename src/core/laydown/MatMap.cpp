@@ -15,11 +15,20 @@ MatMap::MatMap(double cell, double acrossMin, double acrossMax)
         throw std::invalid_argument("MatMap: the belt's width must be > 0");
 }
 
-long MatMap::widthColumns() const { return lattice_.columns(); }
+long MatMap::widthColumns() const
+{
+    return lattice_.columns();
+}
 
-long MatMap::column(double across) const { return lattice_.column(across); }
+long MatMap::column(double across) const
+{
+    return lattice_.column(across);
+}
 
-long MatMap::row(double along) const { return lattice_.row(along); }
+long MatMap::row(double along) const
+{
+    return lattice_.row(along);
+}
 
 double orientationOrder(const Eigen::Vector3d& orientation)
 {
@@ -73,7 +82,7 @@ void MatMap::add(const LaidFiber& fiber)
 
 std::array<double, MatCell::sumCount> MatCell::sums() const
 {
-    return {glass,       binder,      fibers,      orientationSum,    glassSquares, binderSquares,
+    return {glass,       binder,      fibers,       orientationSum,    glassSquares, binderSquares,
             glassBinder, glassColumn, binderColumn, glassBinderColumn, glassTotal,   computed};
 }
 

@@ -33,14 +33,14 @@ struct MatCell
     double orientationSum = 0.0; // sum of glass x cos 2 theta
     // The error sums (kg^2) over the computed fibers i, c_i its glass (g) or binder (b)
     // here, C_i its glass or binder in this column of the map, T_i its glass on the map
-    double glassSquares = 0.0;  // sum g_i^2
-    double binderSquares = 0.0; // sum b_i^2
-    double glassBinder = 0.0;   // sum g_i b_i
-    double glassColumn = 0.0;   // sum g_i G_i
-    double binderColumn = 0.0;  // sum b_i B_i
+    double glassSquares = 0.0;      // sum g_i^2
+    double binderSquares = 0.0;     // sum b_i^2
+    double glassBinder = 0.0;       // sum g_i b_i
+    double glassColumn = 0.0;       // sum g_i G_i
+    double binderColumn = 0.0;      // sum b_i B_i
     double glassBinderColumn = 0.0; // sum g_i B_i
-    double glassTotal = 0.0;    // sum g_i T_i
-    double computed = 0.0;      // the computed fibers behind it: sum of their shares here
+    double glassTotal = 0.0;        // sum g_i T_i
+    double computed = 0.0;          // the computed fibers behind it: sum of their shares here
 
     // The sums in restart order (the state's lists); setSums reads them back.
     static constexpr int sumCount = 12;

@@ -12,9 +12,9 @@ ValueWithError lossOnIgnition(double glass, double binder, double varGlass, doub
     if (!(sum > 0.0))
         return {};
     // dL/db = g / s^2, dL/dg = -b / s^2
-    const double var = (glass * glass * varBinder + binder * binder * varGlass
-                        - 2.0 * glass * binder * covariance)
-                     / (sum * sum * sum * sum);
+    const double var
+        = (glass * glass * varBinder + binder * binder * varGlass - 2.0 * glass * binder * covariance)
+        / (sum * sum * sum * sum);
     return {binder / sum, std::sqrt(std::max(var, 0.0))};
 }
 
@@ -25,8 +25,7 @@ ValueWithError cellAreaWeight(const MatCell& cell, double area)
 
 ValueWithError cellLoi(const MatCell& cell)
 {
-    return lossOnIgnition(cell.glass, cell.binder, cell.glassSquares, cell.binderSquares,
-                          cell.glassBinder);
+    return lossOnIgnition(cell.glass, cell.binder, cell.glassSquares, cell.binderSquares, cell.glassBinder);
 }
 
 AcrossProfile acrossProfileWithErrors(const MatMap& map, long rowFrom, long rowTo)
@@ -43,7 +42,8 @@ AcrossProfile acrossProfileWithErrors(const MatMap& map, long rowFrom, long rowT
     std::vector<MatCell> column(n);
     double meanArea = 0.0;
     for (long i = 0; i < columns; ++i)
-        meanArea += lattice.columnWidth(i) * lattice.cell * static_cast<double>(rows) / static_cast<double>(n);
+        meanArea
+            += lattice.columnWidth(i) * lattice.cell * static_cast<double>(rows) / static_cast<double>(n);
     double total = 0.0;
     for (const auto& [key, c] : map.cells())
     {
@@ -61,9 +61,11 @@ AcrossProfile acrossProfileWithErrors(const MatMap& map, long rowFrom, long rowT
     for (std::size_t i = 0; i < n; ++i)
     {
         const MatCell& s = column[i];
-        const double area = lattice.columnWidth(static_cast<long>(i)) * lattice.cell * static_cast<double>(rows);
+        const double area
+            = lattice.columnWidth(static_cast<long>(i)) * lattice.cell * static_cast<double>(rows);
         profile.areaWeight[i] = {s.glass / area, std::sqrt(s.glassColumn) / area};
-        profile.loi[i] = lossOnIgnition(s.glass, s.binder, s.glassColumn, s.binderColumn, s.glassBinderColumn);
+        profile.loi[i]
+            = lossOnIgnition(s.glass, s.binder, s.glassColumn, s.binderColumn, s.glassBinderColumn);
     }
     // var(mean) = var(sum_j G_j / A_j) / n^2, with sum over cells g_i T_i / A_j over the mean area
     profile.meanVariance = total / meanArea / static_cast<double>(n * n);

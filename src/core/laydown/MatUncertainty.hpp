@@ -48,10 +48,10 @@ AcrossProfile acrossProfileWithErrors(const MatMap& map, long rowFrom, long rowT
 // The profile's coefficient of variation, observed and split (above).
 struct NonUniformity
 {
-    double mean = 0.0;     // kg/m^2, the columns' mean
-    double observed = 0.0; // CoV as measured
-    double noise = 0.0;    // CoV counting noise alone gives
-    double real = 0.0;     // CoV of the mat itself, estimated (0 when noise explains all)
+    double mean = 0.0;      // kg/m^2, the columns' mean
+    double observed = 0.0;  // CoV as measured
+    double noise = 0.0;     // CoV counting noise alone gives
+    double real = 0.0;      // CoV of the mat itself, estimated (0 when noise explains all)
     double realUpper = 0.0; // its two-sigma upper bound
 };
 NonUniformity nonUniformity(const AcrossProfile& profile);
