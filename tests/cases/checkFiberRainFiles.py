@@ -208,7 +208,9 @@ def series(case, start="0"):
 _LAYDOWN = re.compile(r"laydown at time (\S+): (\d+) computed fibers laid \((\S+) physical\), glass (\S+) kg,"
                       r" binder (\S+) kg: LOI (\S+) %")
 _MAT = re.compile(r"^    mat \(rows (-?\d+) to (-?\d+), along (\S+) to (\S+) m, (\d+) columns across\):"
-                  r" glass area weight (\S+) g/m2, across-width CoV (\S+)")
+                  r" glass area weight (\S+) \+- (\S+) g/m2, LOI (\S+) \+- (\S+) %, across-width CoV (\S+)")
+_MAT_COV = re.compile(r"^    mat's across-width CoV: counting noise (\S+), the mat's own (\S+)"
+                      r" \(two-sigma bound (\S+)\)")
 _GLASS = re.compile(r"^    glass: injected (\S+) kg = in the air (\S+) \+ laid (\S+) \+ lost (\S+)"
                     r" \(balance (\S+) kg\)")
 _BINDER = re.compile(r"^    binder: captured (\S+) kg = on airborne fibers (\S+) \+ laid (\S+) \+ on lost"
@@ -243,7 +245,11 @@ def write_reports(log):
             reports[now]["mat"] = {"rows": (int(m.group(1)), int(m.group(2))),
                                    "along": (float(m.group(3)), float(m.group(4))),
                                    "columns": int(m.group(5)), "areaWeight": float(m.group(6)),
-                                   "CoV": float(m.group(7))}
+                                   "areaWeightError": float(m.group(7)), "LOI": float(m.group(8)),
+                                   "LOIError": float(m.group(9)), "CoV": float(m.group(10))}
+        elif _MAT_COV.match(line) and reports[now].get("mat"):
+            noise, real, bound = (float(v) for v in _MAT_COV.match(line).groups())
+            reports[now]["mat"].update({"CoVNoise": noise, "CoVReal": real, "CoVRealBound": bound})
         elif line.startswith("    mat: no complete row yet"):
             reports[now]["mat"] = None
         elif _GLASS.match(line):

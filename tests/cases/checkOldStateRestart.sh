@@ -10,9 +10,11 @@
 #   the library wrote it before (tests/cases/references/fiberRainState0.25.tar.xz:
 #   the laid fibers' totals in the mat's entry only). The copy restarts from it
 #   (startFrom latestTime) to 0.5: the log says where the laid totals came
-#   from, and its laydown.dat rows, maps, state's mat and log figures at 0.375
-#   and 0.5 are the uninterrupted run's to the bit (checkFiberRainSame.py
-#   --after), its glass balance closed.
+#   from, and its laydown.dat rows and log figures at 0.375 and 0.5 are the
+#   uninterrupted run's to the bit, its glass balance closed. That version laid
+#   each fiber whole in its centre's cell with no error sums: the log warns that
+#   the cells laid before carry none, and the maps hold the same glass and
+#   fibers (checkFiberRainSame.py --after --olderMat).
 #------------------------------------------------------------------------------
 set -euo pipefail
 here="$(cd "${0%/*}" && pwd)"
@@ -38,7 +40,9 @@ check "grep -q \"the fibers laid in the mat's totals only: taken from there\" lo
     "the log does not say that the laid totals came from the mat's"
 check "grep -q fibersLaid $last/uniform/dropletFiber/dropletFiber" \
     "the state written after the restart has no fibersLaid"
-check "'$PY' '$here/checkFiberRainSame.py' --after $restart '$full' '$work/split'" \
+check "grep -q 'has no error sums of the mat' log.restart" \
+    "the log does not warn that the older mat's cells carry no errors"
+check "'$PY' '$here/checkFiberRainSame.py' --after $restart --olderMat '$full' '$work/split'" \
     "the run restarted from the older state differs from the uninterrupted run"
 
 checkSummary || exit 1

@@ -4,7 +4,8 @@
 # at 10 k degrees to the belt's motion: every fiber is laid 69 steps after its birth
 # step at a place worked out by hand, every cell of a complete row holds exactly 10
 # fibers: G = mass flow / (W V) = 157.08 g/m2 (P48; deterministic, so to round-off,
-# 1e-12), the orientation order of column k cos(20 k deg), the map's totals the table's
+# 1e-12; each fiber along its length over the rows it crosses, P58), the orientation
+# order of column k cos(20 k deg), the map's totals the table's
 # and the log's, glass and fiber-mass balances to round-off at every write time, the step
 # table's laidGlass every step (checkFiberRain.py), serial and on 2 ranks (a checkerboard
 # decomposition: every fiber is born on one processor and laid by the other). ~2 s a run.
@@ -39,7 +40,9 @@ set_tests_properties(case.fiberRain.restart.parallel PROPERTIES LABELS "case" TI
 
 # A state written before the population counted the fibers the belt took (the laid
 # totals in the mat's entry only; references/fiberRainState0.25.tar.xz, written by that
-# version) restarts and continues to 0.5 as the uninterrupted run, to the bit
+# version) restarts and continues to 0.5 as the uninterrupted run: the laid fibers, the
+# step table and the log's balances to the bit; that version laid each fiber whole in its
+# centre's cell, without error sums: warned, the maps the same glass and fibers (1e-12)
 add_test(NAME case.fiberRain.olderState
   COMMAND ${CASES}/checkOldStateRestart.sh ${CASES}/fiberRain
     ${RUN}/fiberRain.serial ${RUN}/fiberRain.olderState

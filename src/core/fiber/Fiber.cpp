@@ -137,6 +137,16 @@ void Fiber::setRepresents(double n)
     state_.represents = n;
 }
 
+void Fiber::setPopulationSpread(double H)
+{
+    if (!(H >= 0.0) || !std::isfinite(H))
+    {
+        throw std::invalid_argument("Fiber: the population's spread must be finite and >= 0, got "
+                                    + std::to_string(H));
+    }
+    state_.populationSpread = H;
+}
+
 void Fiber::setVelocities(const Eigen::Matrix3Xd& velocities)
 {
     if (velocities.cols() != pointCount())

@@ -40,6 +40,10 @@ public:
     double represents() const { return state_.represents; }
     // Throws std::invalid_argument unless n is finite and > 0.
     void setRepresents(double n);
+    // Its population's hat half-width [m] (FiberState::populationSpread).
+    double populationSpread() const { return state_.populationSpread; }
+    // Throws std::invalid_argument unless H is finite and >= 0.
+    void setPopulationSpread(double H);
     double length() const { return state_.restLengths.sum(); }
 
     // Initial conditions and loads set by the user. Velocities are made consistent

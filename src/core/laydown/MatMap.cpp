@@ -49,7 +49,7 @@ void MatMap::add(const LaidFiber& fiber)
     // Its glass and binder per cell, per column and on the map, for the error sums
     std::vector<double> glass(shares.size());
     std::map<long, std::pair<double, double>> column;
-    double total = 0.0;
+    double total = 0.0, totalBinder = 0.0;
     for (std::size_t k = 0; k < shares.size(); ++k)
     {
         const double physical = onLine * shares[k].line + spreadOut * shares[k].population;
@@ -58,6 +58,7 @@ void MatMap::add(const LaidFiber& fiber)
         g += glass[k];
         b += physical * fiber.binderMass;
         total += glass[k];
+        totalBinder += physical * fiber.binderMass;
     }
     for (std::size_t k = 0; k < shares.size(); ++k)
     {
@@ -76,14 +77,17 @@ void MatMap::add(const LaidFiber& fiber)
         c.binderColumn += b * B;
         c.glassBinderColumn += g * B;
         c.glassTotal += g * total;
+        c.binderTotal += b * totalBinder;
+        c.glassBinderTotal += g * totalBinder;
         c.computed += physical / n;
     }
 }
 
 std::array<double, MatCell::sumCount> MatCell::sums() const
 {
-    return {glass,       binder,      fibers,       orientationSum,    glassSquares, binderSquares,
-            glassBinder, glassColumn, binderColumn, glassBinderColumn, glassTotal,   computed};
+    return {glass,         binder,      fibers,           orientationSum, glassSquares,
+            binderSquares, glassBinder, glassColumn,      binderColumn,   glassBinderColumn,
+            glassTotal,    binderTotal, glassBinderTotal, computed};
 }
 
 void MatCell::setSums(const std::array<double, sumCount>& v)
@@ -99,7 +103,9 @@ void MatCell::setSums(const std::array<double, sumCount>& v)
     binderColumn = v[8];
     glassBinderColumn = v[9];
     glassTotal = v[10];
-    computed = v[11];
+    binderTotal = v[11];
+    glassBinderTotal = v[12];
+    computed = v[13];
 }
 
 MatCell MatMap::total() const

@@ -4,7 +4,7 @@
 // line along its length, its population around it). With them the sums its statistical
 // error needs (P60): every computed fiber is an independent draw, so a sum of the fibers'
 // contributions c_i has the variance sum c_i^2, and a column's, sum C_i^2 (C_i a fiber's
-// part of the column), kept per cell as sum c_i C_i.
+// part of the column), kept per cell as sum c_i C_i; the map's likewise.
 // Figures per cell: glass and binder area weight (kg/m^2), LOI = binder / (glass +
 // binder), fibers per m^2, and the orientation order <cos 2 theta> (glass-weighted,
 // theta the angle of a fiber's projection on the belt to the belt's motion: 1 all along
@@ -40,10 +40,12 @@ struct MatCell
     double binderColumn = 0.0;      // sum b_i B_i
     double glassBinderColumn = 0.0; // sum g_i B_i
     double glassTotal = 0.0;        // sum g_i T_i
+    double binderTotal = 0.0;       // sum b_i U_i (U_i its binder on the map)
+    double glassBinderTotal = 0.0;  // sum g_i U_i
     double computed = 0.0;          // the computed fibers behind it: sum of their shares here
 
     // The sums in restart order (the state's lists); setSums reads them back.
-    static constexpr int sumCount = 12;
+    static constexpr int sumCount = 14;
     std::array<double, sumCount> sums() const;
     void setSums(const std::array<double, sumCount>& values);
 };

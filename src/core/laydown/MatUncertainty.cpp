@@ -45,6 +45,7 @@ AcrossProfile acrossProfileWithErrors(const MatMap& map, long rowFrom, long rowT
         meanArea
             += lattice.columnWidth(i) * lattice.cell * static_cast<double>(rows) / static_cast<double>(n);
     double total = 0.0;
+    MatCell all;
     for (const auto& [key, c] : map.cells())
     {
         const auto [i, j] = key;
@@ -56,6 +57,11 @@ AcrossProfile acrossProfileWithErrors(const MatMap& map, long rowFrom, long rowT
         s.glassColumn += c.glassColumn;
         s.binderColumn += c.binderColumn;
         s.glassBinderColumn += c.glassBinderColumn;
+        all.glass += c.glass;
+        all.binder += c.binder;
+        all.glassTotal += c.glassTotal;
+        all.binderTotal += c.binderTotal;
+        all.glassBinderTotal += c.glassBinderTotal;
         total += c.glassTotal / (lattice.columnWidth(i) * lattice.cell * static_cast<double>(rows));
     }
     for (std::size_t i = 0; i < n; ++i)
@@ -67,6 +73,8 @@ AcrossProfile acrossProfileWithErrors(const MatMap& map, long rowFrom, long rowT
         profile.loi[i]
             = lossOnIgnition(s.glass, s.binder, s.glassColumn, s.binderColumn, s.glassBinderColumn);
     }
+    profile.loiAll
+        = lossOnIgnition(all.glass, all.binder, all.glassTotal, all.binderTotal, all.glassBinderTotal);
     // var(mean) = var(sum_j G_j / A_j) / n^2, with sum over cells g_i T_i / A_j over the mean area
     profile.meanVariance = total / meanArea / static_cast<double>(n * n);
     return profile;

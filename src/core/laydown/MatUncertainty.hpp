@@ -42,6 +42,7 @@ struct AcrossProfile
     std::vector<ValueWithError> areaWeight;
     std::vector<ValueWithError> loi;
     double meanVariance = 0.0;
+    ValueWithError loiAll; // the rows' LOI over the whole width
 };
 AcrossProfile acrossProfileWithErrors(const MatMap& map, long rowFrom, long rowTo);
 

@@ -218,6 +218,7 @@ void Foam::functionObjects::dropletFiberCollision::advanceFibers
 )
 {
     capture_.handPopulations(reaction_);
+    population_.notePopulationSpreads(capture_.populationSpreads());
     population_.advance(motion_, dt, capture, statistics_, reaction_);
     capture_.countCaptured(population_.fibers(), capture);
     population_.removeLaid(laydown_.layDown(population_.fibers()));

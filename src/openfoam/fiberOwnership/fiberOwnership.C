@@ -79,6 +79,7 @@ scalarList packState(const ::dropletFiber::FiberState& s)
     appendEnd(s.endEnd, values);
     values.append(s.immobile ? 1 : 0);
     values.append(s.represents);
+    values.append(s.populationSpread);
     // The turbulent fluctuation travels with its fiber (0 or n columns)
     values.append(scalar(s.turbulentVelocity.cols()));
     append(s.turbulentVelocity, values);
@@ -113,6 +114,7 @@ scalarList packState(const ::dropletFiber::FiberState& s)
     extractEnd(values, k, s.endEnd);
     s.immobile = values[k++] != 0;
     s.represents = values[k++];
+    s.populationSpread = values[k++];
     s.turbulentVelocity.resize(3, Eigen::Index(values[k++]));
     extract(values, k, s.turbulentVelocity);
     s.segmentHits.resize(n - 1);

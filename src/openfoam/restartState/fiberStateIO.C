@@ -134,6 +134,11 @@ Foam::dictionary Foam::dropletFiber::fiberStateDict
     {
         d.add("represents", s.represents);
     }
+    // A weighted fiber's population's last spread (P59); absent: none
+    if (s.populationSpread != 0)
+    {
+        d.add("populationSpread", s.populationSpread);
+    }
     d.add("startEnd", endDict(s.startEnd));
     d.add("endEnd", endDict(s.endEnd));
     d.add("positions", toScalarList(s.positions.data(), s.positions.size()));
@@ -200,6 +205,11 @@ Foam::dictionary Foam::dropletFiber::fiberStateDict
     (
         d, "represents", &s.represents,
         [](scalar v) { return v > 0; }, "> 0"
+    );
+    s.populationSpread = getCheckedScalar
+    (
+        d, "populationSpread", &s.populationSpread,
+        [](scalar v) { return v >= 0; }, ">= 0"
     );
     s.startEnd = endFromDict(d.subDict("startEnd"));
     s.endEnd = endFromDict(d.subDict("endEnd"));

@@ -2,7 +2,7 @@
 // 400 mats of a Poisson rain of weighted fibers (random places, orientations, weights and
 // binder, some with a population's hat), each with its own seed. The errors each mat
 // estimates from its own fibers must match the scatter over the mats: a cell's area weight
-// and LOI, a column's area weight; and, for a uniform rain (a mat with no real
+// and LOI, a column's area weight, the mat's LOI; and, for a uniform rain (a mat with no real
 // non-uniformity), the profile's CoV^2 must be the noise's on average. For a rain
 // whose density varies across, the real CoV must be the ensemble mean profile's.
 #include "laydown/MatUncertainty.hpp"
@@ -64,7 +64,7 @@ struct Scatter
 
 TEST(MatUncertainty, ErrorsMatchTheScatterOfSeeds)
 {
-    Scatter cell, loi, column;
+    Scatter cell, loi, column, loiAll;
     const int mats = 400;
     for (int s = 0; s < mats; ++s)
     {
@@ -75,11 +75,13 @@ TEST(MatUncertainty, ErrorsMatchTheScatterOfSeeds)
         loi.add(cellLoi(it->second).value, cellLoi(it->second).error);
         const AcrossProfile p = acrossProfileWithErrors(map, 0, 9);
         column.add(p.areaWeight[3].value, p.areaWeight[3].error);
+        loiAll.add(p.loiAll.value, p.loiAll.error);
     }
     // The variance of a variance estimate over 400 draws: sqrt(2/400) = 7 %
     EXPECT_NEAR(cell.estimatedVariance() / cell.variance(), 1.0, 0.2);
     EXPECT_NEAR(loi.estimatedVariance() / loi.variance(), 1.0, 0.2);
     EXPECT_NEAR(column.estimatedVariance() / column.variance(), 1.0, 0.2);
+    EXPECT_NEAR(loiAll.estimatedVariance() / loiAll.variance(), 1.0, 0.2);
 }
 
 TEST(MatUncertainty, NoiseAndRealNonUniformity)

@@ -129,6 +129,7 @@ void Foam::dropletFiber::fiberCapture::spreadDemand
     spreadStep_ = spreadStep();
     spreadStep_.populations = populations_.get();
     fiberLevel_.clear();
+    spreadOf_.clear();
     spreadPoints_ = points;
     sampleLevel_.assign(points.size(), 0);
     sampleWhy_.assign(points.size(), ::dropletFiber::LevelChoice::Why::thin);
@@ -153,6 +154,10 @@ void Foam::dropletFiber::fiberCapture::spreadDemand
         if (N > 1)
         {
             fiberLevel_[held.id[f]] = choice.level;
+            if (::dropletFiber::insideActiveBox(grid.spec(), shape[f].first))
+            {
+                spreadOf_[held.id[f]] = levels.levelSpacing(choice.level);
+            }
         }
         for (Eigen::Index j = 0; j < fiber.segmentCount(); ++j)
         {

@@ -29,7 +29,7 @@ const Foam::wordList laydownKeys
 };
 
 //- Values per laid fiber in the exchange
-constexpr Foam::label laidWidth = 14;
+constexpr Foam::label laidWidth = 15;
 
 } // End anonymous namespace
 
@@ -146,7 +146,8 @@ Foam::dropletFiber::fiberLaydown::gathered
         {
             f.time, f.across, f.along, f.orientation.x(), f.orientation.y(),
             f.orientation.z(), f.length, f.glassMass, f.binderMass,
-            f.represents, f.bareFraction, f.sigmaVariation, scalar(f.id), 0.0
+            f.represents, f.bareFraction, f.sigmaVariation, scalar(f.id),
+            f.endToEnd, f.spread
         };
         for (const scalar v : values)
         {
@@ -176,6 +177,8 @@ Foam::dropletFiber::fiberLaydown::gathered
             f.bareFraction = v[10];
             f.sigmaVariation = v[11];
             f.id = long(std::llround(v[12]));
+            f.endToEnd = v[13];
+            f.spread = v[14];
             laid.push_back(f);
         }
     }
@@ -208,9 +211,11 @@ std::pair<long, long> Foam::dropletFiber::fiberLaydown::completeRows() const
     // A row is complete once the whole laying zone [footMin, footMax] has passed over it
     // since the first fiber: along from V t_first - footMin + (footMax - footMin) to
     // V t - footMax
+    // (its footprints reach `reach` further either way)
     const scalar from =
-        V*totals_.firstTime - totals_.footMin + (totals_.footMax - totals_.footMin);
-    const scalar to = V*time_.value() - totals_.footMax;
+        V*totals_.firstTime - totals_.footMin + (totals_.footMax - totals_.footMin)
+      + totals_.reach;
+    const scalar to = V*time_.value() - totals_.footMax - totals_.reach;
     return {long(std::ceil(from/cell - 1e-9)), long(std::floor(to/cell + 1e-9)) - 1};
 }
 
@@ -420,6 +425,12 @@ Foam::labelList Foam::dropletFiber::fiberLaydown::layDown
         const scalar foot = belt_.speed()*f.time - f.along;
         totals_.footMin = min(totals_.footMin, foot);
         totals_.footMax = max(totals_.footMax, foot);
+        // How far its footprint reaches along beyond its centre (P58, P59)
+        totals_.reach = max
+        (
+            totals_.reach,
+            0.5*f.endToEnd*mag(f.orientation.y()) + f.spread
+        );
     }
     writeRows(laid);
     labelList laidHere;

@@ -9,6 +9,8 @@ Description
 #include "fiberLaydown.H"
 #include "OSspecific.H"
 
+#include "laydown/MatUncertainty.hpp"
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 void Foam::dropletFiber::fiberLaydown::startTable()
@@ -26,14 +28,15 @@ void Foam::dropletFiber::fiberLaydown::startTable()
         "Fibers laid on the belt, one row each (one physical fiber's figures;"
         " represents: how many were laid with it). across, along [m] in the"
         " belt's frame; orientation: unit end-to-end (across, along, normal);"
-        " masses in kg"
+        " masses in kg; endToEnd [m] between its ends; spread [m] its"
+        " population's hat half-width on the belt (0: none)"
     );
     writeCommented(os, "Time");
     const char* columns[] =
     {
         "id", "across", "along", "orientation_across", "orientation_along",
         "orientation_normal", "length", "glassMass", "binderMass",
-        "represents", "bareFraction", "sigmaCoV"
+        "represents", "bareFraction", "sigmaCoV", "endToEnd", "spread"
     };
     for (const char* column : columns)
     {
@@ -61,7 +64,8 @@ void Foam::dropletFiber::fiberLaydown::writeRows
         {
             f.across, f.along, f.orientation.x(), f.orientation.y(),
             f.orientation.z(), f.length, f.glassMass, f.binderMass,
-            f.represents, f.bareFraction, f.sigmaVariation
+            f.represents, f.bareFraction, f.sigmaVariation, f.endToEnd,
+            f.spread
         };
         for (const scalar v : values)
         {
@@ -94,7 +98,9 @@ void Foam::dropletFiber::fiberLaydown::writeMapVtk() const
     std::vector<::dropletFiber::VtkField> fields
     {
         {"areaWeight", 1, {}}, {"binderAreaWeight", 1, {}}, {"LOI", 1, {}},
-        {"fibersPerArea", 1, {}}, {"orientationOrder", 1, {}}
+        {"fibersPerArea", 1, {}}, {"orientationOrder", 1, {}},
+        {"areaWeightError", 1, {}}, {"LOIError", 1, {}},
+        {"computedFibers", 1, {}}
     };
     for (auto& f : fields)
     {
@@ -110,6 +116,10 @@ void Foam::dropletFiber::fiberLaydown::writeMapVtk() const
             c.glass + c.binder > 0 ? 100*c.binder/(c.glass + c.binder) : 0;
         fields[3].values[k] = c.fibers/area;
         fields[4].values[k] = c.glass > 0 ? c.orientationSum/c.glass : 0;
+        // P60: the standard errors from the computed fibers behind the cell
+        fields[5].values[k] = 1000*::dropletFiber::cellAreaWeight(c, area).error;
+        fields[6].values[k] = 100*::dropletFiber::cellLoi(c).error;
+        fields[7].values[k] = c.computed;
     }
     const fileName dir =
         baseFileDir()/name()/time_.timeName(time_.startTime().value());
@@ -123,6 +133,30 @@ void Foam::dropletFiber::fiberLaydown::writeMapVtk() const
         Eigen::Vector3d(h, h, h), {nx, ny, 1}, fields
     );
     series_->add(file, time_.value());
+}
+
+
+void Foam::dropletFiber::fiberLaydown::reportMat
+(
+    const long rowFrom,
+    const long rowTo
+) const
+{
+    // P60, P61: the complete rows' figures with their errors
+    const ::dropletFiber::AcrossProfile profile =
+        ::dropletFiber::acrossProfileWithErrors(*map_, rowFrom, rowTo);
+    const ::dropletFiber::NonUniformity u =
+        ::dropletFiber::nonUniformity(profile);
+    Info<< "    mat (rows " << rowFrom << " to " << rowTo << ", along "
+        << rowFrom*map_->cell() << " to " << (rowTo + 1)*map_->cell()
+        << " m, " << profile.areaWeight.size() << " columns across):"
+        << " glass area weight " << 1000*u.mean << " +- "
+        << 1000*Foam::sqrt(profile.meanVariance) << " g/m2, LOI "
+        << 100*profile.loiAll.value << " +- " << 100*profile.loiAll.error
+        << " %, across-width CoV " << u.observed << nl
+        << "    mat's across-width CoV: counting noise " << u.noise
+        << ", the mat's own " << u.real << " (two-sigma bound "
+        << u.realUpper << ")" << nl;
 }
 
 
@@ -145,20 +179,7 @@ void Foam::dropletFiber::fiberLaydown::reportAtWrite()
     const std::pair<long, long> rows = completeRows();
     if (rows.first <= rows.second)
     {
-        const std::vector<double> profile =
-            map_->acrossProfile(rows.first, rows.second);
-        double mean = 0;
-        for (double v : profile)
-        {
-            mean += v;
-        }
-        mean /= std::max<std::size_t>(profile.size(), 1);
-        Info<< "    mat (rows " << rows.first << " to " << rows.second
-            << ", along " << rows.first*map_->cell() << " to "
-            << (rows.second + 1)*map_->cell() << " m, " << profile.size()
-            << " columns across): glass area weight " << 1000*mean
-            << " g/m2, across-width CoV "
-            << ::dropletFiber::MatMap::variation(profile) << nl;
+        reportMat(rows.first, rows.second);
     }
     else
     {

@@ -26,6 +26,9 @@ void Foam::dropletFiber::fiberLaydown::writeState
     labelList columns(cells.size()), rows(cells.size());
     scalarList glass(cells.size()), binder(cells.size());
     scalarList fibers(cells.size()), orientation(cells.size());
+    // The error sums (P60): per cell the MatCell sums after the first four
+    constexpr label errorSums = ::dropletFiber::MatCell::sumCount - 4;
+    scalarList errors(errorSums*cells.size());
     label k = 0;
     for (const auto& [key, c] : cells)
     {
@@ -35,6 +38,11 @@ void Foam::dropletFiber::fiberLaydown::writeState
         binder[k] = c.binder;
         fibers[k] = c.fibers;
         orientation[k] = c.orientationSum;
+        const auto sums = c.sums();
+        for (label e = 0; e < errorSums; ++e)
+        {
+            errors[errorSums*k + e] = sums[std::size_t(4 + e)];
+        }
         ++k;
     }
     dictionary mat;
@@ -45,6 +53,7 @@ void Foam::dropletFiber::fiberLaydown::writeState
     mat.add("firstTime", totals_.firstTime);
     mat.add("footMin", totals_.footMin);
     mat.add("footMax", totals_.footMax);
+    mat.add("footReach", totals_.reach);
     mat.add("cell", map_->cell());
     mat.add("columns", columns);
     mat.add("rows", rows);
@@ -52,6 +61,7 @@ void Foam::dropletFiber::fiberLaydown::writeState
     mat.add("cellBinder", binder);
     mat.add("cellFibers", fibers);
     mat.add("cellOrientation", orientation);
+    mat.add("cellErrorSums", errors);
     state.add("laydown", mat);
 }
 
@@ -98,6 +108,8 @@ void Foam::dropletFiber::fiberLaydown::readState
     totals_.firstTime = mat->get<scalar>("firstTime");
     totals_.footMin = mat->get<scalar>("footMin");
     totals_.footMax = mat->get<scalar>("footMax");
+    // A state written before fibers were laid along their length: whole
+    totals_.reach = mat->lookupOrDefault<scalar>("footReach", 0);
     const labelList columns = mat->get<labelList>("columns");
     const labelList rows = mat->get<labelList>("rows");
     const scalarList glass = mat->get<scalarList>("cellGlass");
@@ -117,13 +129,38 @@ void Foam::dropletFiber::fiberLaydown::readState
             << ", glass " << glass.size() << "): the state is damaged."
             << exit(FatalIOError);
     }
+    constexpr label errorSums = ::dropletFiber::MatCell::sumCount - 4;
+    const scalarList errors =
+        mat->lookupOrDefault<scalarList>("cellErrorSums", scalarList());
+    if (errors.size() != errorSums*n)
+    {
+        if (!errors.empty())
+        {
+            FatalIOErrorInFunction(*mat)
+                << "The restart state " << path << ": the mat's cellErrorSums"
+                << " hold " << errors.size() << " values, not " << errorSums
+                << " per cell (" << errorSums*n << "): the state is damaged."
+                << exit(FatalIOError);
+        }
+        WarningInFunction
+            << type() << " " << name() << ": the restart state " << path
+            << " has no error sums of the mat (written before the mat had"
+            << " errors): the " << n << " cells laid before carry none, their"
+            << " errors and the CoV's noise are too small." << endl;
+    }
     forAll(columns, k)
     {
+        std::array<double, ::dropletFiber::MatCell::sumCount> sums{};
+        sums[0] = glass[k];
+        sums[1] = binder[k];
+        sums[2] = fibers[k];
+        sums[3] = orientation[k];
+        for (label e = 0; e < errorSums && !errors.empty(); ++e)
+        {
+            sums[std::size_t(4 + e)] = errors[errorSums*k + e];
+        }
         ::dropletFiber::MatCell c;
-        c.glass = glass[k];
-        c.binder = binder[k];
-        c.fibers = fibers[k];
-        c.orientationSum = orientation[k];
+        c.setSums(sums);
         map_->setCell(columns[k], rows[k], c);
     }
 }

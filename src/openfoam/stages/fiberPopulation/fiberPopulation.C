@@ -164,6 +164,26 @@ void Foam::dropletFiber::fiberPopulation::removeLostFibers()
 }
 
 
+void Foam::dropletFiber::fiberPopulation::notePopulationSpreads
+(
+    const std::unordered_map<label, scalar>& spreadById
+)
+{
+    if (spreadById.empty())
+    {
+        return;
+    }
+    for (std::size_t f = 0; f < held_.size(); ++f)
+    {
+        const auto found = spreadById.find(held_.id[f]);
+        if (found != spreadById.end())
+        {
+            held_.fibers[f].setPopulationSpread(found->second);
+        }
+    }
+}
+
+
 void Foam::dropletFiber::fiberPopulation::removeLaid(const labelList& laid)
 {
     // The totals go on from the master's, the others' added to it, as the
