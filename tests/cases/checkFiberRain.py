@@ -217,10 +217,10 @@ for T in writeTimes:
     check(worstG <= 1e-12 and worstN <= 1e-12 and worstO <= 1e-12 and zeros,
           "%s: every cell the hand's: area weight, fibers per m2 to 1e-12 of G (%.3g, %.3g),"
           " orientation order to 1e-12 (%.3g), binder and LOI 0" % (name, worstG, worstN, worstO))
-    # The complete rows (P48), the hand's way: the whole laying zone [footMin, footMax]
-    # passed over them since the first fiber
-    # less the footprints' reach along beyond their centres (P58: L/2 |o_along|)
-    fromRow = math.ceil((V * first - footMin + (footMax - footMin) + reach) / h - 1e-9)
+    # The complete rows (P48), the hand's way: they entered the laying zone [footMin,
+    # footMax] after the first fiber and have left it, less the footprints' reach along
+    # beyond their centres (P58: L/2 |o_along|)
+    fromRow = math.ceil((V * first - footMin + reach) / h - 1e-9)
     toRow = math.floor((V * T - footMax - reach) / h + 1e-9) - 1
     rep = reports.get(name, {})
     logMat = rep.get("mat")

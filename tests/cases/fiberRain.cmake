@@ -57,3 +57,12 @@ set_tests_properties(case.fiberRain.olderState PROPERTIES LABELS "case" TIMEOUT 
 add_test(NAME case.fiberRain.belt
   COMMAND ${CASES}/checkFiberRainBelt.sh ${CASES}/fiberRain ${RUN}/fiberRain.belt)
 set_tests_properties(case.fiberRain.belt PROPERTIES LABELS "case" TIMEOUT 120)
+
+# dropletFiberFormingLine on the rain's mat at 0.5 s (P60-P62, by hand): the hood's area
+# weight G +- G/30 (900 computed fibers in the 9 complete rows), counting noise 0.1 and
+# its own CoV 0; a line of 3: 3 G +- sqrt(3) G/30, noise 0.1/sqrt(3); profile.dat; -hoods
+# 0 and a line longer than the complete rows stop naming the option
+add_test(NAME case.fiberRain.formingLine
+  COMMAND ${PYTHON3} ${CASES}/checkFormingLine.py ${RUN}/fiberRain.serial)
+set_tests_properties(case.fiberRain.formingLine PROPERTIES LABELS "case" TIMEOUT 60
+  FIXTURES_REQUIRED fiberRain.serial)

@@ -25,7 +25,8 @@ namespace
 //- The entries of fibers.laydown (docs/reference.md)
 const Foam::wordList laydownKeys
 {
-    "patch", "point", "normal", "width", "velocity", "cell"
+    "patch", "point", "normal", "width", "velocity", "cell", "populations",
+    "steadyFrom"
 };
 
 //- Values per laid fiber in the exchange
@@ -197,26 +198,25 @@ Foam::dropletFiber::fiberLaydown::gathered
 
 std::pair<long, long> Foam::dropletFiber::fiberLaydown::completeRows() const
 {
-    if (totals_.firstTime < 0 || map_->cells().empty())
+    if (totals_.zone.firstTime < 0 || map_->cells().empty())
     {
         return {1, 0};
     }
-    const scalar V = belt_.speed();
-    const scalar cell = map_->cell();
-    if (!(V > 0))
+    if (!(belt_.speed() > 0))
     {
-        // At rest: the whole deposit is the mat
-        return {map_->cells().begin()->first.second, map_->cells().rbegin()->first.second};
+        // At rest: the whole deposit is the mat (the cells are in column order)
+        long first = map_->cells().begin()->first.second, last = first;
+        for (const auto& entry : map_->cells())
+        {
+            first = std::min(first, entry.first.second);
+            last = std::max(last, entry.first.second);
+        }
+        return {first, last};
     }
-    // A row is complete once the whole laying zone [footMin, footMax] has passed over it
-    // since the first fiber: along from V t_first - footMin + (footMax - footMin) to
-    // V t - footMax
-    // (its footprints reach `reach` further either way)
-    const scalar from =
-        V*totals_.firstTime - totals_.footMin + (totals_.footMax - totals_.footMin)
-      + totals_.reach;
-    const scalar to = V*time_.value() - totals_.footMax - totals_.reach;
-    return {long(std::ceil(from/cell - 1e-9)), long(std::floor(to/cell + 1e-9)) - 1};
+    return totals_.zone.completeRows
+    (
+        belt_.speed(), map_->cell(), steadyFrom_, time_.value()
+    );
 }
 
 
@@ -274,6 +274,17 @@ void Foam::dropletFiber::fiberLaydown::read
     settings_ = *ld;
     checkKeys(*ld, laydownKeys);
     const scalar cell = getPositive(*ld, "cell");
+    // P59: a weighted fiber's population over its hat, or on its line
+    populationsOnLine_ =
+        getChoice(*ld, "populations", "spread", {"spread", "line"}) == "line";
+    steadyFrom_ =
+        ld->found("steadyFrom")
+      ? getCheckedScalar
+        (
+            *ld, "steadyFrom", nullptr, [](scalar v) { return v >= 0; },
+            ">= 0 [s] (the time from which the laying is steady)"
+        )
+      : -1;
     const bool plane = ld->found("point") || ld->found("normal");
     if (ld->found("patch") == plane)
     {
@@ -399,6 +410,7 @@ Foam::labelList Foam::dropletFiber::fiberLaydown::layDown
     }
     std::vector<::dropletFiber::LaidFiber> here;
     DynamicList<label> reached;
+    const scalar keepSpread = populationsOnLine_ ? 0 : 1;
     const scalar t = time_.value();
     for (std::size_t f = 0; f < held.fibers.size(); ++f)
     {
@@ -406,6 +418,7 @@ Foam::labelList Foam::dropletFiber::fiberLaydown::layDown
         if (::dropletFiber::reachesBelt(fiber, belt_))
         {
             here.push_back(::dropletFiber::layFiber(fiber, belt_, t, held.id[f]));
+            here.back().spread *= keepSpread;
             reached.append(label(f));
         }
     }
@@ -417,20 +430,7 @@ Foam::labelList Foam::dropletFiber::fiberLaydown::layDown
         totals_.physical += f.represents;
         totals_.glass += f.represents*f.glassMass;
         totals_.binder += f.represents*f.binderMass;
-        if (totals_.firstTime < 0)
-        {
-            totals_.firstTime = f.time;
-        }
-        // The foot along the motion in the fixed frame: V t - along
-        const scalar foot = belt_.speed()*f.time - f.along;
-        totals_.footMin = min(totals_.footMin, foot);
-        totals_.footMax = max(totals_.footMax, foot);
-        // How far its footprint reaches along beyond its centre (P58, P59)
-        totals_.reach = max
-        (
-            totals_.reach,
-            0.5*f.endToEnd*mag(f.orientation.y()) + f.spread
-        );
+        totals_.zone.add(f, belt_.speed());
     }
     writeRows(laid);
     labelList laidHere;
@@ -451,7 +451,17 @@ void Foam::dropletFiber::fiberLaydown::report(Ostream& os) const
         << toFoam(belt_.normal) << ", velocity "
         << toFoam(belt_.velocity) << " m/s, across "
         << map_->acrossMin() << " to " << map_->acrossMax() << " m, map cells "
-        << map_->cell() << " m" << nl;
+        << map_->cell() << " m; populations "
+        << (populationsOnLine_ ? "on their fibers' lines" : "spread (P59)")
+        << "; complete rows entered the laying zone after ";
+    if (steadyFrom_ >= 0)
+    {
+        os  << "steadyFrom " << steadyFrom_ << " s" << nl;
+    }
+    else
+    {
+        os  << "the first fiber was laid" << nl;
+    }
 }
 
 

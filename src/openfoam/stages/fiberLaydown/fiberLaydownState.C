@@ -50,11 +50,16 @@ void Foam::dropletFiber::fiberLaydown::writeState
     mat.add("physical", totals_.physical);
     mat.add("glass", totals_.glass);
     mat.add("binder", totals_.binder);
-    mat.add("firstTime", totals_.firstTime);
-    mat.add("footMin", totals_.footMin);
-    mat.add("footMax", totals_.footMax);
-    mat.add("footReach", totals_.reach);
+    mat.add("firstTime", totals_.zone.firstTime);
+    mat.add("footMin", totals_.zone.footMin);
+    mat.add("footMax", totals_.zone.footMax);
+    mat.add("footReach", totals_.zone.reach);
     mat.add("cell", map_->cell());
+    // The belt as the settings give it (for dropletFiberFormingLine; not read back)
+    mat.add("acrossMin", map_->acrossMin());
+    mat.add("acrossMax", map_->acrossMax());
+    mat.add("beltSpeed", belt_.speed());
+    mat.add("steadyFrom", steadyFrom_);
     mat.add("columns", columns);
     mat.add("rows", rows);
     mat.add("cellGlass", glass);
@@ -105,11 +110,11 @@ void Foam::dropletFiber::fiberLaydown::readState
     totals_.physical = mat->get<scalar>("physical");
     totals_.glass = mat->get<scalar>("glass");
     totals_.binder = mat->get<scalar>("binder");
-    totals_.firstTime = mat->get<scalar>("firstTime");
-    totals_.footMin = mat->get<scalar>("footMin");
-    totals_.footMax = mat->get<scalar>("footMax");
+    totals_.zone.firstTime = mat->get<scalar>("firstTime");
+    totals_.zone.footMin = mat->get<scalar>("footMin");
+    totals_.zone.footMax = mat->get<scalar>("footMax");
     // A state written before fibers were laid along their length: whole
-    totals_.reach = mat->lookupOrDefault<scalar>("footReach", 0);
+    totals_.zone.reach = mat->lookupOrDefault<scalar>("footReach", 0);
     const labelList columns = mat->get<labelList>("columns");
     const labelList rows = mat->get<labelList>("rows");
     const scalarList glass = mat->get<scalarList>("cellGlass");
