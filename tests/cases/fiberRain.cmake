@@ -63,6 +63,6 @@ set_tests_properties(case.fiberRain.belt PROPERTIES LABELS "case" TIMEOUT 120)
 # its own CoV 0; a line of 3: 3 G +- sqrt(3) G/30, noise 0.1/sqrt(3); profile.dat; -hoods
 # 0 and a line longer than the complete rows stop naming the option
 add_test(NAME case.fiberRain.formingLine
-  COMMAND ${PYTHON3} ${CASES}/checkFormingLine.py ${RUN}/fiberRain.serial)
+  COMMAND ${CASES}/checkFormingLine.sh ${RUN}/fiberRain.serial)
 set_tests_properties(case.fiberRain.formingLine PROPERTIES LABELS "case" TIMEOUT 60
   FIXTURES_REQUIRED fiberRain.serial)

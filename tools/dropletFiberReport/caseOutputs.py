@@ -139,3 +139,26 @@ def patch_types(case):
             text = open(path, errors="replace").read()
             return dict(re.findall(r"(\w+)\s*\{[^{}]*?\btype\s+(\w+)\s*;", text))
     return {}
+
+
+def latest_mat_profile(case, name):
+    """The last matProfile_<time>.dat of the function object (the mat across the width
+    over its complete rows, with errors): {"time", "notes": its comment lines, and its
+    columns by name as lists}; None when there is none (no belt, or no complete row)."""
+    found = []
+    for folder in start_folders(case, name):
+        for entry in os.listdir(folder):
+            m = re.match(r"^matProfile_([-+0-9.eE]+)\.dat$", entry)
+            if m:
+                found.append((float(m.group(1)), os.path.join(folder, entry)))
+    if not found:
+        return None
+    time, path = max(found)
+    comments = [line[1:].strip() for line in open(path) if line.startswith("#")]
+    names, rows, _ = _read_one(path)
+    if not rows:
+        return None
+    profile = {"time": time, "notes": comments[:-1]}
+    for n in names:
+        profile[n] = [r[n] for r in rows]
+    return profile

@@ -37,6 +37,7 @@ class CaseReport:
             self.notes.append("no solver log (log.<application>) in %s: sprayed, airborne, left and "
                               "evaporated binder come from the clouds' reports there" % case)
         self._read_vtk()
+        self.mat_profile = caseOutputs.latest_mat_profile(case, self.name)
 
     def _function_object(self, name):
         names = caseOutputs.function_object_names(self.case)
@@ -63,12 +64,14 @@ class CaseReport:
         return os.path.join(self.case, "postProcessing", self.name, "<startTime>", "dropletFiber.dat")
 
     def _read_vtk(self):
-        self.fibers = self.grid = None
+        self.fibers = self.grid = self.mat = None
         for folder in reversed(caseOutputs.start_folders(self.case, self.name)):
             if self.fibers is None:
                 self.fibers = vtkFiles.last_readable(folder, "fibers.vtp", vtkFiles.Fibers, self.notes)
             if self.grid is None:
                 self.grid = vtkFiles.last_readable(folder, "grid.vti", vtkFiles.Grid, self.notes)
+            if self.mat is None:
+                self.mat = vtkFiles.last_readable(folder, "mat.vti", vtkFiles.Grid, self.notes)
         if self.fibers is None:
             self.notes.append("no readable fibers_<time>.vtp/.pvtp: no fiber view, no sigma distribution")
         if self.grid is None:

@@ -188,39 +188,88 @@ def _laid(r):
             n * np.array(t.column("glassMass")), n * np.array(t.column("binderMass")))
 
 
+def _complete_rows(r):
+    """(along from, along to) of the complete rows in the latest mat profile, or None."""
+    note = r.mat_profile["notes"][0] if r.mat_profile else ""
+    m = re.search(r"\(along (\S+) to (\S+) m\)", note)
+    return (float(m.group(1)), float(m.group(2))) if m else None
+
+
 def _mat_map(ax, r):
-    """The mat on the belt (laydown.dat): the glass area weight laid, in the belt's frame."""
+    """The mat on the belt: the function object's latest map (mat_<time>.vti: each fiber
+    along its length), the complete rows between the dashed lines; without it the glass
+    laid (laydown.dat) binned by the fibers' centres."""
     across, along, glass, binder = _laid(r)
-    counts, xe, ye = np.histogram2d(across, along, bins=30, weights=glass)
-    area = (xe[1] - xe[0]) * (ye[1] - ye[0])
-    mesh = ax.pcolormesh(xe, ye, 1000 * counts.T / area, cmap="viridis")
+    total = glass.sum() + binder.sum()
+    if r.mat is not None:
+        m = r.mat
+        h = m.spacing[:2]
+        x0 = m.origin[0] + h[0] * (m.start[0] - 0.5)
+        y0 = m.origin[1] + h[1] * (m.start[1] - 0.5)
+        values = m.fields["areaWeight"][0]
+        xe = x0 + h[0] * np.arange(values.shape[1] + 1)
+        ye = y0 + h[1] * np.arange(values.shape[0] + 1)
+        mesh = ax.pcolormesh(xe, ye, values, cmap="viridis")
+        rows = _complete_rows(r)
+        for y in rows or ():
+            ax.axhline(y, color="w", ls="--", lw=1)
+        source = "mat_%g.vti%s" % (m.time, ", complete rows dashed" if rows else ", no complete row yet")
+    else:
+        counts, xe, ye = np.histogram2d(across, along, bins=30, weights=glass)
+        area = (xe[1] - xe[0]) * (ye[1] - ye[0])
+        mesh = ax.pcolormesh(xe, ye, 1000 * counts.T / area, cmap="viridis")
+        source = "laydown.dat, by centres"
     plt.colorbar(mesh, ax=ax, label="glass area weight [g/m²]")
     ax.set_xlabel("across the belt [m]")
     ax.set_ylabel("along the belt [m]")
-    total = glass.sum() + binder.sum()
-    ax.set_title("The mat (laydown.dat): %d fibers laid, glass %.3g kg, binder %.3g kg, LOI %.2f %%"
-                 % (len(glass), glass.sum(), binder.sum(), 100 * binder.sum() / total if total else 0),
-                 fontsize=10)
+    ax.set_title("The mat (%s): %d fibers laid, LOI %.2f %%"
+                 % (source, len(glass), 100 * binder.sum() / total if total else 0), fontsize=10)
 
 
 def _mat_profile(ax, r):
-    """Across the belt: glass and binder area weight over everything laid, and the
-    glass's coefficient of variation across the width."""
-    across, along, glass, binder = _laid(r)
-    span = max(along.max() - along.min(), 1e-12)
-    edges = np.linspace(across.min(), across.max() + 1e-12, 21)
-    width = edges[1] - edges[0]
-    g, _ = np.histogram(across, bins=edges, weights=glass)
-    b, _ = np.histogram(across, bins=edges, weights=binder)
-    centres = 0.5 * (edges[1:] + edges[:-1])
-    g = 1000 * g / (width * span)
-    ax.plot(centres, g, "o-", label="glass")
-    ax.plot(centres, 1000 * b / (width * span), "s-", label="binder")
-    cov = g.std() / g.mean() if g.mean() > 0 else 0
+    """Across the belt over the complete rows: glass area weight and LOI with their
+    one-sigma error bands (matProfile_<time>.dat), the CoV split into counting noise and
+    the mat's own."""
+    p = r.mat_profile
+    if p is None:
+        ax.text(0.5, 0.5, "no complete row of the mat yet:\nthe belt has not carried a row\n"
+                "across the whole laying zone\n(run longer: the hood's Allrun -steady)",
+                ha="center", va="center", transform=ax.transAxes)
+        ax.set_title("Across the width", fontsize=10)
+        return
+    x = np.array(p["across"])
+    g, ge = np.array(p["areaWeight"]), np.array(p["areaWeightError"])
+    loi, le = np.array(p["LOI"]), np.array(p["LOIError"])
+    ax.fill_between(x, g - ge, g + ge, color="C0", alpha=0.3)
+    ax.plot(x, g, "o-", color="C0", label="glass area weight")
     ax.set_xlabel("across the belt [m]")
-    ax.set_ylabel("area weight [g/m²], all laid")
-    ax.set_title("Across the width: CoV of the glass %.3f (20 bins, all rows)" % cov, fontsize=10)
-    ax.legend(fontsize=8)
+    ax.set_ylabel("glass area weight [g/m²] (blue)")
+    right = ax.twinx()
+    right.fill_between(x, loi - le, loi + le, color="C3", alpha=0.25)
+    right.plot(x, loi, "s-", color="C3", label="LOI")
+    right.set_ylabel("LOI [%] (red)")
+    m = re.search(r"CoV (\S+): counting noise (\S+), the mat's own (\S+) \(two-sigma bound (\S+)\)",
+                  " ".join(p["notes"]))
+    split = ("CoV %s = noise %s + own %s (< %s)" % tuple("%.3g" % float(v) for v in m.groups())
+             if m else "")
+    ax.set_title("Across, complete rows at t = %g s (bands: one sigma)\n%s" % (p["time"], split), fontsize=10)
+
+
+def _mat_orientation(ax, r):
+    """The laid fibers' orientation in the belt's plane (laydown.dat): the glass-weighted
+    distribution of the angle to the belt's motion, and the order <cos 2 theta>."""
+    t = r.siblings["laydown.dat"]
+    across, along = np.array(t.column("orientation_across")), np.array(t.column("orientation_along"))
+    weight = np.array(t.column("represents")) * np.array(t.column("glassMass"))
+    inPlane = across ** 2 + along ** 2 > 0
+    theta = np.degrees(np.arctan2(np.abs(across[inPlane]), np.abs(along[inPlane])))
+    ax.hist(theta, bins=18, range=(0, 90), weights=weight[inPlane] / weight[inPlane].sum(), color="C2")
+    c2 = np.cos(np.radians(2 * theta))
+    order = (weight[inPlane] * c2).sum() / weight[inPlane].sum() if inPlane.any() else 0.0
+    ax.set_xlabel("angle to the belt's motion [deg] (0 along, 90 across)")
+    ax.set_ylabel("share of the glass")
+    ax.set_title("Orientation in the mat: <cos 2θ> = %.3f (1 along, -1 across, 0 random)" % order,
+                 fontsize=10)
 
 
 def write_png(r, path, planar, points):
@@ -233,7 +282,7 @@ def write_png(r, path, planar, points):
     if "binderDistribution.dat" in r.siblings:
         panels.append(_binder_distribution)
     if "laydown.dat" in r.siblings:
-        panels += [_mat_map, _mat_profile]
+        panels += [_mat_map, _mat_profile, _mat_orientation]
     rows = (len(panels) + 2) // 3
     fig, axes = plt.subplots(rows, 3, figsize=(19, 6 * rows), squeeze=False)
     fig.subplots_adjust(left=0.05, right=0.95, bottom=0.06, top=1 - 0.8 / (6 * rows), wspace=0.5, hspace=0.45)

@@ -8,8 +8,8 @@ Description
 
 #include "fiberLaydown.H"
 #include "OSspecific.H"
+#include "OFstream.H"
 
-#include "laydown/MatUncertainty.hpp"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -157,6 +157,46 @@ void Foam::dropletFiber::fiberLaydown::reportMat
         << "    mat's across-width CoV: counting noise " << u.noise
         << ", the mat's own " << u.real << " (two-sigma bound "
         << u.realUpper << ")" << nl;
+    if (Pstream::master())
+    {
+        writeProfile(rowFrom, rowTo, profile, u);
+    }
+}
+
+
+void Foam::dropletFiber::fiberLaydown::writeProfile
+(
+    const long rowFrom,
+    const long rowTo,
+    const ::dropletFiber::AcrossProfile& profile,
+    const ::dropletFiber::NonUniformity& u
+) const
+{
+    const fileName dir =
+        baseFileDir()/name()/time_.timeName(time_.startTime().value());
+    mkDir(dir);
+    OFstream os(dir/("matProfile_" + time_.timeName() + ".dat"));
+    os.precision(writePrecision_);
+    os  << "# The mat across the belt's width at time " << time_.timeName()
+        << ", over its complete rows " << rowFrom << " to " << rowTo
+        << " (along " << rowFrom*map_->cell() << " to " << (rowTo + 1)*map_->cell()
+        << " m): glass area weight [g/m2] and LOI [%] per column with their"
+        << " standard errors (docs/model.md sec. 11, P60)" << nl
+        << "# glass area weight " << 1000*u.mean << " +- "
+        << 1000*Foam::sqrt(profile.meanVariance) << " g/m2, LOI "
+        << 100*profile.loiAll.value << " +- " << 100*profile.loiAll.error
+        << " %, across-width CoV " << u.observed << ": counting noise " << u.noise
+        << ", the mat's own " << u.real << " (two-sigma bound " << u.realUpper
+        << ")" << nl
+        << "# across\tareaWeight\tareaWeightError\tLOI\tLOIError" << nl;
+    for (std::size_t k = 0; k < profile.areaWeight.size(); ++k)
+    {
+        os  << map_->acrossMin() + (scalar(k) + 0.5)*map_->cell()
+            << tab << 1000*profile.areaWeight[k].value
+            << tab << 1000*profile.areaWeight[k].error
+            << tab << 100*profile.loi[k].value
+            << tab << 100*profile.loi[k].error << nl;
+    }
 }
 
 
