@@ -113,6 +113,59 @@ fileName statePath(const fileName& caseDir, const word& timeName, const word& na
 }
 
 
+//- The time to read: -time, or the latest whose state exists
+word stateTime(const argList& args, const word& name)
+{
+    instantList times = Time::findTimes(args.path());
+    if (Foam::isDir(args.path()/"processor0"))
+    {
+        times.append(Time::findTimes(args.path()/"processor0"));
+    }
+    word timeName = args.opt<word>("time", word::null);
+    scalar latest = -GREAT;
+    for (const instant& t : times)
+    {
+        if
+        (
+            !args.found("time") && t.value() > latest
+         && !statePath(args.path(), t.name(), name).empty()
+        )
+        {
+            latest = t.value();
+            timeName = t.name();
+        }
+    }
+    return timeName;
+}
+
+
+//- The laying zone from the state's laydown entry
+::dropletFiber::LayingZone readZone(const dictionary& mat)
+{
+    ::dropletFiber::LayingZone zone;
+    zone.firstTime = mat.get<scalar>("firstTime");
+    zone.footMin = mat.get<scalar>("footMin");
+    zone.footMax = mat.get<scalar>("footMax");
+    zone.reach = mat.get<scalar>("footReach");
+    return zone;
+}
+
+
+//- The state's mat, with its error sums and belt
+const dictionary* laydownEntry(const dictionary& state, const fileName& path)
+{
+    const dictionary* mat = state.findDict("laydown");
+    if (!mat || !mat->found("cellErrorSums") || !mat->found("beltSpeed"))
+    {
+        FatalIOErrorInFunction(state)
+            << "The restart state " << path << " has no mat with error sums"
+            << " and belt (fibers.laydown, written by this version): run the"
+            << " case with fibers.laydown." << exit(FatalIOError);
+    }
+    return mat;
+}
+
+
 //- The log's lines of a mat over rows [from, to]
 void report(const word& what, const ::dropletFiber::AcrossProfile& profile)
 {
@@ -180,26 +233,7 @@ int main(int argc, char *argv[])
             << "Option -hoods is " << hoods << ": allowed are 1 or more."
             << exit(FatalError);
     }
-    // The time: given, or the latest with a state
-    instantList times = Time::findTimes(args.path());
-    if (Foam::isDir(args.path()/"processor0"))
-    {
-        times.append(Time::findTimes(args.path()/"processor0"));
-    }
-    word timeName = args.opt<word>("time", word::null);
-    scalar latest = -GREAT;
-    for (const instant& t : times)
-    {
-        if
-        (
-            !args.found("time") && t.value() > latest
-         && !statePath(args.path(), t.name(), name).empty()
-        )
-        {
-            latest = t.value();
-            timeName = t.name();
-        }
-    }
+    const word timeName = stateTime(args, name);
     const fileName path =
         timeName.empty() ? fileName::null : statePath(args.path(), timeName, name);
     if (path.empty())
@@ -213,19 +247,8 @@ int main(int argc, char *argv[])
     }
     IFstream is(path);
     const dictionary state(is);
-    const dictionary* mat = state.findDict("laydown");
-    if (!mat || !mat->found("cellErrorSums") || !mat->found("beltSpeed"))
-    {
-        FatalIOErrorInFunction(state)
-            << "The restart state " << path << " has no mat with error sums"
-            << " and belt (fibers.laydown, written by this version): run the"
-            << " case with fibers.laydown." << exit(FatalIOError);
-    }
-    ::dropletFiber::LayingZone zone;
-    zone.firstTime = mat->get<scalar>("firstTime");
-    zone.footMin = mat->get<scalar>("footMin");
-    zone.footMax = mat->get<scalar>("footMax");
-    zone.reach = mat->get<scalar>("footReach");
+    const dictionary* mat = laydownEntry(state, path);
+    const ::dropletFiber::LayingZone zone = readZone(*mat);
     const ::dropletFiber::MatMap hood = readMat(*mat);
     const std::pair<long, long> rows = zone.completeRows
     (

@@ -2,11 +2,22 @@
 """The forming hood's product: the primary mat on the conveyor under the hood, from the
 fibers the function object laid on it (fibers.laydown; laydown.dat, one row per fiber).
 
-The run covers 0.6 s: the belt carries a point of the mat across the laying zone (the
-outlet, 1 m along the belt) in 5 s, so no row of the mat is complete. The product is
-therefore taken from the laying rate once it is established (from FROM s on): the glass
-and binder laid per second in each column across the belt, carried away at the belt speed
-V, give the steady mat's area weight per column
+The product is the mat's complete rows (Allrun -steady: rows that crossed the whole
+laying zone, the outlet's 1 m along the belt, 5 s at 0.2 m/s, after the laying became
+steady at steadyFrom): the function object's last matProfile_<time>.dat gives their glass
+area weight and binder content with their standard errors and the across-width CoV split
+into counting noise and the mat's own (docs/model.md sec. 11, P60, P61). The binder the
+fibers carry is resin and the water not yet evaporated; the product's LOI is the resin's
+(water gone), at the resin's share of the binder captured. Beside it, the second route
+to the binder content, the capture balance over the steady window: resin captured per
+second / (glass laid per second + resin captured per second); the two must agree within
+their errors (the balance's error: the counting noise of the glass and binder laid in
+the window, every computed fiber an independent draw).
+
+A run without complete rows (the default 0.6 s) takes the product from the laying rate
+once it is established (from FROM s on): the glass and binder laid per second in each
+column across the belt, carried away at the belt speed V, give the steady mat's area
+weight per column
 
     G_c = (glass laid per s in column c) / (h V)       (h: the column's width)
 
@@ -21,6 +32,7 @@ hoodProduct.py's table).
 
 Usage: hoodMat.py CASE [-from T] [-png FILE]
 """
+import glob
 import os
 import re
 import sys
@@ -42,6 +54,78 @@ def belt(log):
         return None
     v = np.array([float(m.group(i)) for i in (1, 2, 3)])
     return np.linalg.norm(v), float(m.group(4)), float(m.group(5)), float(m.group(6))
+
+
+def steady_from(log):
+    """steadyFrom [s] from the log's laydown settings line (None when not given)."""
+    m = re.search(r"complete rows entered the laying zone after steadyFrom " + NUMBER + " s",
+                  open(log).read())
+    return float(m.group(1)) if m else None
+
+
+def mat_profile(case):
+    """The last matProfile_<time>.dat: (time, its comment lines, {column: array})."""
+    found = []
+    for path in glob.glob(os.path.join(case, "postProcessing", hoodProduct.NAME, "*", "matProfile_*.dat")):
+        found.append((float(re.search(r"matProfile_(.*)\.dat$", path).group(1)), path))
+    if not found:
+        return None
+    time, path = max(found)
+    notes = [line[1:].strip() for line in open(path) if line.startswith("#")]
+    values = np.loadtxt(path, ndmin=2)
+    names = notes[-1].split()
+    return time, notes[:-1], {n: values[:, i] for i, n in enumerate(names)}
+
+
+def resin_share(table):
+    """The resin's share of all binder captured so far (the fibers carry one binder mass)."""
+    column = "captured_" + hoodProduct.RESIN
+    if column in table and table["capturedTotal"][-1] > 0:
+        return table[column][-1] / table["capturedTotal"][-1]
+    return 1.0
+
+
+def product(case, log, table):
+    """The product from the complete rows and the capture balance beside it; 0 when they
+    agree within two standard errors of their difference, 1 otherwise."""
+    time, notes, p = mat_profile(case)
+    m = re.search(r"glass area weight " + NUMBER + r" \+- " + NUMBER + r" g/m2, LOI " + NUMBER + r" \+- "
+                  + NUMBER + r" %, across-width CoV " + NUMBER + r": counting noise " + NUMBER
+                  + r", the mat's own " + NUMBER + r" \(two-sigma bound " + NUMBER, notes[1])
+    G, dG, loi, dloi, cov, noise, own, bound = (float(v) for v in m.groups())
+    share = resin_share(table)
+    # Resin over glass + resin from binder over glass + binder: L_r = s L / (1 - L + s L)
+    L = loi / 100
+    resinLoi = share * L / (1 - L + share * L)
+    dResin = dloi / 100 * share / (1 - L + share * L) ** 2
+    print("The product: the mat's complete rows at %g s (%s)" % (time, notes[0].split("over its ")[1]))
+    print("    glass area weight %.1f +- %.1f g/m2; binder content (resin and water) %.2f +- %.2f %%;"
+          % (G, dG, loi, dloi))
+    print("    LOI (resin, %.1f %% of the binder captured) %.2f +- %.2f %%" % (100 * share, 100 * resinLoi,
+                                                                         100 * dResin))
+    print("    across-width CoV %.3f: counting noise %.3f, the mat's own %.3f (two-sigma bound %.3f)"
+          % (cov, noise, own, bound))
+    # The capture balance over the steady window, and its counting noise
+    start = steady_from(log) or 0.0
+    laid = hoodProduct.table(case, "laydown.dat")
+    t = table["Time"]
+    window = t[-1] - start
+    use = laid["Time"] > start
+    n = laid["represents"][use]
+    g, b = n * laid["glassMass"][use], n * laid["binderMass"][use]
+    resin = np.interp(t[-1], t, table["captured_" + hoodProduct.RESIN]) - np.interp(
+        start, t, table["captured_" + hoodProduct.RESIN])
+    balance = resin / (g.sum() + resin)
+    # d(balance) from the glass laid (the capture's own noise is the mat's binder's): the
+    # laid glass and binder as independent draws, the resin at its share
+    dBalance = balance * (1 - balance) * np.sqrt((g ** 2).sum() / g.sum() ** 2 + (b ** 2).sum() / b.sum() ** 2)
+    print("The capture balance, %g to %g s: resin captured %.4g kg / (glass laid %.4g + resin %.4g kg)"
+          " = LOI %.2f +- %.2f %%" % (start, t[-1], resin, g.sum(), resin, 100 * balance, 100 * dBalance))
+    sigma = abs(resinLoi - balance) / np.hypot(dResin, dBalance)
+    agree = sigma <= 2
+    print("    the two routes %s: they differ by %.2f standard errors; the product's figure is the"
+          " complete rows'" % ("agree" if agree else "DISAGREE", sigma))
+    return 0 if agree else 1
 
 
 def main():
@@ -72,6 +156,9 @@ def main():
     speed, lo, hi, h = settings
     t = laid["Time"]
     table = hoodProduct.table(case, "dropletFiber.dat")
+    if mat_profile(case) is not None:
+        return product(case, log, table)
+    print("hoodMat: no complete row of the mat (run ./Allrun -steady): the product from the laying rate")
     end = float(table["Time"][-1])
     if end - start <= 0 or not (t >= start - 1e-9).any():
         # A short run: from the first fiber laid (not yet an established rate)

@@ -285,40 +285,8 @@ void Foam::dropletFiber::fiberLaydown::read
             ">= 0 [s] (the time from which the laying is steady)"
         )
       : -1;
-    const bool plane = ld->found("point") || ld->found("normal");
-    if (ld->found("patch") == plane)
-    {
-        FatalIOErrorInFunction(*ld)
-            << "Entry 'laydown' needs the belt as 'patch', or as 'point',"
-            << " 'normal' and 'width'"
-            << (plane ? ", not both." : ".") << exit(FatalIOError);
-    }
-    if (!plane && ld->found("width"))
-    {
-        FatalIOErrorInFunction(*ld)
-            << "Entry 'width' is for a belt given as point and normal: with"
-            << " 'patch' the belt's width is the patch's extent across it."
-            << exit(FatalIOError);
-    }
-    belt_.velocity = toEigen(ld->lookupOrDefault<vector>("velocity", Zero));
     scalar acrossMin = 0, acrossMax = 0;
-    if (plane)
-    {
-        beltFromPlane(*ld, acrossMin, acrossMax);
-    }
-    else
-    {
-        beltFromPatch(*ld, acrossMin, acrossMax);
-    }
-    const scalar offPlane = mag(belt_.velocity.dot(belt_.normal));
-    if (offPlane > 1e-9*max(1.0, belt_.velocity.norm()))
-    {
-        FatalIOErrorInFunction(*ld)
-            << "Entry 'velocity' is " << ld->get<vector>("velocity")
-            << ", which leaves the belt's plane (normal "
-            << toFoam(belt_.normal) << ") at " << offPlane << " m/s:"
-            << " allowed are velocities in the plane." << exit(FatalIOError);
-    }
+    readBelt(*ld, acrossMin, acrossMax);
     checkBeltGeometry(*ld, cell, acrossMax - acrossMin);
     map_.reset(new ::dropletFiber::MatMap(cell, acrossMin, acrossMax));
     const fileName dir =
@@ -327,6 +295,49 @@ void Foam::dropletFiber::fiberLaydown::read
     if (Pstream::master())
     {
         series_->load(time_.value() + 0.5*time_.deltaTValue());
+    }
+}
+
+
+void Foam::dropletFiber::fiberLaydown::readBelt
+(
+    const dictionary& ld,
+    scalar& acrossMin,
+    scalar& acrossMax
+)
+{
+    const bool plane = ld.found("point") || ld.found("normal");
+    if (ld.found("patch") == plane)
+    {
+        FatalIOErrorInFunction(ld)
+            << "Entry 'laydown' needs the belt as 'patch', or as 'point',"
+            << " 'normal' and 'width'"
+            << (plane ? ", not both." : ".") << exit(FatalIOError);
+    }
+    if (!plane && ld.found("width"))
+    {
+        FatalIOErrorInFunction(ld)
+            << "Entry 'width' is for a belt given as point and normal: with"
+            << " 'patch' the belt's width is the patch's extent across it."
+            << exit(FatalIOError);
+    }
+    belt_.velocity = toEigen(ld.lookupOrDefault<vector>("velocity", Zero));
+    if (plane)
+    {
+        beltFromPlane(ld, acrossMin, acrossMax);
+    }
+    else
+    {
+        beltFromPatch(ld, acrossMin, acrossMax);
+    }
+    const scalar offPlane = mag(belt_.velocity.dot(belt_.normal));
+    if (offPlane > 1e-9*max(1.0, belt_.velocity.norm()))
+    {
+        FatalIOErrorInFunction(ld)
+            << "Entry 'velocity' is " << ld.get<vector>("velocity")
+            << ", which leaves the belt's plane (normal "
+            << toFoam(belt_.normal) << ") at " << offPlane << " m/s:"
+            << " allowed are velocities in the plane." << exit(FatalIOError);
     }
 }
 

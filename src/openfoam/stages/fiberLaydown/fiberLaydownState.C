@@ -71,6 +71,68 @@ void Foam::dropletFiber::fiberLaydown::writeState
 }
 
 
+void Foam::dropletFiber::fiberLaydown::readCells
+(
+    const dictionary& mat,
+    const fileName& path
+)
+{
+    const labelList columns = mat.get<labelList>("columns");
+    const labelList rows = mat.get<labelList>("rows");
+    const scalarList glass = mat.get<scalarList>("cellGlass");
+    const scalarList binder = mat.get<scalarList>("cellBinder");
+    const scalarList fibers = mat.get<scalarList>("cellFibers");
+    const scalarList orientation = mat.get<scalarList>("cellOrientation");
+    const label n = columns.size();
+    if
+    (
+        rows.size() != n || glass.size() != n || binder.size() != n
+     || fibers.size() != n || orientation.size() != n
+    )
+    {
+        FatalIOErrorInFunction(mat)
+            << "The restart state " << path << ": the mat's cell lists have"
+            << " different lengths (columns " << n << ", rows " << rows.size()
+            << ", glass " << glass.size() << "): the state is damaged."
+            << exit(FatalIOError);
+    }
+    constexpr label errorSums = ::dropletFiber::MatCell::sumCount - 4;
+    const scalarList errors =
+        mat.lookupOrDefault<scalarList>("cellErrorSums", scalarList());
+    if (errors.size() != errorSums*n)
+    {
+        if (!errors.empty())
+        {
+            FatalIOErrorInFunction(mat)
+                << "The restart state " << path << ": the mat's cellErrorSums"
+                << " hold " << errors.size() << " values, not " << errorSums
+                << " per cell (" << errorSums*n << "): the state is damaged."
+                << exit(FatalIOError);
+        }
+        WarningInFunction
+            << type() << " " << name() << ": the restart state " << path
+            << " has no error sums of the mat (written before the mat had"
+            << " errors): the " << n << " cells laid before carry none, their"
+            << " errors and the CoV's noise are too small." << endl;
+    }
+    forAll(columns, k)
+    {
+        std::array<double, ::dropletFiber::MatCell::sumCount> sums{};
+        sums[0] = glass[k];
+        sums[1] = binder[k];
+        sums[2] = fibers[k];
+        sums[3] = orientation[k];
+        for (label e = 0; e < errorSums && !errors.empty(); ++e)
+        {
+            sums[std::size_t(4 + e)] = errors[errorSums*k + e];
+        }
+        ::dropletFiber::MatCell c;
+        c.setSums(sums);
+        map_->setCell(columns[k], rows[k], c);
+    }
+}
+
+
 void Foam::dropletFiber::fiberLaydown::readState
 (
     const dictionary& state,
@@ -115,59 +177,7 @@ void Foam::dropletFiber::fiberLaydown::readState
     totals_.zone.footMax = mat->get<scalar>("footMax");
     // A state written before fibers were laid along their length: whole
     totals_.zone.reach = mat->lookupOrDefault<scalar>("footReach", 0);
-    const labelList columns = mat->get<labelList>("columns");
-    const labelList rows = mat->get<labelList>("rows");
-    const scalarList glass = mat->get<scalarList>("cellGlass");
-    const scalarList binder = mat->get<scalarList>("cellBinder");
-    const scalarList fibers = mat->get<scalarList>("cellFibers");
-    const scalarList orientation = mat->get<scalarList>("cellOrientation");
-    const label n = columns.size();
-    if
-    (
-        rows.size() != n || glass.size() != n || binder.size() != n
-     || fibers.size() != n || orientation.size() != n
-    )
-    {
-        FatalIOErrorInFunction(*mat)
-            << "The restart state " << path << ": the mat's cell lists have"
-            << " different lengths (columns " << n << ", rows " << rows.size()
-            << ", glass " << glass.size() << "): the state is damaged."
-            << exit(FatalIOError);
-    }
-    constexpr label errorSums = ::dropletFiber::MatCell::sumCount - 4;
-    const scalarList errors =
-        mat->lookupOrDefault<scalarList>("cellErrorSums", scalarList());
-    if (errors.size() != errorSums*n)
-    {
-        if (!errors.empty())
-        {
-            FatalIOErrorInFunction(*mat)
-                << "The restart state " << path << ": the mat's cellErrorSums"
-                << " hold " << errors.size() << " values, not " << errorSums
-                << " per cell (" << errorSums*n << "): the state is damaged."
-                << exit(FatalIOError);
-        }
-        WarningInFunction
-            << type() << " " << name() << ": the restart state " << path
-            << " has no error sums of the mat (written before the mat had"
-            << " errors): the " << n << " cells laid before carry none, their"
-            << " errors and the CoV's noise are too small." << endl;
-    }
-    forAll(columns, k)
-    {
-        std::array<double, ::dropletFiber::MatCell::sumCount> sums{};
-        sums[0] = glass[k];
-        sums[1] = binder[k];
-        sums[2] = fibers[k];
-        sums[3] = orientation[k];
-        for (label e = 0; e < errorSums && !errors.empty(); ++e)
-        {
-            sums[std::size_t(4 + e)] = errors[errorSums*k + e];
-        }
-        ::dropletFiber::MatCell c;
-        c.setSums(sums);
-        map_->setCell(columns[k], rows[k], c);
-    }
+    readCells(*mat, path);
 }
 
 
