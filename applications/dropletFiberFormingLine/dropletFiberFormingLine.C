@@ -43,6 +43,7 @@ Usage
 #include "IFstream.H"
 #include "OFstream.H"
 #include "OSspecific.H"
+#include "matCellsIO.H"
 
 #include "laydown/FormingLine.hpp"
 #include "laydown/LayingZone.hpp"
@@ -72,46 +73,16 @@ fileName statePath(const fileName& caseDir, const word& timeName, const word& na
 
 
 //- The hood's mat from the state's laydown entry
-::dropletFiber::MatMap readMat(const dictionary& mat)
+::dropletFiber::MatMap readMat(const dictionary& mat, const fileName& path)
 {
     ::dropletFiber::MatMap map
     (
         mat.get<scalar>("cell"), mat.get<scalar>("acrossMin"),
         mat.get<scalar>("acrossMax")
     );
-    const labelList columns = mat.get<labelList>("columns");
-    const labelList rows = mat.get<labelList>("rows");
-    const scalarList glass = mat.get<scalarList>("cellGlass");
-    const scalarList binder = mat.get<scalarList>("cellBinder");
-    const scalarList fibers = mat.get<scalarList>("cellFibers");
-    const scalarList orientation = mat.get<scalarList>("cellOrientation");
-    const scalarList errors = mat.get<scalarList>("cellErrorSums");
-    constexpr label errorSums = ::dropletFiber::MatCell::sumCount - 4;
-    if (errors.size() != errorSums*columns.size() || glass.size() != columns.size())
-    {
-        FatalIOErrorInFunction(mat)
-            << "The mat's cell lists do not match (" << columns.size()
-            << " cells, " << errors.size() << " error sums): the state is"
-            << " damaged." << exit(FatalIOError);
-    }
-    forAll(columns, k)
-    {
-        std::array<double, ::dropletFiber::MatCell::sumCount> sums{};
-        sums[0] = glass[k];
-        sums[1] = binder[k];
-        sums[2] = fibers[k];
-        sums[3] = orientation[k];
-        for (label e = 0; e < errorSums; ++e)
-        {
-            sums[std::size_t(4 + e)] = errors[errorSums*k + e];
-        }
-        ::dropletFiber::MatCell c;
-        c.setSums(sums);
-        map.setCell(columns[k], rows[k], c);
-    }
+    Foam::dropletFiber::readMatCells(mat, path, map);
     return map;
 }
-
 
 //- The time to read: -time, or the latest whose state exists
 word stateTime(const argList& args, const word& name)
@@ -249,7 +220,7 @@ int main(int argc, char *argv[])
     const dictionary state(is);
     const dictionary* mat = laydownEntry(state, path);
     const ::dropletFiber::LayingZone zone = readZone(*mat);
-    const ::dropletFiber::MatMap hood = readMat(*mat);
+    const ::dropletFiber::MatMap hood = readMat(*mat, path);
     const std::pair<long, long> rows = zone.completeRows
     (
         mat->get<scalar>("beltSpeed"), hood.cell(), mat->get<scalar>("steadyFrom"),

@@ -8,6 +8,7 @@ Description
 
 #include "fiberLaydown.H"
 #include "dictionaryChecks.H"
+#include "matCellsIO.H"
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
@@ -77,61 +78,16 @@ void Foam::dropletFiber::fiberLaydown::readCells
     const fileName& path
 )
 {
-    const labelList columns = mat.get<labelList>("columns");
-    const labelList rows = mat.get<labelList>("rows");
-    const scalarList glass = mat.get<scalarList>("cellGlass");
-    const scalarList binder = mat.get<scalarList>("cellBinder");
-    const scalarList fibers = mat.get<scalarList>("cellFibers");
-    const scalarList orientation = mat.get<scalarList>("cellOrientation");
-    const label n = columns.size();
-    if
-    (
-        rows.size() != n || glass.size() != n || binder.size() != n
-     || fibers.size() != n || orientation.size() != n
-    )
+    if (!readMatCells(mat, path, *map_))
     {
-        FatalIOErrorInFunction(mat)
-            << "The restart state " << path << ": the mat's cell lists have"
-            << " different lengths (columns " << n << ", rows " << rows.size()
-            << ", glass " << glass.size() << "): the state is damaged."
-            << exit(FatalIOError);
-    }
-    constexpr label errorSums = ::dropletFiber::MatCell::sumCount - 4;
-    const scalarList errors =
-        mat.lookupOrDefault<scalarList>("cellErrorSums", scalarList());
-    if (errors.size() != errorSums*n)
-    {
-        if (!errors.empty())
-        {
-            FatalIOErrorInFunction(mat)
-                << "The restart state " << path << ": the mat's cellErrorSums"
-                << " hold " << errors.size() << " values, not " << errorSums
-                << " per cell (" << errorSums*n << "): the state is damaged."
-                << exit(FatalIOError);
-        }
         WarningInFunction
             << type() << " " << name() << ": the restart state " << path
             << " has no error sums of the mat (written before the mat had"
-            << " errors): the " << n << " cells laid before carry none, their"
-            << " errors and the CoV's noise are too small." << endl;
-    }
-    forAll(columns, k)
-    {
-        std::array<double, ::dropletFiber::MatCell::sumCount> sums{};
-        sums[0] = glass[k];
-        sums[1] = binder[k];
-        sums[2] = fibers[k];
-        sums[3] = orientation[k];
-        for (label e = 0; e < errorSums && !errors.empty(); ++e)
-        {
-            sums[std::size_t(4 + e)] = errors[errorSums*k + e];
-        }
-        ::dropletFiber::MatCell c;
-        c.setSums(sums);
-        map_->setCell(columns[k], rows[k], c);
+            << " errors): the " << map_->cells().size() << " cells laid before"
+            << " carry none, their errors and the CoV's noise are too small."
+            << endl;
     }
 }
-
 
 void Foam::dropletFiber::fiberLaydown::readState
 (
