@@ -250,7 +250,8 @@ def _mat_profile(ax, r):
     right.set_ylabel("LOI [%] (red)")
     m = re.search(r"CoV (\S+): counting noise (\S+), the mat's own (\S+) \(two-sigma bound (\S+)\)",
                   " ".join(p["notes"]))
-    split = ("CoV %s = noise %s + own %s (< %s)" % tuple("%.3g" % float(v) for v in m.groups())
+    split = ("CoV %s: counting noise %s, the mat's own %s (< %s)"
+             % tuple("%.3g" % float(v) for v in m.groups())
              if m else "")
     ax.set_title("Across, complete rows at t = %g s (bands: one sigma)\n%s" % (p["time"], split), fontsize=10)
 

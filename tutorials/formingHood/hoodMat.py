@@ -9,10 +9,11 @@ area weight and binder content with their standard errors and the across-width C
 into counting noise and the mat's own (docs/model.md sec. 11, P60, P61). The binder the
 fibers carry is resin and the water not yet evaporated; the product's LOI is the resin's
 (water gone), at the resin's share of the binder captured. Beside it, the second route
-to the binder content, the capture balance over the steady window: resin captured per
-second / (glass laid per second + resin captured per second); the two must agree within
-their errors (the balance's error: the counting noise of the glass and binder laid in
-the window, every computed fiber an independent draw).
+to the binder content, the capture balance over the steady window: the binder and glass
+the log's balances put into the mat between the write times at steadyFrom and at the
+end (binder captured less what the airborne and the lost fibers carry), with the counting
+noise of the fibers laid in the window; the two must agree within their errors. (Resin
+captured over glass laid does not: it counts the binder of the fibers lost to the walls.)
 
 A run without complete rows (the default 0.6 s) takes the product from the laying rate
 once it is established (from FROM s on): the glass and binder laid per second in each
@@ -63,6 +64,29 @@ def steady_from(log):
     return float(m.group(1)) if m else None
 
 
+def laid_by_time(log):
+    """{write time: (glass laid, binder laid) [kg]} from the log's balances."""
+    out, now, glass = {}, None, None
+    for line in open(log):
+        m = re.search(r"laydown at time " + NUMBER + ":", line)
+        if m:
+            now = float(m.group(1))
+        m = re.match(r"^    glass: injected \S+ kg = in the air \S+ \+ laid " + NUMBER, line)
+        if m and now is not None:
+            glass = float(m.group(1))
+        m = re.match(r"^    binder: captured \S+ kg = on airborne fibers \S+ \+ laid " + NUMBER, line)
+        if m and now is not None and glass is not None:
+            out[now] = (glass, float(m.group(1)))
+    return out
+
+
+def lost_share(log):
+    """The share of the binder captured that the lost fibers carry, at the last write."""
+    found = re.findall(r"binder: captured " + NUMBER + r" kg = on airborne fibers \S+ \+ laid \S+ \+ on lost"
+                       r" fibers " + NUMBER, open(log).read())
+    return float(found[-1][1]) / float(found[-1][0]) if found else 0.0
+
+
 def mat_profile(case):
     """The last matProfile_<time>.dat: (time, its comment lines, {column: array})."""
     found = []
@@ -105,25 +129,36 @@ def product(case, log, table):
                                                                          100 * dResin))
     print("    across-width CoV %.3f: counting noise %.3f, the mat's own %.3f (two-sigma bound %.3f)"
           % (cov, noise, own, bound))
-    # The capture balance over the steady window, and its counting noise
+    # The capture balance over the steady window: the binder and glass the log's balances
+    # put into the mat between the write times at steadyFrom and at the end
     start = steady_from(log) or 0.0
+    laidAt = laid_by_time(log)
+    t0 = min(laidAt, key=lambda w: abs(w - start))
+    t1 = max(laidAt)
+    glass = laidAt[t1][0] - laidAt[t0][0]
+    binder = laidAt[t1][1] - laidAt[t0][1]
+    L2 = binder / (glass + binder)
+    balance = share * L2 / (1 - L2 + share * L2)
+    # Its counting noise: the fibers laid in the window as independent draws
     laid = hoodProduct.table(case, "laydown.dat")
-    t = table["Time"]
-    use = laid["Time"] > start
+    use = (laid["Time"] > t0) & (laid["Time"] <= t1)
     n = laid["represents"][use]
     g, b = n * laid["glassMass"][use], n * laid["binderMass"][use]
-    resin = np.interp(t[-1], t, table["captured_" + hoodProduct.RESIN]) - np.interp(
-        start, t, table["captured_" + hoodProduct.RESIN])
-    balance = resin / (g.sum() + resin)
-    # d(balance) from the glass laid (the capture's own noise is the mat's binder's): the
-    # laid glass and binder as independent draws, the resin at its share
-    dBalance = balance * (1 - balance) * np.sqrt((g ** 2).sum() / g.sum() ** 2 + (b ** 2).sum() / b.sum() ** 2)
-    print("The capture balance, %g to %g s: resin captured %.4g kg / (glass laid %.4g + resin %.4g kg)"
-          " = LOI %.2f +- %.2f %%" % (start, t[-1], resin, g.sum(), resin, 100 * balance, 100 * dBalance))
+    dL2 = L2 * (1 - L2) * np.sqrt((g ** 2).sum() / g.sum() ** 2 + (b ** 2).sum() / b.sum() ** 2
+                                  - 2 * (g * b).sum() / (g.sum() * b.sum()))
+    dBalance = dL2 * share / (1 - L2 + share * L2) ** 2
+    print("The capture balance, %g to %g s (the log's binder and glass laid): binder %.4g kg on glass"
+          " %.4g kg, LOI (resin) %.2f +- %.2f %%" % (t0, t1, binder, glass, 100 * balance, 100 * dBalance))
     sigma = abs(resinLoi - balance) / np.hypot(dResin, dBalance)
-    agree = sigma <= 2
     print("    the two routes %s: they differ by %.2f standard errors; the product's figure is the"
-          " complete rows'" % ("agree" if agree else "DISAGREE", sigma))
+          " complete rows'" % ("agree" if sigma <= 2 else "DISAGREE", sigma))
+    # The binder captured in the window includes what the fibers that are lost carry
+    t = table["Time"]
+    resin = np.interp(t1, t, table["captured_" + hoodProduct.RESIN]) - np.interp(
+        t0, t, table["captured_" + hoodProduct.RESIN])
+    print("    (resin captured over glass laid, %.2f %%, counts the binder of the fibers lost to the"
+          " walls, %.0f %% of the binder captured by %g s: not the product's)"
+          % (100 * resin / (glass + resin), 100 * lost_share(log), t1))
     return 0
 
 
