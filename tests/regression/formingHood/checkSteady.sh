@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
 #------------------------------------------------------------------------------
 # The forming hood's steady product (Allrun -steady) on a belt at 1 m/s with
-# 200 computed fibers per second and stream: endTime 1.8 s, the laying steady
+# 200 computed fibers per second and stream: endTime 2 s, the laying steady
 # from 0.5 s, a row crosses the 1 m in 1 s, so the rows that entered after 0.5 s
-# and left by 1.8 s are complete. Checked:
-# - the log's mat over complete rows at 1.8 s, with its errors and CoV split,
-#   and matProfile_1.8.dat;
+# and left by 2 s are complete. Checked:
+# - the log's mat over complete rows at 2 s, with its errors and CoV split,
+#   and matProfile_2.dat;
 # - one binder content: the product's LOI (the complete rows' resin) and the
 #   capture balance's over the steady window agree within two standard errors
 #   of their difference (hoodMat.py, called by Allrun);
@@ -23,11 +23,11 @@ here="$(cd "${0%/*}" && pwd)"
 
 runTutorialCopy formingHood "$work" -steady -beltSpeed 1 -fiberRate 200
 log="$work/log.sprayFoam"
-grep -q "^endTime 1.8$" "$work/log.Allrun" || die "-steady -beltSpeed 1 did not set endTime 1.8"
+grep -q "^endTime 2$" "$work/log.Allrun" || die "-steady -beltSpeed 1 did not set endTime 2"
 grep -q -E "^    mat \(rows [0-9]+ to [0-9]+, .*\): glass area weight \S+ \+- \S+ g/m2, LOI" "$log" \
     || die "no complete rows with errors in the log"
 grep -q "mat's across-width CoV: counting noise" "$log" || die "no CoV split in the log"
-[ -f "$work/postProcessing/dropletFiber/0/matProfile_1.8.dat" ] || die "no matProfile_1.8.dat"
+[ -f "$work/postProcessing/dropletFiber/0/matProfile_2.dat" ] || die "no matProfile_2.dat"
 grep -q "the two routes agree" "$work/log.Allrun" \
     || die "the product's LOI and the capture balance's disagree (log.Allrun: hoodMat.py)"
 (cd "$work" && dropletFiberFormingLine -hoods 2 > log.formingLine 2>&1) \
