@@ -49,6 +49,7 @@ class Summary:
         self.line("  fiber mass now                 %s kg" % _g(last["fiberMass"]))
         self._conservation()
         self._spread()
+        self._mat()
         self._fiber_load()
         self._siblings()
         self._wall_time()
@@ -132,6 +133,20 @@ class Summary:
         if f["eps"] > 0.25:
             self.line("  warning: the populations are opaque on their levels (eps %.3g > 0.25): where the veil is"
                       " thin the capture may be low by up to eps (docs/model.md sec. 12, P55)" % f["eps"])
+
+    def _mat(self):
+        """The mat's product: its complete rows at the last matProfile_<time>.dat (P60, P61),
+        or that no row is complete yet (with fibers.laydown)"""
+        r = self.report
+        if "laydown.dat" not in r.siblings:
+            return
+        p = r.mat_profile
+        if p is None:
+            self.line("  mat                            no complete row yet: the belt has not carried a row across"
+                      " the whole laying zone (run longer)")
+            return
+        self.line("  mat (t = %g s), the product     %s" % (p["time"], p["notes"][1] if len(p["notes"]) > 1 else ""))
+        self.line("                                 over %s" % p["notes"][0].split("over its ")[-1].split(":")[0])
 
     def _fiber_load(self):
         load = fiber_load(self.report.fibers)
