@@ -83,6 +83,8 @@ expectWarning() {
 }
 expectWarning "{ point (0.1 -1 0.05); normal (0 -1 0); width 0.1; $belt }" \
     "the belt's plane through \(0.1 -1 0.05\) lies 1 m beyond the mesh's bounds: no fiber reaches it"
+expectWarning "{ patch bottom; $belt steadyFrom 1; }" \
+    "Entry 'steadyFrom' is 1 s, not before the run's endTime 0.00390625 s: no row of the mat will be complete"
 expectWarning "{ patch bottom; velocity (30 0 0); cell 0.01; }" \
     "Entry 'velocity': the belt's speed is 30 m/s: plausible are 0.001 to 10 m/s; a speed in m/min given in m/s"
 

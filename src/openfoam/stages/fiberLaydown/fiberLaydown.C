@@ -285,6 +285,14 @@ void Foam::dropletFiber::fiberLaydown::read
             ">= 0 [s] (the time from which the laying is steady)"
         )
       : -1;
+    if (steadyFrom_ >= time_.endTime().value())
+    {
+        IOWarningInFunction(*ld)
+            << "Entry 'steadyFrom' is " << steadyFrom_ << " s, not before the"
+            << " run's endTime " << time_.endTime().value() << " s: no row of"
+            << " the mat will be complete (the log and matProfile give none)."
+            << endl;
+    }
     scalar acrossMin = 0, acrossMax = 0;
     readBelt(*ld, acrossMin, acrossMax);
     checkBeltGeometry(*ld, cell, acrossMax - acrossMin);
