@@ -87,20 +87,20 @@ fileName statePath(const fileName& caseDir, const word& timeName, const word& na
 //- The time to read: -time, or the latest whose state exists
 word stateTime(const argList& args, const word& name)
 {
+    if (args.found("time"))
+    {
+        return args.opt<word>("time");
+    }
     instantList times = Time::findTimes(args.path());
     if (Foam::isDir(args.path()/"processor0"))
     {
         times.append(Time::findTimes(args.path()/"processor0"));
     }
-    word timeName = args.opt<word>("time", word::null);
+    word timeName;
     scalar latest = -GREAT;
     for (const instant& t : times)
     {
-        if
-        (
-            !args.found("time") && t.value() > latest
-         && !statePath(args.path(), t.name(), name).empty()
-        )
+        if (t.value() > latest && !statePath(args.path(), t.name(), name).empty())
         {
             latest = t.value();
             timeName = t.name();

@@ -33,7 +33,6 @@ hoodProduct.py's table).
 
 Usage: hoodMat.py CASE [-from T] [-png FILE]
 """
-import glob
 import os
 import re
 import sys
@@ -88,17 +87,10 @@ def lost_share(log):
 
 
 def mat_profile(case):
-    """The last matProfile_<time>.dat: (time, its comment lines, {column: array})."""
-    found = []
-    for path in glob.glob(os.path.join(case, "postProcessing", hoodProduct.NAME, "*", "matProfile_*.dat")):
-        found.append((float(re.search(r"matProfile_(.*)\.dat$", path).group(1)), path))
-    if not found:
-        return None
-    time, path = max(found)
-    notes = [line[1:].strip() for line in open(path) if line.startswith("#")]
-    values = np.loadtxt(path, ndmin=2)
-    names = notes[-1].split()
-    return time, notes[:-1], {n: values[:, i] for i, n in enumerate(names)}
+    """The last matProfile_<time>.dat (the report package's reader): (time, its comment
+    lines) or None."""
+    p = hoodProduct.caseOutputs.latest_mat_profile(case, hoodProduct.NAME)
+    return None if p is None else (p["time"], p["notes"])
 
 
 def resin_share(table):
@@ -112,7 +104,7 @@ def resin_share(table):
 def product(case, log, table):
     """The product from the complete rows and the capture balance beside it, and whether
     they agree within two standard errors of their difference (printed)."""
-    time, notes, p = mat_profile(case)
+    time, notes = mat_profile(case)
     m = re.search(r"glass area weight " + NUMBER + r" \+- " + NUMBER + r" g/m2, LOI " + NUMBER + r" \+- "
                   + NUMBER + r" %, across-width CoV " + NUMBER + r": counting noise " + NUMBER
                   + r", the mat's own " + NUMBER + r" \(two-sigma bound " + NUMBER, notes[1])

@@ -1,33 +1,16 @@
 #include "laydown/MatMap.hpp"
 
-#include <cmath>
 #include <stdexcept>
 
 namespace dropletFiber
 {
 
-MatMap::MatMap(double cell, double acrossMin, double acrossMax)
-    : cell_(cell), acrossMin_(acrossMin), acrossMax_(acrossMax), lattice_{cell, acrossMin, acrossMax}
+MatMap::MatMap(double cell, double acrossMin, double acrossMax) : lattice_{cell, acrossMin, acrossMax}
 {
     if (!(cell > 0.0))
         throw std::invalid_argument("MatMap: the cell size must be > 0");
     if (!(acrossMax > acrossMin))
         throw std::invalid_argument("MatMap: the belt's width must be > 0");
-}
-
-long MatMap::widthColumns() const
-{
-    return lattice_.columns();
-}
-
-long MatMap::column(double across) const
-{
-    return lattice_.column(across);
-}
-
-long MatMap::row(double along) const
-{
-    return lattice_.row(along);
 }
 
 double orientationOrder(const Eigen::Vector3d& orientation)
@@ -46,29 +29,28 @@ void MatMap::add(const LaidFiber& fiber)
     const bool spread = fiber.spread > 0.0 && n > 1.0;
     const double onLine = spread ? 1.0 : n, spreadOut = spread ? n - 1.0 : 0.0;
     const double order = orientationOrder(fiber.orientation);
-    // Its glass and binder per cell, per column and on the map, for the error sums
-    std::vector<double> glass(shares.size());
+    // Its physical fibers per cell; its glass and binder per column and on the map, for
+    // the error sums
+    std::vector<double> physical(shares.size());
     std::map<long, std::pair<double, double>> column;
     double total = 0.0, totalBinder = 0.0;
     for (std::size_t k = 0; k < shares.size(); ++k)
     {
-        const double physical = onLine * shares[k].line + spreadOut * shares[k].population;
-        glass[k] = physical * fiber.glassMass;
+        physical[k] = onLine * shares[k].line + spreadOut * shares[k].population;
         auto& [g, b] = column[shares[k].column];
-        g += glass[k];
-        b += physical * fiber.binderMass;
-        total += glass[k];
-        totalBinder += physical * fiber.binderMass;
+        g += physical[k] * fiber.glassMass;
+        b += physical[k] * fiber.binderMass;
+        total += physical[k] * fiber.glassMass;
+        totalBinder += physical[k] * fiber.binderMass;
     }
     for (std::size_t k = 0; k < shares.size(); ++k)
     {
-        const double physical = onLine * shares[k].line + spreadOut * shares[k].population;
-        const double g = glass[k], b = physical * fiber.binderMass;
+        const double g = physical[k] * fiber.glassMass, b = physical[k] * fiber.binderMass;
         const auto& [G, B] = column[shares[k].column];
         MatCell& c = cells_[{shares[k].column, shares[k].row}];
         c.glass += g;
         c.binder += b;
-        c.fibers += physical;
+        c.fibers += physical[k];
         c.orientationSum += g * order;
         c.glassSquares += g * g;
         c.binderSquares += b * b;
@@ -79,7 +61,7 @@ void MatMap::add(const LaidFiber& fiber)
         c.glassTotal += g * total;
         c.binderTotal += b * totalBinder;
         c.glassBinderTotal += g * totalBinder;
-        c.computed += physical / n;
+        c.computed += physical[k] / n;
     }
 }
 
@@ -120,44 +102,6 @@ MatCell MatMap::total() const
     MatCell total;
     total.setSums(t);
     return total;
-}
-
-std::vector<double> MatMap::acrossProfile(long rowFrom, long rowTo) const
-{
-    const long columns = widthColumns();
-    std::vector<double> profile(static_cast<std::size_t>(std::max(columns, 0L)), 0.0);
-    const long rows = rowTo - rowFrom + 1;
-    if (rows <= 0)
-        return profile;
-    for (const auto& [key, c] : cells_)
-    {
-        const auto [i, j] = key;
-        if (i >= 0 && i < columns && j >= rowFrom && j <= rowTo)
-            profile[static_cast<std::size_t>(i)] += c.glass;
-    }
-    // The last column may be cut by the belt's edge: its area is what lies on the belt
-    for (long i = 0; i < columns; ++i)
-    {
-        const double width = lattice_.columnWidth(i);
-        profile[static_cast<std::size_t>(i)] /= width * cell_ * static_cast<double>(rows);
-    }
-    return profile;
-}
-
-double MatMap::variation(const std::vector<double>& profile)
-{
-    if (profile.empty())
-        return 0.0;
-    double mean = 0.0;
-    for (double v : profile)
-        mean += v;
-    mean /= static_cast<double>(profile.size());
-    if (!(mean > 0.0))
-        return 0.0;
-    double var = 0.0;
-    for (double v : profile)
-        var += (v - mean) * (v - mean);
-    return std::sqrt(var / static_cast<double>(profile.size())) / mean;
 }
 
 } // namespace dropletFiber

@@ -56,15 +56,14 @@ public:
     // Cells of size `cell` [m] from across = acrossMin; throws unless cell > 0.
     MatMap(double cell, double acrossMin, double acrossMax);
 
-    double cell() const { return cell_; }
-    double acrossMin() const { return acrossMin_; }
-    double acrossMax() const { return acrossMax_; }
-    // The columns across the belt's width [acrossMin, acrossMax].
-    long widthColumns() const;
+    double cell() const { return lattice_.cell; }
+    double acrossMin() const { return lattice_.acrossMin; }
+    double acrossMax() const { return lattice_.acrossMax; }
+    // The cells' lattice (its columns across the belt's width, Footprint.hpp).
+    const MapLattice& lattice() const { return lattice_; }
 
     // Lays the fiber over its footprint (and adds its error sums).
     void add(const LaidFiber& fiber);
-    const MapLattice& lattice() const { return lattice_; }
 
     // (column, row) -> cell, in order.
     using Cells = std::map<std::pair<long, long>, MatCell>;
@@ -72,21 +71,11 @@ public:
     // Restores a cell (restart).
     void setCell(long column, long row, const MatCell& value) { cells_[{column, row}] = value; }
 
-    // Totals over all cells.
+    // Totals over all cells. The profile across over rows, with its errors and CoV:
+    // MatUncertainty.hpp.
     MatCell total() const;
 
-    // The glass area weight [kg/m^2] per column of the belt's width, over the rows
-    // [rowFrom, rowTo] (inclusive), and its coefficient of variation across the width
-    // (population standard deviation / mean; 0 when the mean is 0).
-    std::vector<double> acrossProfile(long rowFrom, long rowTo) const;
-    static double variation(const std::vector<double>& profile);
-
-    long column(double across) const;
-    long row(double along) const;
-
 private:
-    double cell_;
-    double acrossMin_, acrossMax_;
     MapLattice lattice_;
     Cells cells_;
 };

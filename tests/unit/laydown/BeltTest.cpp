@@ -3,6 +3,7 @@
 // for fibers placed by hand.
 #include "laydown/Belt.hpp"
 #include "laydown/MatMap.hpp"
+#include "laydown/MatUncertainty.hpp"
 
 #include <gtest/gtest.h>
 
@@ -64,7 +65,7 @@ TEST(MatMap, AreaWeightsLoiAndProfile)
 {
     // Belt 0.3 m wide (across 0 to 0.3), cells of 0.1 m: three columns.
     MatMap map(0.1, 0.0, 0.3);
-    EXPECT_EQ(map.widthColumns(), 3);
+    EXPECT_EQ(map.lattice().columns(), 3);
     LaidFiber f;
     f.glassMass = 2e-9;
     f.binderMass = 1e-10;
@@ -89,14 +90,14 @@ TEST(MatMap, AreaWeightsLoiAndProfile)
     EXPECT_NEAR(total.orientationSum, (3 - 1) * 1000 * 2e-9, 1e-20);
 
     // Over rows 0 and 1 (area 0.1 x 0.2 per column): 4e-6, 2e-6, 2e-6 kg over 0.02 m^2
-    const std::vector<double> profile = map.acrossProfile(0, 1);
-    ASSERT_EQ(profile.size(), 3u);
-    EXPECT_NEAR(profile[0], 4e-6 / 0.02, 1e-15);
-    EXPECT_NEAR(profile[1], 2e-6 / 0.02, 1e-15);
-    EXPECT_NEAR(profile[2], 2e-6 / 0.02, 1e-15);
+    const AcrossProfile profile = acrossProfileWithErrors(map, 0, 1);
+    ASSERT_EQ(profile.areaWeight.size(), 3u);
+    EXPECT_NEAR(profile.areaWeight[0].value, 4e-6 / 0.02, 1e-15);
+    EXPECT_NEAR(profile.areaWeight[1].value, 2e-6 / 0.02, 1e-15);
+    EXPECT_NEAR(profile.areaWeight[2].value, 2e-6 / 0.02, 1e-15);
     // mean 4/3 1e-4, deviations (2/3, -1/3, -1/3) 1e-4: population sd sqrt(2/9) 1e-4,
     // CoV sqrt(2)/3 / (4/3) = sqrt(2)/4
-    EXPECT_NEAR(MatMap::variation(profile), std::sqrt(2.0) / 4.0, 1e-12);
+    EXPECT_NEAR(nonUniformity(profile).observed, std::sqrt(2.0) / 4.0, 1e-12);
     EXPECT_THROW(MatMap(0.0, 0.0, 1.0), std::invalid_argument);
 }
 

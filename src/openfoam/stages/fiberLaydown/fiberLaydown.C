@@ -429,7 +429,6 @@ Foam::labelList Foam::dropletFiber::fiberLaydown::layDown
     }
     std::vector<::dropletFiber::LaidFiber> here;
     DynamicList<label> reached;
-    const scalar keepSpread = populationsOnLine_ ? 0 : 1;
     const scalar t = time_.value();
     for (std::size_t f = 0; f < held.fibers.size(); ++f)
     {
@@ -437,7 +436,10 @@ Foam::labelList Foam::dropletFiber::fiberLaydown::layDown
         if (::dropletFiber::reachesBelt(fiber, belt_))
         {
             here.push_back(::dropletFiber::layFiber(fiber, belt_, t, held.id[f]));
-            here.back().spread *= keepSpread;
+            if (populationsOnLine_)
+            {
+                here.back().spread = 0;
+            }
             reached.append(label(f));
         }
     }

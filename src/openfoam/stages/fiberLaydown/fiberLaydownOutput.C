@@ -84,7 +84,7 @@ void Foam::dropletFiber::fiberLaydown::writeMapVtk() const
     {
         return;
     }
-    long c0 = 0, c1 = map_->widthColumns() - 1;
+    long c0 = 0, c1 = map_->lattice().columns() - 1;
     long r0 = cells.begin()->first.second, r1 = r0;
     for (const auto& entry : cells)
     {
