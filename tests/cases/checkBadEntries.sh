@@ -123,6 +123,8 @@ expectError fibers/laydown "{ patch outlet; point (0.2 0 0); normal (1 0 0); wid
     "Entry 'laydown' needs the belt as 'patch', or as 'point', 'normal' and 'width', not both"
 expectError fibers/laydown "{ patch outlet; width 0.05; cell 0.01; }" "Entry 'width' is for a belt given as point and normal"
 expectError fibers/laydown "{ patch outlet; cel 0.01; }" "Entry 'cel' in dictionary '[^']*laydown' is not known: did you mean 'cell'\\?"
+expectError fibers/laydown "{ patch outlet; cell 0.01; footprint middle; }" \
+    "Entry 'footprint' is 'middle': allowed are 2\\(length centre\\)"
 expectError fibers/laydown "{ patch outlet; cell 0.01; populations spreaded; }" \
     "Entry 'populations' is 'spreaded': allowed are 2\\(spread line\\)"
 expectError fibers/laydown "{ patch outlet; cell 0.01; steadyFrom -1; }" \

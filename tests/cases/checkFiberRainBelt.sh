@@ -13,7 +13,8 @@
 #   patch (walls: five faces of the box); neither patch nor point; a key not
 #   known; a zero normal. Then the belt as point (0.1 0 0.05), normal (0 -1 0),
 #   width 0.1 (the patch bottom's centre, normal and extent) run to 0.125: the
-#   hand's fibers and mat (checkFiberRain.py). Then the populations spread (P59)
+#   hand's fibers and mat (checkFiberRain.py). Then footprint centre to 0.5: each
+#   fiber whole in its centre's cell (checkFiberRainCentre.py). Then the populations spread (P59)
 #   to 0.5: the glass conserved, every complete row G (checkFiberRainSpread.py).
 #------------------------------------------------------------------------------
 set -uo pipefail
@@ -98,6 +99,18 @@ check "grep -q 'laydown: belt through (0.1 0 0.05), normal (0 -1 0), velocity (0
     "the belt as a plane: the log does not give its settings"
 check "'$PY' '$here/checkFiberRain.py' . > log.check" "the belt as a plane: not the hand's mat (log.check)"
 tail -1 log.check
+
+# Each fiber whole in its centre's cell (footprint centre): the map before P58
+# (checkFiberRainCentre.py)
+rm -rf postProcessing 0.* [1-9]*
+setLaydown "{ patch bottom; $belt footprint centre; }"
+sed -i "s/^endTime .*/endTime         0.5;/" system/controlDict
+timeout 120 pimpleFoam > log.pimpleFoam 2>&1
+check "[ $? -eq 0 ] && tail -n 3 log.pimpleFoam | grep -q '^End'" "footprint centre: the run failed"
+check "grep -q 'fibers whole at their centres' log.pimpleFoam" "footprint centre: the log does not say so"
+check "'$PY' '$here/checkFiberRainCentre.py' . > log.checkCentre" \
+    "footprint centre: not the map of whole fibers at their centres (log.checkCentre)"
+tail -1 log.checkCentre
 
 # The populations spread (P59; the case's own collision.spread off removed): the glass
 # conserved, every complete row the uniform rain's G (checkFiberRainSpread.py)

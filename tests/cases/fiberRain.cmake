@@ -53,7 +53,8 @@ set_tests_properties(case.fiberRain.olderState PROPERTIES LABELS "case" TIMEOUT 
 # Bad fibers.laydown entries (a patch not found or not planar, cell <= 0, a velocity out
 # of the plane, patch with point and normal or with width, no belt, a key not known, a
 # zero normal) stop at the start with a FatalIOError naming the entry; the same belt
-# given as point, normal and width lays the hand's mat; with the populations spread (P59)
+# given as point, normal and width lays the hand's mat; with footprint centre every cell
+# holds the fibers whose centres fall in it (the map before P58); with the populations spread (P59)
 # the map's glass is the table's and every complete row the rain's G (1e-12)
 add_test(NAME case.fiberRain.belt
   COMMAND ${CASES}/checkFiberRainBelt.sh ${CASES}/fiberRain ${RUN}/fiberRain.belt)

@@ -173,6 +173,13 @@ void addPopulation(const LaidFiber& fiber, const MapLattice& lattice, ShareMap& 
 
 } // namespace
 
+LaidFiber wholeAtCentre(LaidFiber fiber)
+{
+    fiber.endToEnd = 0.0;
+    fiber.spread = 0.0;
+    return fiber;
+}
+
 std::vector<CellShare> footprint(const LaidFiber& fiber, const MapLattice& lattice)
 {
     ShareMap shares;

@@ -44,6 +44,10 @@ struct MapLattice
 // The cells a laid fiber's glass covers, in (column, row) order.
 std::vector<CellShare> footprint(const LaidFiber& fiber, const MapLattice& lattice);
 
+// The fiber as the map laid it before P58: no extent and no spread, so that all its N
+// fibers lie in the cell of its centre's foot (fibers.laydown.footprint centre).
+LaidFiber wholeAtCentre(LaidFiber fiber);
+
 // The integral of the unit hat of half-width h centred at 0 from -infinity to x.
 double hatIntegral(double x, double h);
 

@@ -25,8 +25,8 @@ namespace
 //- The entries of fibers.laydown (docs/reference.md)
 const Foam::wordList laydownKeys
 {
-    "patch", "point", "normal", "width", "velocity", "cell", "populations",
-    "steadyFrom"
+    "patch", "point", "normal", "width", "velocity", "cell", "footprint",
+    "populations", "steadyFrom"
 };
 
 //- Values per laid fiber in the exchange
@@ -274,6 +274,9 @@ void Foam::dropletFiber::fiberLaydown::read
     settings_ = *ld;
     checkKeys(*ld, laydownKeys);
     const scalar cell = getPositive(*ld, "cell");
+    // P58: along its length, or whole in its centre's cell (the map before P58)
+    footprintAtCentre_ =
+        getChoice(*ld, "footprint", "length", {"length", "centre"}) == "centre";
     // P59: a weighted fiber's population over its hat, or on its line
     populationsOnLine_ =
         getChoice(*ld, "populations", "spread", {"spread", "line"}) == "line";
@@ -446,12 +449,14 @@ Foam::labelList Foam::dropletFiber::fiberLaydown::layDown
     const std::vector<::dropletFiber::LaidFiber> laid = gathered(here);
     for (const ::dropletFiber::LaidFiber& f : laid)
     {
-        map_->add(f);
+        const ::dropletFiber::LaidFiber onMap =
+            footprintAtCentre_ ? ::dropletFiber::wholeAtCentre(f) : f;
+        map_->add(onMap);
         totals_.computed += 1;
         totals_.physical += f.represents;
         totals_.glass += f.represents*f.glassMass;
         totals_.binder += f.represents*f.binderMass;
-        totals_.zone.add(f, belt_.speed());
+        totals_.zone.add(onMap, belt_.speed());
     }
     writeRows(laid);
     labelList laidHere;
@@ -472,7 +477,9 @@ void Foam::dropletFiber::fiberLaydown::report(Ostream& os) const
         << toFoam(belt_.normal) << ", velocity "
         << toFoam(belt_.velocity) << " m/s, across "
         << map_->acrossMin() << " to " << map_->acrossMax() << " m, map cells "
-        << map_->cell() << " m; populations "
+        << map_->cell() << " m; fibers "
+        << (footprintAtCentre_ ? "whole at their centres" : "along their length (P58)")
+        << "; populations "
         << (populationsOnLine_ ? "on their fibers' lines" : "spread (P59)")
         << "; complete rows entered the laying zone after ";
     if (steadyFrom_ >= 0)
